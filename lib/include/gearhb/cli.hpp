@@ -1,0 +1,91 @@
+#pragma once
+// Command line of every chapter program (SPEC §2):
+//
+//   chNN_name [--out DIR] [--set key=value]... [--help]
+//
+// Each chapter keeps its parameters in plain structs (one per concern) whose
+// member initialisers are the thesis defaults. It binds every member to a name
+// in a ParameterSet, which then prints --help, applies --set overrides, checks
+// ranges, and echoes the values used into the output folder.
+//
+// Bad input (unknown key, malformed number, value out of its physical range)
+// raises UsageError; the chapter's main prints its one line and exits with 2
+// before anything is written.
+#include <functional>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace gearhb {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Admissible range of a parameter.
+struct Range {
+  enum class Kind { any, positive, nonnegative, at_least, between } kind = Kind::any;
+  double lo = 0.0, hi = 0.0;
+  static Range any() { return {}; }
+  static Range positive() { return {Kind::positive}; }
+  static Range nonnegative() { return {Kind::nonnegative}; }
+  static Range at_least(double v) { return {Kind::at_least, v}; }
+  static Range between(double a, double b) { return {Kind::between, a, b}; }
+  // Empty string when v is admissible, otherwise what is wrong ("must be > 0").
+  std::string violation(double v) const;
+};
+
+class ParameterSet {
+ public:
+  // Bind a double (or an int: whole numbers only) to a command-line name.
+  void add(const std::string& name, double* value, const std::string& unit,
+           const std::string& help, Range range = Range::any());
+  void add(const std::string& name, int* value, const std::string& unit,
+           const std::string& help, Range range = Range::any());
+
+  // Apply one "key=value" override. Throws UsageError naming the key.
+  void set(const std::string& assignment);
+  // Check every parameter against its range. Throws UsageError naming the first bad one.
+  void validate() const;
+  // Cross-parameter condition: throws UsageError(message) unless ok.
+  static void require(bool ok, const std::string& message);
+
+  bool was_set(const std::string& name) const;
+  bool any_set() const { return !overridden_.empty(); }
+  std::string help_text() const;     // one line per parameter: name, default, unit, meaning
+  nlohmann::json to_json() const;    // {"name": {"value": v, "unit": u}}
+
+ private:
+  struct Entry {
+    std::string name, unit, help;
+    double* d = nullptr;
+    int* i = nullptr;
+    double default_value = 0.0;
+    Range range;
+  };
+  const Entry* find(const std::string& name) const;
+  std::vector<Entry> entries_;
+  std::vector<std::string> overridden_;
+};
+
+// What a chapter's command line asked for.
+struct CommandLine {
+  std::string out_dir;   // --out DIR (default given by the chapter)
+  bool help = false;     // --help was given: print and exit 0
+};
+
+// Parse argv: applies --set to `params`, validates ranges. Throws UsageError.
+CommandLine parse_command_line(int argc, char** argv, ParameterSet& params,
+                               const std::string& default_out_dir);
+
+// The standard main() wrapper of a chapter: prints `usage` + parameter help on
+// --help, turns UsageError into one line on stderr and exit status 2, any other
+// exception (a solver failure) into one line and exit status 1.
+int run_chapter(const std::string& program, const std::string& usage, int argc, char** argv,
+                ParameterSet& params, const std::string& default_out_dir,
+                const std::function<void(const CommandLine&)>& body);
+
+}  // namespace gearhb

@@ -1,0 +1,44 @@
+#pragma once
+// Writing a chapter's results (SPEC §2): CSV tables with a header row,
+// key_numbers.json, and the echo of the parameters. Every file is written
+// atomically (temporary file in the same folder, then rename), so a failed run
+// never leaves a half-written file behind.
+#include <string>
+#include <variant>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace gearhb {
+
+// Write `content` to `path` through a temporary file and a rename.
+// Creates the parent folders. Throws std::runtime_error on I/O failure.
+void write_file_atomic(const std::string& path, const std::string& content);
+
+// A CSV table: named columns, rows of numbers or short strings.
+class Table {
+ public:
+  using Cell = std::variant<double, long, std::string>;
+  explicit Table(std::vector<std::string> columns);
+  void add_row(std::vector<Cell> row);   // must match the column count
+  std::size_t rows() const { return rows_.size(); }
+  std::string to_csv() const;            // %.10g numbers, header first
+  void write(const std::string& path) const { write_file_atomic(path, to_csv()); }
+
+ private:
+  std::vector<std::string> columns_;
+  std::vector<std::vector<Cell>> rows_;
+};
+
+// The numbers that reference/<chapter>.json checks: {"name": {"value", "unit"}}.
+class KeyNumbers {
+ public:
+  void add(const std::string& name, double value, const std::string& unit);
+  const nlohmann::json& json() const { return j_; }
+  void write(const std::string& path) const { write_file_atomic(path, j_.dump(2) + "\n"); }
+
+ private:
+  nlohmann::json j_ = nlohmann::json::object();
+};
+
+}  // namespace gearhb
