@@ -95,17 +95,28 @@ void Aft::product_matrix(const double* s_samples, Eigen::Ref<Eigen::MatrixXd> G)
   fftw_execute(p_->forward);
   const fftw_complex* S = p_->spec;
   const double inv = 1.0 / N_;
-  // Sc(m) = (1/N) sum_j s_j cos(m theta_j), Ss(m) = (1/N) sum_j s_j sin(m theta_j),
-  // for any integer m (even and odd in m, N-periodic).
+  // Sc(m) = (1/N) sum_j s_j cos(m theta_j), Ss(m) = (1/N) sum_j s_j sin(m theta_j), m = 0..2H.
   auto bin = [&](int m, double& re, double& im) {
     m %= N_;
     if (m < 0) m += N_;
     if (m <= N_ / 2) { re = S[m][0]; im = S[m][1]; }
     else { re = S[N_ - m][0]; im = -S[N_ - m][1]; }
   };
-  auto Sc = [&](int m) { double re, im; bin(m, re, im); return re * inv; };
-  auto Ss = [&](int m) { double re, im; bin(m, re, im); return -im * inv; };
+  std::vector<double> sc(2 * H_ + 1), ss(2 * H_ + 1);
+  for (int m = 0; m <= 2 * H_; ++m) {
+    double re, im;
+    bin(m, re, im);
+    sc[m] = re * inv;
+    ss[m] = -im * inv;
+  }
+  product_matrix_from_moments(sc.data(), ss.data(), G);
+}
 
+void Aft::product_matrix_from_moments(const double* sc, const double* ss,
+                                      Eigen::Ref<Eigen::MatrixXd> G) const {
+  // Sc is even and Ss odd in m.
+  auto Sc = [&](int m) { return sc[m < 0 ? -m : m]; };
+  auto Ss = [&](int m) { return m < 0 ? -ss[-m] : ss[m]; };
   G(0, 0) = Sc(0);
   for (int l = 1; l <= H_; ++l) {
     G(0, 2 * l - 1) = Sc(l);

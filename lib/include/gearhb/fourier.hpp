@@ -55,6 +55,10 @@ class Aft {
 
   // G with coeffs(s*x) = G coeffs(x) (see above). `G` must be (2H+1)x(2H+1).
   void product_matrix(const double* s_samples, Eigen::Ref<Eigen::MatrixXd> G) const;
+  // The same matrix from the mean values Sc[m] = <s cos(m theta)>, Ss[m] = <s sin(m theta)>,
+  // m = 0..2H, however they were obtained (sampled sums or exact integrals).
+  void product_matrix_from_moments(const double* Sc, const double* Ss,
+                                   Eigen::Ref<Eigen::MatrixXd> G) const;
 
  private:
   struct Plans;

@@ -1,0 +1,64 @@
+#pragma once
+// Unilateral contact law (thesis §2.3, §3; SPEC §3):
+//
+//     F_c = max( k_c (g + v), 0 ),     v = w' x  (relative displacement along the normal)
+//
+// g > 0 is a preload (bodies pressed together at x = 0), g < 0 a gap. The force
+// F_c acts on the structure as  -w F_c  (it pushes the DOFs along -w), so the
+// equation of motion reads  M x'' + C x' + K x + w F_c = f(t).
+// The gap may also vary periodically with the forcing phase (e.g. a
+// transmission error): g(theta) = g + sum_k (gc_k cos k theta + gs_k sin k theta).
+#include <Eigen/Dense>
+
+namespace gearhb {
+
+struct UnilateralContact {
+  Eigen::VectorXd w;       // contact normal over the DOFs (v = w' x)
+  double kc = 0.0;         // contact stiffness [N/m]
+  double gap = 0.0;        // g: > 0 preload, < 0 clearance [m]
+  // Optional periodic part of the gap, real Fourier coefficients [0, a1, b1, ...]
+  // in the harmonic-balance basis (empty = constant gap).
+  Eigen::VectorXd gap_harmonics;
+};
+
+// The contact law and its derivative dF/dv (0 or kc; at u = 0 we take 0).
+inline double contact_force(double kc, double u) { return u > 0.0 ? kc * u : 0.0; }
+inline double contact_stiffness(double kc, double u) { return u > 0.0 ? kc : 0.0; }
+
+// Contact state over one period, from the penetration samples u = g + v.
+enum class ContactState { open, full, intermittent };
+const char* to_string(ContactState s);
+
+}  // namespace gearhb
+
+// --- Exact Galerkin projection of the piecewise-linear law -------------------
+//
+// Sampling max(kc u, 0) at N points (plain AFT) makes the discrete residual
+// piecewise linear in the coefficients, with a kink each time a sample enters or
+// leaves contact; near a fold these kinks show up as spurious micro-folds whose
+// size shrinks only slowly with N (ch. 3 sample study). Because u(theta) is a
+// trigonometric polynomial and the law is linear inside contact, the projection
+// can be done exactly instead:
+//   1. locate the crossings u(theta) = 0 (bracketed by the N samples, refined
+//      with GSL's Brent solver on the trigonometric polynomial);
+//   2. the force coefficients are  F = kc P uc  and the Jacobian  dF/duc = kc P,
+//      P = product matrix (fourier.hpp) of the contact indicator, whose moments
+//      <1_I cos m theta>, <1_I sin m theta> over the contact intervals I are
+//      closed-form integrals. (The boundary terms of dF/duc vanish since u = 0 there.)
+// The result is the Galerkin harmonic balance itself, with no aliasing error.
+#include <utility>
+#include <vector>
+
+namespace gearhb {
+
+// Contact intervals [a, b] (b > a, angles in radians, may extend past 2 pi) where
+// u(theta) > 0, for u with real Fourier coefficients `uc` sampled as `us` on the
+// uniform grid of `us.size()` points. Full contact gives {[0, 2 pi]}.
+std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
+                                                         const Eigen::VectorXd& us);
+
+// Moments Sc[m] = (1/2pi) int_I cos(m theta), Ss[m] = (1/2pi) int_I sin(m theta), m = 0..M.
+void indicator_moments(const std::vector<std::pair<double, double>>& intervals, int M,
+                       double* Sc, double* Ss);
+
+}  // namespace gearhb

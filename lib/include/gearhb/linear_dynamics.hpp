@@ -1,0 +1,36 @@
+#pragma once
+// Linear structural dynamics: M x'' + C x' + K x = f(t).
+//  - Rayleigh damping C = alpha M + beta K;
+//  - frequency response X(w) = (K - w^2 M + i w C)^{-1} F (thesis §3, Fig. 7);
+//  - modal analysis: K phi = w^2 M phi with mass-normalised modes,
+//    Phi' M Phi = I and Phi' K Phi = diag(w^2) (thesis §4.1).
+#include <complex>
+
+#include <Eigen/Dense>
+
+namespace gearhb {
+
+struct LinearSystem {
+  Eigen::MatrixXd M, C, K;   // mass [kg], damping [N s/m], stiffness [N/m] (or rotational)
+  int dofs() const { return int(M.rows()); }
+  // Throws std::invalid_argument unless M, C, K are square, of equal size, M
+  // symmetric positive definite.
+  void check() const;
+};
+
+// C = alpha M + beta K  (alpha [1/s], beta [s]).
+Eigen::MatrixXd rayleigh_damping(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, double alpha,
+                                 double beta);
+
+// Complex amplitude X of the steady response to Re(F e^{i w t}).
+Eigen::VectorXcd frequency_response(const LinearSystem& sys, const Eigen::VectorXcd& F, double omega);
+
+struct Modes {
+  Eigen::VectorXd omega;   // natural frequencies [rad/s], ascending
+  Eigen::MatrixXd Phi;     // mass-normalised mode shapes, one per column
+};
+// Generalised symmetric eigenproblem K phi = w^2 M phi (Eigen's
+// GeneralizedSelfAdjointEigenSolver, whose eigenvectors are M-normalised).
+Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+
+}  // namespace gearhb

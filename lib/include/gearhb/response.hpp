@@ -1,0 +1,46 @@
+#pragma once
+// What a frequency-response curve shows of one periodic solution (SPEC §2):
+// for a coordinate q' x (a DOF, or a relative displacement such as x1 - x2),
+//   x_max, x_min  over one period (evaluated on a fine grid of the Fourier series),
+//   x_rms_ac      RMS of the oscillating part, sqrt(sum_k (a_k^2 + b_k^2) / 2),
+//   x_h1          amplitude of the first harmonic, sqrt(a_1^2 + b_1^2),
+// and the contact state over the period (open / full / intermittent).
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/continuation.hpp"
+#include "gearhb/harmonic_balance.hpp"
+#include "gearhb/output.hpp"
+
+namespace gearhb {
+
+struct ResponseSummary {
+  double x_max = 0, x_min = 0, x_rms_ac = 0, x_h1 = 0, x_mean = 0;
+  ContactState contact = ContactState::open;
+};
+
+class ResponseEvaluator {
+ public:
+  // q: the plotted coordinate; `fine` samples per period for max/min and contact state.
+  ResponseEvaluator(const HarmonicBalance& hb, Eigen::VectorXd q, int fine = 1024);
+  ResponseSummary summarize(const Eigen::VectorXd& X) const;
+  // Time history of the coordinate over one period at `fine` samples (theta_j = 2 pi j / fine).
+  Eigen::VectorXd history(const Eigen::VectorXd& X) const;
+
+ private:
+  const HarmonicBalance& hb_;
+  Eigen::VectorXd q_;
+  Aft fine_;
+};
+
+// Stability flag (Hill) of every point of a branch.
+std::vector<bool> branch_stability(const HarmonicBalance& hb, const Branch& b);
+
+// The standard frequency-response table of SPEC §2: omega, x_max, x_min,
+// x_rms_ac, x_h1, stable, contact (+ x_mean), one row per point, in continuation order.
+Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
+                               const std::vector<bool>& stable, const Eigen::VectorXd& q);
+
+}  // namespace gearhb

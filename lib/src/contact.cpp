@@ -1,0 +1,90 @@
+#include "gearhb/contact.hpp"
+
+namespace gearhb {
+
+const char* to_string(ContactState s) {
+  switch (s) {
+    case ContactState::open: return "open";
+    case ContactState::full: return "full";
+    case ContactState::intermittent: return "intermittent";
+  }
+  return "?";
+}
+
+}  // namespace gearhb
+
+#include <cmath>
+#include <stdexcept>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_roots.h>
+
+namespace gearhb {
+
+namespace {
+
+double trig_poly(double theta, void* params) {
+  const auto& c = *static_cast<const Eigen::VectorXd*>(params);
+  double v = c[0];
+  const int H = int(c.size() - 1) / 2;
+  for (int k = 1; k <= H; ++k) v += c[2 * k - 1] * std::cos(k * theta) + c[2 * k] * std::sin(k * theta);
+  return v;
+}
+
+// Root of u in [a, b] (u(a), u(b) of opposite sign) by GSL's Brent method.
+double crossing(const Eigen::VectorXd& uc, double a, double b) {
+  gsl_function F{trig_poly, const_cast<Eigen::VectorXd*>(&uc)};
+  gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
+  gsl_set_error_handler_off();
+  gsl_root_fsolver_set(s, &F, a, b);
+  double r = 0.5 * (a + b);
+  for (int it = 0; it < 100; ++it) {
+    gsl_root_fsolver_iterate(s);
+    r = gsl_root_fsolver_root(s);
+    const double lo = gsl_root_fsolver_x_lower(s), hi = gsl_root_fsolver_x_upper(s);
+    if (gsl_root_test_interval(lo, hi, 0.0, 1e-15) == GSL_SUCCESS) break;
+  }
+  gsl_root_fsolver_free(s);
+  return r;
+}
+
+}  // namespace
+
+std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
+                                                         const Eigen::VectorXd& us) {
+  const int N = int(us.size());
+  const double dt = 2.0 * M_PI / N;
+  int j0 = -1;
+  for (int j = 0; j < N; ++j)
+    if (!(us[j] > 0.0)) { j0 = j; break; }
+  if (j0 < 0) return {{0.0, 2.0 * M_PI}};        // every sample in contact
+  std::vector<std::pair<double, double>> out;
+  double start = 0.0;
+  bool in = false;
+  for (int i = 0; i < N; ++i) {
+    const int j = j0 + i;                         // unwrapped index; theta = j dt
+    const bool now = us[j % N] > 0.0, next = us[(j + 1) % N] > 0.0;
+    if (!now && next) {
+      start = crossing(uc, j * dt, (j + 1) * dt);
+      in = true;
+    } else if (now && !next && in) {
+      out.emplace_back(start, crossing(uc, j * dt, (j + 1) * dt));
+      in = false;
+    }
+  }
+  return out;
+}
+
+void indicator_moments(const std::vector<std::pair<double, double>>& I, int M, double* Sc, double* Ss) {
+  const double inv2pi = 0.5 / M_PI;
+  for (int m = 0; m <= M; ++m) Sc[m] = Ss[m] = 0.0;
+  for (const auto& [a, b] : I) {
+    Sc[0] += (b - a) * inv2pi;
+    for (int m = 1; m <= M; ++m) {
+      Sc[m] += (std::sin(m * b) - std::sin(m * a)) * inv2pi / m;
+      Ss[m] += (std::cos(m * a) - std::cos(m * b)) * inv2pi / m;
+    }
+  }
+}
+
+}  // namespace gearhb

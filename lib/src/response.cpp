@@ -1,0 +1,65 @@
+#include "gearhb/response.hpp"
+
+#include <cmath>
+
+#include "gearhb/stability.hpp"
+
+namespace gearhb {
+
+ResponseEvaluator::ResponseEvaluator(const HarmonicBalance& hb, Eigen::VectorXd q, int fine)
+    : hb_(hb), q_(std::move(q)), fine_(hb.harmonics(), fine) {}
+
+Eigen::VectorXd ResponseEvaluator::history(const Eigen::VectorXd& X) const {
+  return fine_.to_time(hb_.project(X, q_));
+}
+
+ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
+  const int H = hb_.harmonics();
+  const Eigen::VectorXd c = hb_.project(X, q_);
+  const Eigen::VectorXd x = fine_.to_time(c);
+  ResponseSummary r;
+  r.x_max = x.maxCoeff();
+  r.x_min = x.minCoeff();
+  r.x_mean = c[0];
+  double ss = 0.0;
+  for (int k = 1; k <= H; ++k) ss += 0.5 * (c[2 * k - 1] * c[2 * k - 1] + c[2 * k] * c[2 * k]);
+  r.x_rms_ac = std::sqrt(ss);
+  r.x_h1 = std::hypot(c[1], c[2]);
+  // Contact state: penetration u = g + w'x of every contact on the fine grid.
+  bool any_open = false, any_closed = false;
+  for (const auto& ct : hb_.contacts()) {
+    Eigen::VectorXd uc = hb_.project(X, ct.w) + ct.gap_harmonics;
+    uc[0] += ct.gap;
+    const Eigen::VectorXd u = fine_.to_time(uc);
+    for (int j = 0; j < u.size(); ++j) (u[j] > 0.0 ? any_closed : any_open) = true;
+  }
+  r.contact = any_closed ? (any_open ? ContactState::intermittent : ContactState::full)
+                         : ContactState::open;
+  return r;
+}
+
+std::vector<bool> branch_stability(const HarmonicBalance& hb, const Branch& b) {
+  std::vector<bool> st;
+  st.reserve(b.points.size());
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  for (const auto& p : b.points) {
+    hb.evaluate(p.X, p.omega, R, &J, nullptr);
+    st.push_back(hill_stability(J, hb.system().M, hb.system().C, p.omega, hb.harmonics()).stable);
+  }
+  return st;
+}
+
+Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
+                               const std::vector<bool>& stable, const Eigen::VectorXd& q) {
+  ResponseEvaluator ev(hb, q);
+  Table t({"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact"});
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    const auto r = ev.summarize(b.points[i].X);
+    t.add_row({b.points[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean,
+               long(stable[i] ? 1 : 0), std::string(to_string(r.contact))});
+  }
+  return t;
+}
+
+}  // namespace gearhb
