@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <stdexcept>
 
 namespace gearhb {
 
@@ -58,6 +59,31 @@ bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previou
   return true;
 }
 
+// Corrector: Newton on { R(y) = 0 ; normal' (y - y_p) = 0 }, from y = y_p (in place).
+// Returns true on convergence; reports iterations and final scaled residual.
+bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int max_iterations,
+             double tolerance, int& iters, double& res) {
+  const int n = S.n;
+  const Eigen::VectorXd yp = y;
+  Eigen::MatrixXd A(n + 1, n + 1);
+  Eigen::VectorXd F(n + 1);
+  double last_step = 0.0;
+  for (iters = 0; iters <= max_iterations; ++iters) {
+    res = S.eval(y, A);
+    if (!std::isfinite(res)) return false;
+    if (iters > 0 && res < tolerance && last_step < tolerance) return true;
+    if (iters == max_iterations) return false;
+    A.row(n) = normal.transpose();
+    F.head(n) = -S.R / S.s.residual;
+    F[n] = -normal.dot(y - yp);
+    const Eigen::VectorXd dy = A.partialPivLu().solve(F);
+    if (!dy.allFinite()) return false;
+    last_step = dy.cwiseAbs().maxCoeff();
+    y += dy;
+  }
+  return false;
+}
+
 }  // namespace
 
 Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
@@ -87,8 +113,6 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
 
   const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
   double ds = opt.ds_initial;
-  Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::VectorXd F(n + 1);
   for (int step = 0;; ++step) {
     if (step >= opt.max_steps) {
       b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
@@ -104,24 +128,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     while (!accepted) {
       const Eigen::VectorXd yp = y + ds * t;
       yn = yp;
-      bool converged = false;
-      double last_step = 0.0;
-      for (iters = 0; iters <= opt.corrector_max_iterations; ++iters) {
-        res = S.eval(yn, A);
-        if (!std::isfinite(res)) break;
-        if (iters > 0 && res < opt.tolerance && last_step < opt.tolerance) {
-          converged = true;
-          break;
-        }
-        if (iters == opt.corrector_max_iterations) break;
-        A.row(n) = t.transpose();
-        F.head(n) = -S.R / s.residual;
-        F[n] = -t.dot(yn - yp);
-        const Eigen::VectorXd dy = A.partialPivLu().solve(F);
-        if (!dy.allFinite()) break;
-        last_step = dy.cwiseAbs().maxCoeff();
-        yn += dy;
-      }
+      bool converged = correct(S, yn, t, opt.corrector_max_iterations, opt.tolerance, iters, res);
       why = converged ? "" : "corrector did not converge";
       if (converged) {
         if (!tangent(S, yn, t, tn)) {
@@ -196,6 +203,32 @@ Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X
   }
   b.complete = b.failures.empty();
   return b;
+}
+
+double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
+                         const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
+                         double tol) {
+  const bool sa = state(a.X);
+  if (sa == state(b.X)) throw std::invalid_argument("locate_transition: no change of state between the points");
+  Scaled S(p, s);
+  const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
+  const Eigen::VectorXd normal = (yb - ya).normalized();
+  // Bisection on the fraction f of the chord a -> b; each trial point is pulled back
+  // onto the branch in the hyperplane normal to the chord, so a fold between a and
+  // b does no harm.
+  double lo = 0.0, hi = 1.0, w = a.omega;
+  while ((hi - lo) * (yb - ya).norm() * s.omega > tol) {
+    const double mid = 0.5 * (lo + hi);
+    Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
+    int iters = 0;
+    double res = 0.0;
+    if (!correct(S, y, normal, 30, 1e-12, iters, res))
+      throw std::runtime_error("locate_transition: corrector failed near omega = " +
+                               std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
+    w = S.omega(y);
+    (state(S.X(y)) == sa ? lo : hi) = mid;
+  }
+  return w;
 }
 
 }  // namespace gearhb

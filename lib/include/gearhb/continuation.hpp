@@ -19,6 +19,7 @@
 // Natural continuation (kept for teaching, thesis §2.2): omega marches with a
 // fixed step, Newton restarts from the previous solution. It cannot pass a
 // fold: it stops at the first omega where Newton fails and reports it.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -78,5 +79,14 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
 // Natural (sequential) continuation with `opt.natural_points` fixed omega steps.
 Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                             const Scaling& s, const ContinuationOptions& opt);
+
+// Between two consecutive converged points a, b of a branch on which the
+// predicate `state(X)` differs, locate the omega where it changes: bisection
+// along the chord a -> b, each trial point corrected back onto the branch in
+// the hyperplane normal to the chord (so a fold between a and b is harmless),
+// until the chord fraction is below `tol` (scaled). Used e.g. for contact onset.
+double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
+                         const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
+                         double tol = 1e-11);
 
 }  // namespace gearhb

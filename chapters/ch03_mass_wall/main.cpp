@@ -1,0 +1,345 @@
+// ===========================================================================
+// ch03_mass_wall: a mass against a wall (thesis ch. 3, Figs. 7-18)
+// ===========================================================================
+//
+// The equation (thesis §3, SPEC §4, sign convention of contact.hpp):
+//
+//     m x'' + c x' + k x + max( kc (g + x), 0 ) = F0 + F cos(w t)
+//
+// g < 0 is a clearance (the mass touches the wall when x > -g), g > 0 a preload
+// (pressed against the wall at x = 0). Solved by harmonic balance with the
+// static term kept, contact by AFT with exact projection, pseudo-arc-length
+// continuation, Hill stability (lib/). Thesis defaults: m = 1 kg, c = 0.01 N s/m,
+// k = 1 N/m, kc = 1 N/m, F = 0.01 N.
+//
+// What it makes (data in --out, default build/data/ch03_mass_wall; figures by
+// figures/ch03_mass_wall.py, all through `make figures`):
+//   Fig. 7   linear FRF, open (k) and full contact (k + kc)       fig07_linear.csv
+//   Fig. 8   contact force N0 + kc x0 cos(theta) clipped at 0     fig08_contact_force.csv
+//   Fig. 9   g = -1.2 and -0.6                                    frc_<case>.csv
+//   Fig. 10  g = 1 and 0.4
+//   Fig. 11  g = -0.6 with F = 0.01 and 0.001
+//   Fig. 12  g = -1.2 with F = 0.01 and 0.03
+//   Figs. 13-15  g = -1.5, F0 = 1 N: FRC + time history at 3 marked points
+//   Figs. 16-18  g = -0.5, F0 = 1 N (starts in contact, separates)  time_<case>_<A|B|C>.csv
+//   plus cases.csv (index), marks.csv, sample_study.csv (effect of the number
+//   of AFT samples), key_numbers.json, params.json.
+//
+// Exact commands:
+//   build/bin/ch03_mass_wall --out build/data/ch03_mass_wall          (every figure)
+//   build/bin/ch03_mass_wall --out DIR --set gap=-0.8 --set F=0.02     (one curve: DIR/frc.csv)
+// ===========================================================================
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "gearhb/cli.hpp"
+#include "gearhb/continuation.hpp"
+#include "gearhb/harmonic_balance.hpp"
+#include "gearhb/linear_dynamics.hpp"
+#include "gearhb/output.hpp"
+#include "gearhb/response.hpp"
+#include "gearhb/time_integration.hpp"
+
+using namespace gearhb;
+using Eigen::MatrixXd;
+using Eigen::VectorXd;
+
+namespace {
+
+// --- parameters: one struct per concern, thesis defaults -------------------
+struct Oscillator {
+  double m = 1.0;     // mass [kg]
+  double c = 0.01;    // viscous damping [N s/m]
+  double k = 1.0;     // spring to ground [N/m]
+  double kc = 1.0;    // contact stiffness [N/m]
+};
+struct Loading {
+  double gap = -0.6;  // g [m]: < 0 clearance, > 0 preload (single-case runs)
+  double F = 0.01;    // harmonic force amplitude [N]
+  double F0 = 0.0;    // static force [N]
+};
+struct Solver {
+  int H = 10;                 // harmonics
+  int N = 0;                  // AFT samples per period (0 = 4 (2H+1))
+  int exact_contact = 1;      // 1 = exact projection of the contact law, 0 = sampled AFT
+  int natural = 0;            // 1 = natural continuation (teaching; stops at a fold)
+  double omega_min = 0.5;     // [rad/s]
+  double omega_max = 2.0;     // [rad/s]
+};
+
+struct Case {
+  std::string label;   // file stem
+  std::string figure;  // thesis figure(s)
+  Loading load;
+};
+
+HarmonicBalance make_model(const Oscillator& o, const Loading& l, const Solver& s) {
+  LinearSystem sys{MatrixXd::Constant(1, 1, o.m), MatrixXd::Constant(1, 1, o.c),
+                   MatrixXd::Constant(1, 1, o.k)};
+  UnilateralContact wall{VectorXd::Constant(1, 1.0), o.kc, l.gap, {}};
+  Excitation f{VectorXd::Constant(1, l.F0), VectorXd::Constant(1, l.F), VectorXd::Zero(1)};
+  return HarmonicBalance(sys, {wall}, f, s.H, s.N,
+                         s.exact_contact ? ContactQuadrature::exact : ContactQuadrature::sampled);
+}
+
+struct Curve {
+  Branch branch;
+  std::vector<bool> stable;
+};
+
+// Continuation over [omega_min, omega_max]; a failure is an error with its place.
+Curve frequency_response(const HarmonicBalance& hb, const Solver& s, const std::string& label) {
+  ContinuationOptions opt;
+  opt.omega_start = s.omega_min;
+  opt.omega_end = s.omega_max;
+  const Scaling sc = hb.scaling(s.omega_min, s.omega_max);
+  const VectorXd X0 = hb.open_contact_solution(s.omega_min);
+  Curve c;
+  c.branch = s.natural ? natural_continuation(hb, X0, sc, opt) : arc_length_continuation(hb, X0, sc, opt);
+  if (!c.branch.complete && !s.natural)
+    throw std::runtime_error("case " + label + ": " + c.branch.summary());
+  if (!c.branch.complete)
+    std::cerr << "ch03_mass_wall: natural continuation of " << label << " stopped: "
+              << c.branch.summary() << "\n";
+  c.stable = branch_stability(hb, c.branch);
+  return c;
+}
+
+std::string fmt(double v) {
+  std::ostringstream os;
+  os << v;
+  return os.str();
+}
+
+// Contact state of a solution, as a predicate for locate_transition.
+std::function<bool(const VectorXd&)> in_contact_somewhere(const HarmonicBalance& hb) {
+  return [&hb](const VectorXd& X) {
+    return ResponseEvaluator(hb, VectorXd::Constant(1, 1.0), 256).summarize(X).contact != ContactState::open;
+  };
+}
+std::function<bool(const VectorXd&)> open_somewhere(const HarmonicBalance& hb) {
+  return [&hb](const VectorXd& X) {
+    return ResponseEvaluator(hb, VectorXd::Constant(1, 1.0), 256).summarize(X).contact != ContactState::full;
+  };
+}
+
+// First omega along the branch where `state` switches on (refined by bisection).
+double first_transition(const HarmonicBalance& hb, const Curve& c, const Solver& s,
+                        const std::function<bool(const VectorXd&)>& state) {
+  const auto& P = c.branch.points;
+  for (std::size_t i = 1; i < P.size(); ++i)
+    if (!state(P[i - 1].X) && state(P[i].X))
+      return locate_transition(hb, P[i - 1], P[i], hb.scaling(s.omega_min, s.omega_max), state);
+  return NAN;
+}
+
+void write_curve(const HarmonicBalance& hb, const Curve& c, const std::string& path) {
+  frequency_response_table(hb, c.branch, c.stable, VectorXd::Constant(1, 1.0)).write(path);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Oscillator osc;
+  Loading load;
+  Solver sol;
+  ParameterSet P;
+  P.add("m", &osc.m, "kg", "mass", Range::positive());
+  P.add("c", &osc.c, "N s/m", "viscous damping", Range::nonnegative());
+  P.add("k", &osc.k, "N/m", "spring to ground", Range::positive());
+  P.add("kc", &osc.kc, "N/m", "contact stiffness", Range::nonnegative());
+  P.add("gap", &load.gap, "m", "g: < 0 clearance, > 0 preload (single-case run)");
+  P.add("F", &load.F, "N", "harmonic force amplitude");
+  P.add("F0", &load.F0, "N", "static force");
+  P.add("H", &sol.H, "-", "number of harmonics", Range::at_least(1));
+  P.add("N", &sol.N, "-", "AFT time samples per period (0 = 4(2H+1))", Range::nonnegative());
+  P.add("exact_contact", &sol.exact_contact, "-", "1 exact projection of the contact law, 0 sampled AFT", Range::between(0, 1));
+  P.add("natural", &sol.natural, "-", "1 natural continuation (stops at a fold), 0 arc-length", Range::between(0, 1));
+  P.add("omega_min", &sol.omega_min, "rad/s", "start of the frequency range", Range::positive());
+  P.add("omega_max", &sol.omega_max, "rad/s", "end of the frequency range", Range::positive());
+
+  const std::string usage =
+      "ch03_mass_wall: mass against a wall, m x'' + c x' + k x + max(kc (g + x), 0) = F0 + F cos(w t)\n"
+      "(thesis ch. 3). With no --set: every case of Figs. 7-18. With --set: one curve in DIR/frc.csv.";
+  return run_chapter("ch03_mass_wall", usage, argc, argv, P, "build/data/ch03_mass_wall",
+                     [&](const CommandLine& cl) {
+    ParameterSet::require(sol.omega_min < sol.omega_max, "parameter 'omega_min' must be < omega_max");
+    ParameterSet::require(sol.N == 0 || sol.N >= 4 * sol.H + 2,
+                          "parameter 'N' must be 0 or >= 4H+2 (" + std::to_string(4 * sol.H + 2) + ")");
+    const std::string out = cl.out_dir + "/";
+    KeyNumbers key;
+    write_file_atomic(out + "params.json", P.to_json().dump(2) + "\n");
+
+    // ---- Single case: the user's own parameters -------------------------
+    if (P.any_set()) {
+      HarmonicBalance hb = make_model(osc, load, sol);
+      const Curve c = frequency_response(hb, sol, "frc");
+      write_curve(hb, c, out + "frc.csv");
+      key.add("folds", double(c.branch.folds.size()), "-");
+      key.add("points", double(c.branch.points.size()), "-");
+      double peak = -INFINITY;
+      for (const auto& p : c.branch.points)
+        peak = std::max(peak, ResponseEvaluator(hb, VectorXd::Constant(1, 1.0)).summarize(p.X).x_max);
+      key.add("x_max_peak", peak, "m");
+      key.write(out + "key_numbers.json");
+      std::cout << "ch03_mass_wall: " << c.branch.summary() << " -> " << out << "frc.csv\n";
+      return;
+    }
+
+    // ---- Step 1: linear references (Fig. 7) and the natural frequencies ----
+    {
+      Table t({"omega", "x_open", "x_full"});
+      LinearSystem open{MatrixXd::Constant(1, 1, osc.m), MatrixXd::Constant(1, 1, osc.c),
+                        MatrixXd::Constant(1, 1, osc.k)};
+      LinearSystem full = open;
+      full.K(0, 0) += osc.kc;
+      const Eigen::VectorXcd F = Eigen::VectorXcd::Constant(1, load.F);
+      for (int i = 0; i <= 600; ++i) {
+        const double w = sol.omega_min + (sol.omega_max - sol.omega_min) * i / 600.0;
+        t.add_row({w, std::abs(frequency_response(open, F, w)[0]), std::abs(frequency_response(full, F, w)[0])});
+      }
+      t.write(out + "fig07_linear.csv");
+      key.add("omega_open", modal_analysis(open.M, open.K).omega[0], "rad/s");
+      key.add("omega_closed", modal_analysis(full.M, full.K).omega[0], "rad/s");
+    }
+
+    // ---- Step 2: the contact force of Fig. 8 (law of contact.hpp) ----------
+    {
+      // x0 = 1 m oscillation on three preloads N0 = kc g: full, intermittent, open.
+      Table t({"theta", "F_full", "F_intermittent", "F_open"});
+      for (int i = 0; i <= 360; ++i) {
+        const double th = 2 * M_PI * i / 360.0, x = std::cos(th);
+        t.add_row({th, contact_force(osc.kc, 1.5 + x), contact_force(osc.kc, 0.5 + x),
+                   contact_force(osc.kc, -1.5 + x)});
+      }
+      t.write(out + "fig08_contact_force.csv");
+    }
+
+    // ---- Step 3: frequency responses of Figs. 9-18 ------------------------
+    const std::vector<Case> cases = {
+        {"g-1.2_F0.01", "9+12", {-1.2, 0.01, 0.0}},  {"g-0.6_F0.01", "9+11", {-0.6, 0.01, 0.0}},
+        {"g1_F0.01", "10", {1.0, 0.01, 0.0}},         {"g0.4_F0.01", "10", {0.4, 0.01, 0.0}},
+        {"g-0.6_F0.001", "11", {-0.6, 0.001, 0.0}},   {"g-1.2_F0.03", "12", {-1.2, 0.03, 0.0}},
+        {"g-1.5_F0.01_F01", "13-15", {-1.5, 0.01, 1.0}}, {"g-0.5_F0.01_F01", "16-18", {-0.5, 0.01, 1.0}},
+    };
+    Table index({"label", "figure", "gap", "F", "F0", "points", "folds", "rejected_steps", "seconds"});
+    Table marks({"label", "mark", "omega", "x_max", "contact"});
+    for (const auto& cs : cases) {
+      const auto t0 = std::chrono::steady_clock::now();
+      HarmonicBalance hb = make_model(osc, cs.load, sol);
+      const Curve c = frequency_response(hb, sol, cs.label);
+      write_curve(hb, c, out + "frc_" + cs.label + ".csv");
+      const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+      index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
+                     long(c.branch.folds.size()), long(c.branch.rejected_steps), secs});
+      std::cout << "ch03_mass_wall: " << cs.label << ": " << c.branch.summary() << "\n";
+
+      // Key numbers: contact onset / separation along the rising branch, located on
+      // the HB branch and checked against the closed-form linear FRF (reference/).
+      if (cs.label == "g-0.6_F0.01" || cs.label == "g-1.5_F0.01_F01")
+        key.add("onset_omega_" + cs.label, first_transition(hb, c, sol, in_contact_somewhere(hb)), "rad/s");
+      if (cs.label == "g0.4_F0.01" || cs.label == "g-0.5_F0.01_F01")
+        key.add("separation_omega_" + cs.label, first_transition(hb, c, sol, open_somewhere(hb)), "rad/s");
+      if (cs.label == "g-0.6_F0.01") key.add("folds_" + cs.label, double(c.branch.folds.size()), "-");
+      if (cs.label == "g-1.2_F0.01") {
+        // open resonance amplitude F/(c w) at w = sqrt(k/m), by HB (Newton at that omega)
+        VectorXd X = hb.open_contact_solution(1.0);
+        const double wn = std::sqrt(osc.k / osc.m);
+        newton_solve(hb, X, wn, hb.scaling(sol.omega_min, sol.omega_max));
+        key.add("open_resonance_amplitude", std::hypot(X[hb.index(1, 0)], X[hb.index(2, 0)]), "m");
+      }
+      // Figs. 13-18: time histories at three marked points: before the contact
+      // change (A), at the largest response (B), after it (C).
+      if (cs.load.F0 != 0.0) {
+        ResponseEvaluator ev(hb, VectorXd::Constant(1, 1.0));
+        const auto& Pts = c.branch.points;
+        const ContactState start_state = ev.summarize(Pts.front().X).contact;
+        std::size_t first = Pts.size(), last = 0, peak = 0;
+        for (std::size_t i = 0; i < Pts.size(); ++i) {
+          const auto r = ev.summarize(Pts[i].X);
+          if (r.contact != start_state) { first = std::min(first, i); last = i; }
+          if (r.x_max - r.x_min > ev.summarize(Pts[peak].X).x_max - ev.summarize(Pts[peak].X).x_min) peak = i;
+        }
+        if (first == Pts.size()) throw std::runtime_error(cs.label + ": no contact change along the branch");
+        // A: 0.02 rad/s before the change; C: 0.05 rad/s after it ends.
+        std::size_t a = first, cidx = last;
+        while (a > 0 && Pts[a].omega > Pts[first].omega - 0.02) --a;
+        while (cidx + 1 < Pts.size() && Pts[cidx].omega < Pts[last].omega + 0.05) ++cidx;
+        const std::pair<const char*, std::size_t> chosen[] = {{"A", a}, {"B", peak}, {"C", cidx}};
+        for (const auto& [name, i] : chosen) {
+          const auto r = ev.summarize(Pts[i].X);
+          marks.add_row({cs.label, std::string(name), Pts[i].omega, r.x_max, std::string(to_string(r.contact))});
+          const VectorXd x = ev.history(Pts[i].X);
+          Table th({"t", "x"});
+          const double T = 2 * M_PI / Pts[i].omega;
+          for (int period = 0; period < 2; ++period)
+            for (int j = 0; j < x.size(); ++j) th.add_row({T * (period + double(j) / x.size()), x[j]});
+          th.write(out + "time_" + cs.label + "_" + name + ".csv");
+        }
+      }
+    }
+    index.write(out + "cases.csv");
+    marks.write(out + "marks.csv");
+
+    // ---- Step 4: harmonic balance against GSL time integration (g = -0.6) ---
+    {
+      HarmonicBalance hb = make_model(osc, {-0.6, 0.01, 0.0}, sol);
+      const Curve c = frequency_response(hb, sol, "check");
+      ResponseEvaluator ev(hb, VectorXd::Constant(1, 1.0));
+      TimeIntegrator ti(hb);
+      TimeIntegrationOptions to;
+      to.x_scale = hb.scaling(sol.omega_min, sol.omega_max).x[0];
+      Table t({"omega", "x_max_hb", "x_max_time_integration", "periods", "contact"});
+      double worst = 0.0;
+      for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
+        const auto& p = c.branch.points[i];
+        const auto r = ev.summarize(p.X);
+        if (!c.stable[i] || r.contact != ContactState::intermittent) continue;
+        bool near = false;
+        for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - p.omega) < 2e-3;
+        if (near || t.rows() >= 8 || i % 3) continue;
+        VectorXd x0, v0;
+        hb_initial_state(hb, p.X, p.omega, x0, v0);
+        const SteadyState ss = ti.steady_state(x0, v0, p.omega, to);
+        if (!ss.converged) throw std::runtime_error("time integration did not reach a periodic state at omega = " + fmt(p.omega));
+        const double xm = ss.x.maxCoeff();
+        worst = std::max(worst, std::fabs(r.x_max - xm) / std::fabs(xm));
+        t.add_row({p.omega, r.x_max, xm, long(ss.periods), std::string(to_string(r.contact))});
+      }
+      t.write(out + "check_time_integration.csv");
+      key.add("xmax_rel_diff_hb_vs_time_integration", worst, "-");
+    }
+
+    // ---- Step 5: effect of the number of AFT samples (g = -0.6) -------------
+    {
+      Table t({"quadrature", "H", "N", "points", "folds", "upper_fold_omega", "seconds"});
+      for (int exact : {0, 1})
+        for (int N : {42, 84, 168, 336, 672, 1344}) {
+          if (exact && N != 84) continue;   // exact projection: N only brackets crossings
+          Solver s2 = sol;
+          s2.H = 10;
+          s2.N = N;
+          s2.exact_contact = exact;
+          HarmonicBalance hb = make_model(osc, {-0.6, 0.01, 0.0}, s2);
+          const auto t0 = std::chrono::steady_clock::now();
+          ContinuationOptions opt;
+          opt.omega_start = sol.omega_min;
+          opt.omega_end = sol.omega_max;
+          const Branch b = arc_length_continuation(hb, hb.open_contact_solution(sol.omega_min),
+                                                   hb.scaling(sol.omega_min, sol.omega_max), opt);
+          const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+          double upper = NAN;
+          for (const auto& f : b.folds) upper = std::isnan(upper) ? f.omega : std::max(upper, f.omega);
+          t.add_row({std::string(exact ? "exact" : "sampled"), long(10), long(N),
+                     long(b.points.size()), long(b.folds.size()), upper, secs});
+        }
+      t.write(out + "sample_study.csv");
+    }
+    key.write(out + "key_numbers.json");
+    std::cout << "ch03_mass_wall: data in " << cl.out_dir << "\n";
+  });
+}
