@@ -9,6 +9,7 @@ from style import legend_styles, mark_contact, plot_branch, read_csv, save
 def frc_figure(data_dir, fig_dir, name, title, cases):
     """cases: list of (label, legend text). Plots x_max and x_min vs omega, gap levels."""
     fig, ax = plt.subplots(figsize=(6.4, 4.2))
+    drawn = set()   # gap levels already drawn (Figs. 11-12 share one gap)
     for n, (label, text) in enumerate(cases):
         d = read_csv(data_dir / ("frc_%s.csv" % label))
         c = "C%d" % n
@@ -16,6 +17,9 @@ def frc_figure(data_dir, fig_dir, name, title, cases):
         plot_branch(ax, d, "x_min", c)
         mark_contact(ax, d, "x_max", c)
         g = float(label.split("_")[0][1:])
+        if g in drawn:
+            continue
+        drawn.add(g)
         ax.axhline(-g, color=c, ls=":", lw=1)
         ax.annotate("in contact where x > -g = %g m" % -g, (0.8, -g), color=c, fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
