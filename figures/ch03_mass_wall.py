@@ -21,7 +21,7 @@ def frc_figure(data_dir, fig_dir, name, title, cases):
             continue
         drawn.add(g)
         ax.axhline(-g, color=c, ls=":", lw=1)
-        ax.annotate("in contact where x > -g = %g m" % -g, (1.2, -g), color=c, fontsize=7,
+        ax.annotate("in contact where x > -g = %g m" % -g, (0.81, -g), color=c, fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
     ax.set_xlim(0.8, 1.6)   # the data span 0.5-2 rad/s; nothing happens outside this window
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 0.5-2)")
