@@ -92,7 +92,7 @@ struct Curve {
 };
 
 // Continuation over [omega_min, omega_max]; a failure is an error with its place.
-Curve frequency_response(const HarmonicBalance& hb, const Solver& s, const std::string& label) {
+Curve continue_curve(const HarmonicBalance& hb, const Solver& s, const std::string& label) {
   ContinuationOptions opt;
   opt.omega_start = s.omega_min;
   opt.omega_end = s.omega_max;
@@ -177,7 +177,7 @@ int main(int argc, char** argv) {
     // ---- Single case: the user's own parameters -------------------------
     if (P.any_set()) {
       HarmonicBalance hb = make_model(osc, load, sol);
-      const Curve c = frequency_response(hb, sol, "frc");
+      const Curve c = continue_curve(hb, sol, "frc");
       write_curve(hb, c, out + "frc.csv");
       key.add("folds", double(c.branch.folds.size()), "-");
       key.add("points", double(c.branch.points.size()), "-");
@@ -231,7 +231,7 @@ int main(int argc, char** argv) {
     for (const auto& cs : cases) {
       const auto t0 = std::chrono::steady_clock::now();
       HarmonicBalance hb = make_model(osc, cs.load, sol);
-      const Curve c = frequency_response(hb, sol, cs.label);
+      const Curve c = continue_curve(hb, sol, cs.label);
       write_curve(hb, c, out + "frc_" + cs.label + ".csv");
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
@@ -288,7 +288,7 @@ int main(int argc, char** argv) {
     // ---- Step 4: harmonic balance against GSL time integration (g = -0.6) ---
     {
       HarmonicBalance hb = make_model(osc, {-0.6, 0.01, 0.0}, sol);
-      const Curve c = frequency_response(hb, sol, "check");
+      const Curve c = continue_curve(hb, sol, "check");
       ResponseEvaluator ev(hb, VectorXd::Constant(1, 1.0));
       TimeIntegrator ti(hb);
       TimeIntegrationOptions to;
