@@ -38,11 +38,11 @@
 
 #include "gearhb/cli.hpp"
 #include "gearhb/continuation.hpp"
+#include "gearhb/frequency_sweep.hpp"
 #include "gearhb/harmonic_balance.hpp"
 #include "gearhb/linear_dynamics.hpp"
 #include "gearhb/output.hpp"
 #include "gearhb/response.hpp"
-#include "gearhb/time_integration.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -86,55 +86,14 @@ HarmonicBalance make_model(const Oscillator& o, const Loading& l, const Solver& 
                          s.exact_contact ? ContactQuadrature::exact : ContactQuadrature::sampled);
 }
 
-struct Curve {
-  Branch branch;
-  std::vector<bool> stable;
-};
+using Curve = FrequencyCurve;
 
-// Continuation over [omega_min, omega_max]; a failure is an error with its place.
-Curve continue_curve(const HarmonicBalance& hb, const Solver& s, const std::string& label) {
-  ContinuationOptions opt;
-  opt.omega_start = s.omega_min;
-  opt.omega_end = s.omega_max;
-  const Scaling sc = hb.scaling(s.omega_min, s.omega_max);
-  const VectorXd X0 = hb.open_contact_solution(s.omega_min);
-  Curve c;
-  c.branch = s.natural ? natural_continuation(hb, X0, sc, opt) : arc_length_continuation(hb, X0, sc, opt);
-  if (!c.branch.complete && !s.natural)
-    throw std::runtime_error("case " + label + ": " + c.branch.summary());
-  if (!c.branch.complete)
-    std::cerr << "ch03_mass_wall: natural continuation of " << label << " stopped: "
-              << c.branch.summary() << "\n";
-  c.stable = branch_stability(hb, c.branch);
-  return c;
-}
-
-std::string fmt(double v) {
-  std::ostringstream os;
-  os << v;
-  return os.str();
-}
-
-// Contact state of a solution, as a predicate for locate_transition.
-std::function<bool(const VectorXd&)> in_contact_somewhere(const HarmonicBalance& hb) {
-  return [&hb](const VectorXd& X) {
-    return ResponseEvaluator(hb, VectorXd::Constant(1, 1.0), 256).summarize(X).contact != ContactState::open;
-  };
-}
-std::function<bool(const VectorXd&)> open_somewhere(const HarmonicBalance& hb) {
-  return [&hb](const VectorXd& X) {
-    return ResponseEvaluator(hb, VectorXd::Constant(1, 1.0), 256).summarize(X).contact != ContactState::full;
-  };
-}
-
-// First omega along the branch where `state` switches on (refined by bisection).
-double first_transition(const HarmonicBalance& hb, const Curve& c, const Solver& s,
-                        const std::function<bool(const VectorXd&)>& state) {
-  const auto& P = c.branch.points;
-  for (std::size_t i = 1; i < P.size(); ++i)
-    if (!state(P[i - 1].X) && state(P[i].X))
-      return locate_transition(hb, P[i - 1], P[i], hb.scaling(s.omega_min, s.omega_max), state);
-  return NAN;
+SweepOptions sweep_options(const Solver& s) {
+  SweepOptions o;
+  o.omega_min = s.omega_min;
+  o.omega_max = s.omega_max;
+  o.natural = s.natural;
+  return o;
 }
 
 void write_curve(const HarmonicBalance& hb, const Curve& c, const std::string& path) {
@@ -177,7 +136,7 @@ int main(int argc, char** argv) {
     // ---- Single case: the user's own parameters -------------------------
     if (P.any_set()) {
       HarmonicBalance hb = make_model(osc, load, sol);
-      const Curve c = continue_curve(hb, sol, "frc");
+      const Curve c = sweep_frequency(hb, sweep_options(sol), "frc");
       write_curve(hb, c, out + "frc.csv");
       key.add("folds", double(c.branch.folds.size()), "-");
       key.add("points", double(c.branch.points.size()), "-");
@@ -231,7 +190,7 @@ int main(int argc, char** argv) {
     for (const auto& cs : cases) {
       const auto t0 = std::chrono::steady_clock::now();
       HarmonicBalance hb = make_model(osc, cs.load, sol);
-      const Curve c = continue_curve(hb, sol, cs.label);
+      const Curve c = sweep_frequency(hb, sweep_options(sol), cs.label);
       write_curve(hb, c, out + "frc_" + cs.label + ".csv");
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
@@ -241,9 +200,9 @@ int main(int argc, char** argv) {
       // Key numbers: contact onset / separation along the rising branch, located on
       // the HB branch and checked against the closed-form linear FRF (reference/).
       if (cs.label == "g-0.6_F0.01" || cs.label == "g-1.5_F0.01_F01")
-        key.add("onset_omega_" + cs.label, first_transition(hb, c, sol, in_contact_somewhere(hb)), "rad/s");
+        key.add("onset_omega_" + cs.label, first_transition(hb, c, touches_somewhere(hb)), "rad/s");
       if (cs.label == "g0.4_F0.01" || cs.label == "g-0.5_F0.01_F01")
-        key.add("separation_omega_" + cs.label, first_transition(hb, c, sol, open_somewhere(hb)), "rad/s");
+        key.add("separation_omega_" + cs.label, first_transition(hb, c, opens_somewhere(hb)), "rad/s");
       if (cs.label == "g-0.6_F0.01") key.add("folds_" + cs.label, double(c.branch.folds.size()), "-");
       if (cs.label == "g-1.2_F0.01") {
         // open resonance amplitude F/(c w) at w = sqrt(k/m), by HB (Newton at that omega)
@@ -288,30 +247,11 @@ int main(int argc, char** argv) {
     // ---- Step 4: harmonic balance against GSL time integration (g = -0.6) ---
     {
       HarmonicBalance hb = make_model(osc, {-0.6, 0.01, 0.0}, sol);
-      const Curve c = continue_curve(hb, sol, "check");
-      ResponseEvaluator ev(hb, VectorXd::Constant(1, 1.0));
-      TimeIntegrator ti(hb);
-      TimeIntegrationOptions to;
-      to.x_scale = hb.scaling(sol.omega_min, sol.omega_max).x[0];
-      Table t({"omega", "x_max_hb", "x_max_time_integration", "periods", "contact"});
-      double worst = 0.0;
-      for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-        const auto& p = c.branch.points[i];
-        const auto r = ev.summarize(p.X);
-        if (!c.stable[i] || r.contact != ContactState::intermittent) continue;
-        bool near = false;
-        for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - p.omega) < 2e-3;
-        if (near || t.rows() >= 8 || i % 3) continue;
-        VectorXd x0, v0;
-        hb_initial_state(hb, p.X, p.omega, x0, v0);
-        const SteadyState ss = ti.steady_state(x0, v0, p.omega, to);
-        if (!ss.converged) throw std::runtime_error("time integration did not reach a periodic state at omega = " + fmt(p.omega));
-        const double xm = ss.x.maxCoeff();
-        worst = std::max(worst, std::fabs(r.x_max - xm) / std::fabs(xm));
-        t.add_row({p.omega, r.x_max, xm, long(ss.periods), std::string(to_string(r.contact))});
-      }
-      t.write(out + "check_time_integration.csv");
-      key.add("xmax_rel_diff_hb_vs_time_integration", worst, "-");
+      const Curve c = sweep_frequency(hb, sweep_options(sol), "check");
+      const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, VectorXd::Constant(1, 1.0));
+      chk.table.write(out + "check_time_integration.csv");
+      key.add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
+      key.add("time_integration_points", double(chk.points), "-");
     }
 
     // ---- Step 5: effect of the number of AFT samples (g = -0.6) -------------

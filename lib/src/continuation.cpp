@@ -84,6 +84,33 @@ bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int m
   return false;
 }
 
+// The fold between two converged points ya, yb whose tangents ta, tb have omega
+// components of opposite sign: bisection on the chord fraction, each trial point
+// corrected back onto the branch in the hyperplane normal to the chord, until the
+// omega component of the tangent there changes sign within 1e-8 of the chord.
+// Omega is stationary at a fold, so this gives the fold frequency to round-off.
+// If a corrector fails (it should not on a short chord) the linear interpolation
+// of the omega-tangent is kept.
+Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::VectorXd& ta,
+                            const Eigen::VectorXd& yb, const Eigen::VectorXd& tb, double tolerance) {
+  const int n = S.n;
+  const double a_lin = ta[n] / (ta[n] - tb[n]);
+  Eigen::VectorXd best = (1.0 - a_lin) * ya + a_lin * yb;
+  const Eigen::VectorXd normal = (yb - ya).normalized();
+  const bool sign_a = ta[n] > 0;
+  double lo = 0.0, hi = 1.0;
+  while (hi - lo > 1e-8) {
+    const double mid = 0.5 * (lo + hi);
+    Eigen::VectorXd y = (1.0 - mid) * ya + mid * yb, tm;
+    int iters = 0;
+    double res = 0.0;
+    if (!correct(S, y, normal, 30, tolerance, iters, res) || !tangent(S, y, ta, tm)) return best;
+    best = y;
+    ((tm[n] > 0) == sign_a ? lo : hi) = mid;
+  }
+  return best;
+}
+
 }  // namespace
 
 Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
@@ -154,8 +181,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     const double w_new = S.omega(yn);
     BranchPoint pt{S.X(yn), w_new, iters, res, ds, tn[n]};
     if ((t[n] > 0) != (tn[n] > 0) && t[n] != 0.0) {
-      const double a = t[n] / (t[n] - tn[n]);   // where the omega-tangent vanishes
-      const Eigen::VectorXd yf = (1.0 - a) * y + a * yn;
+      const Eigen::VectorXd yf = locate_fold(S, y, t, yn, tn, opt.tolerance);
       b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
     }
     // Reached the end of the range: finish with a Newton solve exactly at omega_end.

@@ -143,19 +143,26 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
     if (wn > 0) xref = std::max(xref, (std::fabs(ct.gap) + ct.gap_harmonics.cwiseAbs().sum()) / wn);
   }
   // Linear response amplitudes (open and closed) over a fine scan of the range.
+  // Only the oscillating part sets the scale: the solvers see differences of X
+  // (arc length, Newton steps), and along a frequency sweep the static offset
+  // changes by no more than the oscillation does. A large static offset (a gear
+  // pair under torque: 1e-2 rad of twist beside 1e-5 of vibration) must not
+  // swamp the resonance peaks in the arc length.
   const int scan = 400;
+  double xstatic = 0.0;
   for (int i = 0; i <= scan; ++i) {
     const double w = wmin + (wmax - wmin) * i / scan;
     for (bool closed : {false, true}) {
       if (closed && contacts_.empty()) continue;
       const Eigen::VectorXd X = linear_solution(w, closed);
       for (int d = 0; d < n_; ++d) {
-        const double amp = std::fabs(X[d]) + std::hypot(X[index(1, d)], X[index(2, d)]);
-        xref = std::max(xref, amp);
+        xref = std::max(xref, std::hypot(X[index(1, d)], X[index(2, d)]));
+        xstatic = std::max(xstatic, std::fabs(X[d]));
       }
     }
   }
-  if (!(xref > 0.0)) xref = 1.0;   // nothing forces the system: any unit will do
+  if (!(xref > 0.0)) xref = xstatic;  // no oscillating input: the static size
+  if (!(xref > 0.0)) xref = 1.0;      // nothing forces the system: any unit will do
   double kref = sys_.K.diagonal().cwiseAbs().maxCoeff();
   for (const auto& ct : contacts_) kref += ct.kc * ct.w.squaredNorm();
   Scaling s;

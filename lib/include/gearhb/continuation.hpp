@@ -13,8 +13,8 @@
 // turn of the tangent sharper than `max_turn_deg`; below ds_min the branch stops
 // and the failure is reported with omega, residual and step (never a silently
 // truncated branch). Folds (turning points) are where the omega component of
-// the tangent changes sign; they are located by linear interpolation of that
-// component between the two points that bracket it.
+// the tangent changes sign; between the two points that bracket one, the fold is
+// located by bisection on the chord with the corrector (omega to round-off).
 //
 // Natural continuation (kept for teaching, thesis §2.2): omega marches with a
 // fixed step, Newton restarts from the previous solution. It cannot pass a

@@ -77,9 +77,10 @@ class HarmonicBalance : public ParametricProblem {
   Eigen::VectorXd closed_contact_solution(double omega) const;
 
   // Characteristic sizes, from the problem's own data over [omega_min, omega_max]:
-  // displacement = the largest of the open- and closed-contact linear response
-  // amplitudes (static + first harmonic, scanned over the range) and the gaps'
-  // sizes projected on the DOFs; residual = (max diagonal of K + sum kc) x that.
+  // displacement = the largest of the open- and closed-contact linear vibration
+  // amplitudes (first harmonic, scanned over the range) and the gaps' sizes
+  // projected on the DOFs (the static offset only if nothing oscillates);
+  // residual = (max diagonal of K + sum kc) x that.
   Scaling scaling(double omega_min, double omega_max) const;
 
  private:

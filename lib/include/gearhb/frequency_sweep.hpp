@@ -1,0 +1,76 @@
+#pragma once
+// A frequency sweep as every chapter runs it (thesis ch. 3-6, 8-9): the
+// continuation of one harmonic-balance model over [omega_min, omega_max],
+// Hill stability of every point, the frequencies where the contact state
+// changes, and the independent check against direct time integration.
+//
+//  - sweep_frequency: pseudo-arc-length continuation (or natural continuation
+//    for teaching) from the better of the open- and closed-contact linear
+//    solutions at omega_min. An incomplete arc-length branch is an error that
+//    names the case, the frequency, the residual and the step (never a
+//    silently truncated curve); a natural branch stops at its first fold, as
+//    the method does, and the stop is reported.
+//  - first_transition: the first frequency along the branch where a contact
+//    predicate switches on, refined by bisection on the branch.
+//  - compare_with_time_integration: x_max of a coordinate q' x from harmonic
+//    balance against GSL rk8pd integrated to a periodic steady state, at up to
+//    `points` stable points in the requested contact state, spread evenly over
+//    the branch and away from folds (where the solution is slow to attract).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/continuation.hpp"
+#include "gearhb/harmonic_balance.hpp"
+#include "gearhb/output.hpp"
+
+namespace gearhb {
+
+struct SweepOptions {
+  double omega_min = 0.0, omega_max = 1.0;   // [rad/s]; the sweep runs upward
+  bool natural = false;                      // natural continuation (stops at a fold)
+  ContinuationOptions continuation;          // omega_start / omega_end are overwritten
+};
+
+struct FrequencyCurve {
+  Branch branch;
+  std::vector<bool> stable;   // Hill, one flag per point
+  Scaling scaling;            // the scaling the branch was computed with
+};
+
+// Linear first guess at omega: the open- or closed-contact solution, whichever
+// has the smaller residual.
+Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
+
+// Continue `hb` over the range; `label` names the case in error messages.
+FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
+                               const std::string& label);
+
+// Contact predicates (on the penetration of every contact over a period).
+std::function<bool(const Eigen::VectorXd&)> touches_somewhere(const HarmonicBalance& hb);
+std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalance& hb);
+
+// First omega along the branch where `state` switches from false to true; NaN if never.
+double first_transition(const HarmonicBalance& hb, const FrequencyCurve& c,
+                        const std::function<bool(const Eigen::VectorXd&)>& state);
+
+struct TimeIntegrationCheckOptions {
+  int points = 8;                                  // at most this many comparisons
+  ContactState state = ContactState::intermittent; // compare points in this state only
+  double fold_margin = 2e-3;                       // skip points within fold_margin*omega of a fold
+};
+
+struct TimeIntegrationCheck {
+  Table table{{"omega", "x_max_hb", "x_max_time_integration", "rel_diff", "periods", "contact"}};
+  double worst_rel_diff = 0.0;   // max |x_max_hb - x_max_ti| / |x_max_ti|
+  int points = 0;
+};
+
+// Throws if the time integration does not reach a periodic state.
+TimeIntegrationCheck compare_with_time_integration(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                   const Eigen::VectorXd& q,
+                                                   const TimeIntegrationCheckOptions& opt = {});
+
+}  // namespace gearhb
