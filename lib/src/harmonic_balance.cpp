@@ -137,10 +137,16 @@ Eigen::VectorXd HarmonicBalance::open_contact_solution(double w) const { return 
 Eigen::VectorXd HarmonicBalance::closed_contact_solution(double w) const { return linear_solution(w, true); }
 
 Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
-  double xref = 0.0;
+  // The oscillating part of a gap (a transmission error) forces the system as a
+  // displacement does; a constant gap, like a static offset, only counts when
+  // nothing oscillates.
+  double xref = 0.0, xstatic = 0.0;
   for (const auto& ct : contacts_) {
     const double wn = ct.w.lpNorm<Eigen::Infinity>();
-    if (wn > 0) xref = std::max(xref, (std::fabs(ct.gap) + ct.gap_harmonics.cwiseAbs().sum()) / wn);
+    if (wn > 0) {
+      xref = std::max(xref, ct.gap_harmonics.cwiseAbs().sum() / wn);
+      xstatic = std::max(xstatic, std::fabs(ct.gap) / wn);
+    }
   }
   // Linear response amplitudes (open and closed) over a fine scan of the range.
   // Only the oscillating part sets the scale: the solvers see differences of X
@@ -149,7 +155,6 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
   // pair under torque: 1e-2 rad of twist beside 1e-5 of vibration) must not
   // swamp the resonance peaks in the arc length.
   const int scan = 400;
-  double xstatic = 0.0;
   for (int i = 0; i <= scan; ++i) {
     const double w = wmin + (wmax - wmin) * i / scan;
     for (bool closed : {false, true}) {

@@ -78,8 +78,9 @@ class HarmonicBalance : public ParametricProblem {
 
   // Characteristic sizes, from the problem's own data over [omega_min, omega_max]:
   // displacement = the largest of the open- and closed-contact linear vibration
-  // amplitudes (first harmonic, scanned over the range) and the gaps' sizes
-  // projected on the DOFs (the static offset only if nothing oscillates);
+  // amplitudes (first harmonic, scanned over the range) and of the gaps'
+  // oscillating parts (the static offset and constant gaps only if nothing
+  // oscillates);
   // residual = (max diagonal of K + sum kc) x that.
   Scaling scaling(double omega_min, double omega_max) const;
 

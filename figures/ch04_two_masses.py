@@ -1,0 +1,79 @@
+"""Figures 20-23 of thesis ch. 4 (two masses that can touch) from build/data/ch04_two_masses.
+
+Left panel: the relative displacement d = x1 - x2 (the quantity the contact sees),
+its maximum and minimum over a period, with the contact level d = -g. Right panel:
+the first-harmonic amplitude of each mass, which shows that the masses themselves
+resonate at sqrt(k/m) in phase (a motion the contact never feels).
+"""
+import math
+
+import matplotlib.pyplot as plt
+
+from style import legend_styles, mark_contact, plot_branch, read_csv, save
+
+XLIM = (1.6, 3.4)   # the data span 1-4 rad/s; nothing happens outside this window
+CASES = [("20", "g-0.5", -0.5), ("21", "g-0.005", -0.005), ("22", "g0.15", 0.15), ("23", "g0.6", 0.6)]
+
+
+def natural_frequencies(data_dir):
+    m = read_csv(data_dir / "modes.csv")
+    return {st: sorted({round(w, 9) for s, w in zip(m["state"], m["omega"]) if s == st})
+            for st in ("open", "closed")}
+
+
+def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
+    d = read_csv(data_dir / ("frc_%s.csv" % stem))
+    fig_, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0))
+    plot_branch(a1, d, "x_max", "C0", r"$d_{max}$ (upper), $d_{min}$ (lower)")
+    plot_branch(a1, d, "x_min", "C0")
+    mark_contact(a1, d, "x_max", "C0")
+    mark_contact(a1, d, "x_min", "C0")
+    lo, hi = min(d["x_min"]), max(d["x_max"])
+    span = hi - lo
+    level = -gap
+    if lo - span <= level <= hi + span:
+        a1.axhline(level, color="C3", ls=":", lw=1.2, label="contact level d = -g = %g m" % level)
+    title = "Fig. %s: relative motion, g = %g m" % (fig, gap)
+    if not lo - span <= level <= hi + span:
+        title += "\n(contact level d = -g = %g m is far %s: the masses never %s)" % (
+            level, "above" if level > hi else "below", "touch" if level > hi else "separate")
+    for w in wn["open"]:
+        a1.axvline(w, color="0.5", ls="-.", lw=0.8)
+    for w in wn["closed"]:
+        a1.axvline(w, color="C2", ls=":", lw=0.9)
+    a1.set_xlim(*XLIM)
+    a1.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+    a1.set_ylabel(r"relative displacement $d = x_1 - x_2$ [m]")
+    a1.set_title(title)
+    from matplotlib.lines import Line2D
+    h, _ = a1.get_legend_handles_labels()
+    h += [Line2D([], [], color="0.5", ls="-.", lw=0.8, label=r"open $\omega_n$ = %s rad/s" %
+                 ", ".join("%.4g" % w for w in wn["open"])),
+          Line2D([], [], color="C2", ls=":", lw=0.9, label=r"closed $\omega_n$ = %s rad/s" %
+                 ", ".join("%.4g" % w for w in wn["closed"]))]
+    a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="upper left", framealpha=0.9)
+    if gap < 0 and level > hi + span:
+        a1.set_ylim(lo - 0.1 * span, hi + 0.6 * span)
+    else:
+        top = max(hi, level if lo - span <= level <= hi + span else hi)
+        bottom = min(lo, level if lo - span <= level <= hi + span else lo)
+        a1.set_ylim(bottom - 0.1 * (top - bottom), top + 0.9 * (top - bottom))
+
+    for name, c in (("x1", "C0"), ("x2", "C1")):
+        e = read_csv(data_dir / ("frc_%s_%s.csv" % (stem, name)))
+        plot_branch(a2, e, "x_h1", c, "mass %s" % name[1])
+    for w in wn["open"]:
+        a2.axvline(w, color="0.5", ls="-.", lw=0.8)
+    for w in wn["closed"]:
+        a2.axvline(w, color="C2", ls=":", lw=0.9)
+    a2.set_xlim(*XLIM)
+    a2.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+    a2.set_ylabel("first-harmonic amplitude of each mass [m]")
+    a2.set_title("each mass (in-phase resonance at sqrt(k/m), contact-free)")
+    a2.legend(fontsize=8, loc="upper right")
+    return save(fig_, fig_dir / ("fig%s_two_masses_g%s.png" % (fig, ("%g" % gap))))
+
+
+def draw(data_dir, fig_dir):
+    wn = natural_frequencies(data_dir)
+    return [draw_one(data_dir, fig_dir, fig, stem, gap, wn) for fig, stem, gap in CASES]
