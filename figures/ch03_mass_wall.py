@@ -21,7 +21,7 @@ def frc_figure(data_dir, fig_dir, name, title, cases):
             continue
         drawn.add(g)
         ax.axhline(-g, color=c, ls=":", lw=1)
-        ax.annotate("in contact where x > -g = %g m" % -g, (0.81, -g), color=c, fontsize=7,
+        ax.annotate("in contact where x > -g = %g m" % -g, (1.25, -g), color=c, fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
     ax.set_xlim(0.8, 1.6)   # the data span 0.5-2 rad/s; nothing happens outside this window
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 0.5-2)")
@@ -50,7 +50,7 @@ def time_figures(data_dir, fig_dir, label, gap, first_fig, names):
         a1.set_ylabel(r"$x_{max}$, $x_{min}$ [m]")
         a1.set_title("frequency response (g = %g m, F0 = 1 N)" % gap)
         h, _ = a1.get_legend_handles_labels()
-        a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="upper left")
+        a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="lower right", framealpha=0.9)
         t = read_csv(data_dir / ("time_%s_%s.csv" % (label, mark)))
         a2.plot(t["t"], t["x"], color="C0", label="x(t), %s contact" % marks["contact"][i])
         a2.axhline(-gap, color="C3", ls=":", lw=1, label="wall: x = -g")
