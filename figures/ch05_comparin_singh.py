@@ -1,0 +1,158 @@
+"""Figures 25-30 of thesis ch. 5 (Comparin & Singh impact pair) from build/data/ch05_comparin_singh.
+
+Each figure: the relative displacement delta = x1 - x2 (x_max upper curve, x_min lower curve)
+of the harmonic-balance solution for the two gaps of that thesis figure, the contact level
+delta = -g (the bodies touch when delta > -g), the open and closed natural frequencies, and
+in the title the prediction of the analytic regime classifier for each gap.
+"""
+import matplotlib.pyplot as plt
+
+from style import plot_branch, read_csv, save
+
+FIGS = [  # figure number, short name, labels of the two gaps
+    (25, "gap_m20_m15", ["fig25_g-20", "fig25_g-15"]),
+    (26, "gap_m1_p6", ["fig26_g-1", "fig26_g6"]),
+    (27, "force_gap_m20_m30", ["fig27_g-20", "fig27_g-30"]),
+    (28, "force_gap_p6_p20", ["fig28_g6", "fig28_g20"]),
+    (29, "mean_gap_m15_m8", ["fig29_g-15", "fig29_g-8"]),
+    (30, "mean_gap_p6_p10", ["fig30_g6", "fig30_g10"]),
+]
+
+
+def case_row(cases, label):
+    i = cases["label"].index(label)
+    return {k: v[i] for k, v in cases.items()}
+
+
+def mark_intermittent(ax, d, y, color, ms=3):
+    """Small dots on the points in intermittent contact only (open / full is read from the level line)."""
+    pts = [(d["omega"][i], d[y][i]) for i in range(len(d["omega"])) if d["contact"][i] == "intermittent"]
+    if pts:
+        ax.plot(*zip(*pts), ls="none", marker=".", ms=ms, color=color, alpha=0.7)
+
+
+def draw_case(ax, d, color, text, with_label=True, ms=3):
+    plot_branch(ax, d, "x_max", color, text if with_label else None)
+    plot_branch(ax, d, "x_min", color)
+    mark_intermittent(ax, d, "x_max", color, ms)
+    mark_intermittent(ax, d, "x_min", color, ms)
+
+
+def style_entries():
+    from matplotlib.lines import Line2D
+    return [Line2D([], [], color="k", ls="-", label="stable (Hill)"),
+            Line2D([], [], color="k", ls="--", label="unstable (Hill)"),
+            Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact (HB)")]
+
+
+def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_closed):
+    rows = [case_row(cases, lb) for lb in labels]
+    has_zoom = any(r["intermittent_from"] == r["intermittent_from"] for r in rows)
+    if has_zoom:
+        fig, (ax, axz) = plt.subplots(1, 2, figsize=(10.5, 5.0), gridspec_kw={"width_ratios": [2, 1]})
+    else:
+        fig, ax = plt.subplots(figsize=(7.2, 5.0))
+    title = ["Fig. %d: $F_m$ = %g N, $F_p$ = %g N (HB, H = 10)" % (num, rows[0]["Fm"], rows[0]["Fp"])]
+    zoom = None
+    for n, (lb, r) in enumerate(zip(labels, rows)):
+        d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        c = "C%d" % n
+        g = r["gap"]
+        draw_case(ax, d, c, r"g = %g m: $\delta_{max}$ (upper), $\delta_{min}$ (lower)" % g)
+        ax.axhline(-g, color=c, ls=":", lw=1.2)
+        ax.annotate(r"contact level $\delta = -g$ = %g m (in contact above)" % -g, (0.52, -g), color=c,
+                    fontsize=7, xytext=(0, 3), textcoords="offset points")
+        title.append("g = %g m, predicted: %s" % (g, r["prediction"].replace("W", r"$\Omega$")))
+        if r["intermittent_from"] == r["intermittent_from"]:  # not NaN: zoom on the contact change
+            zoom = (d, c, g, r)
+    d0, d1 = (read_csv(data_dir / ("frc_%s.csv" % lb)) for lb in labels)
+    if len(d0["x_max"]) == len(d1["x_max"]) and max(abs(a - b) for a, b in zip(d0["x_max"], d1["x_max"])) < 1e-9:
+        ax.annotate("the two curves coincide: without contact (type 1) the response\n"
+                    "does not depend on g (both gaps are never reached)" if rows[0]["gap"] < 0 else
+                    "the two curves differ only by a shift", (0.03, 0.40), xycoords="axes fraction", fontsize=8)
+    for w, name in ((omega_open, "open"), (omega_closed, "closed")):
+        ax.axvline(w, color="0.5", ls="-.", lw=0.8)
+        ax.annotate(r"$\omega_{%s}$ = %.3f" % (name, w), (w, 0.02), xycoords=("data", "axes fraction"),
+                    fontsize=7, rotation=90, xytext=(2, 0), textcoords="offset points", color="0.35")
+    ax.set_xlim(0.5, 2.0)
+    lo, hi = ax.get_ylim()
+    ax.set_ylim(lo, hi + 0.18 * (hi - lo))   # room for the legend above the curves
+    ax.set_xlabel(r"forcing frequency $\Omega$ [rad/s]")
+    ax.set_ylabel(r"relative displacement $\delta = x_1 - x_2$ [m]")
+    ax.set_title("\n".join(title), fontsize=8.5)
+    h, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=h + style_entries(), loc="upper right", ncol=2, fontsize=7, framealpha=0.95)
+    if zoom is not None:
+        d, c, g, r = zoom
+        draw_case(axz, d, c, None, with_label=False, ms=4)
+        axz.axhline(-g, color=c, ls=":", lw=1.2, label=r"contact level $\delta = -g$")
+        axz.axvspan(r["intermittent_from"], r["intermittent_to"], color="0.85", zorder=0,
+                    label="predicted intermittent\n(no linear solution valid)")
+        axz.axvline(omega_closed, color="0.5", ls="-.", lw=0.8)
+        axz.set_xlim(1.39, 1.44)
+        axz.set_xlabel(r"$\Omega$ [rad/s] (zoom)")
+        axz.set_ylabel(r"$\delta$ [m]")
+        axz.set_title("zoom, g = %g m: outside the grey band the\nlinear full-contact solution coexists" % g,
+                      fontsize=8.5)
+        axz.legend(loc="center right", fontsize=7, framealpha=0.95)
+    return save(fig, fig_dir / ("fig%02d_comparin_singh_%s.png" % (num, short)))
+
+
+def validation_map(data_dir, fig_dir):
+    v = read_csv(data_dir / "classifier_validation.csv")
+    fig, axes = plt.subplots(2, 2, figsize=(9.5, 7.0), sharex=True)
+    style = {"type1_open": ("C0", "o", "type 1 predicted (never in contact)"),
+             "type2_full": ("C2", "s", "type 2 predicted (always in contact)"),
+             "intermittent": ("C3", "D", "intermittent predicted")}
+    combos = [(2.1, 0.05), (2.1, 0.1), (4.1, 0.05), (4.1, 0.1)]
+    for ax, (Fm, Fp) in zip(axes.flat, combos):
+        idx = [i for i in range(len(v["Fm"])) if v["Fm"][i] == Fm and v["Fp"][i] == Fp]
+        levels = sorted(set(round(v["gap"][i] + Fm, 9) for i in idx))
+        row = {lv: j for j, lv in enumerate(levels)}   # one row per static penetration s (evenly spaced rows)
+        for key, (c, m, lab) in style.items():
+            pts = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["prediction"][i] == key]
+            if pts:
+                ax.plot(*zip(*pts), ls="none", marker=m, color=c, ms=4, label=lab)
+        co = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["verdict"][i] == "agree_coexisting"]
+        if co:
+            ax.plot(*zip(*co), ls="none", marker="o", mfc="none", mec="k", ms=9,
+                    label="agrees, + coexisting intermittent HB solutions")
+        bad = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["verdict"][i] in ("disagree", "no_solution")]
+        if bad:
+            ax.plot(*zip(*bad), ls="none", marker="x", color="m", ms=10, mew=2, label="disagrees")
+        ax.axhline(sum(1 for lv in levels if lv < 0) - 0.5, color="0.5", lw=0.8)
+        ax.set_yticks(range(len(levels)))
+        ax.set_yticklabels(["%g" % lv for lv in levels], fontsize=7)
+        ax.set_title(r"$F_m$ = %g N, $F_p$ = %g N" % (Fm, Fp))
+        ax.set_ylabel(r"$s = g + F_m/k$ [m]")
+    for ax in axes[1]:
+        ax.set_xlabel(r"$\Omega$ [rad/s]")
+    n = len(v["Fm"])
+    agree = sum(1 for x in v["verdict"] if x == "agree")
+    co = sum(1 for x in v["verdict"] if x == "agree_coexisting")
+    dis = n - agree - co
+    fig.suptitle("Supplement: classifier vs every harmonic-balance solution at each grid point\n"
+                 "rows: static penetration with the contact open, s = g + Fm/k (s < 0: type 1 candidate, s > 0: type 2)\n"
+                 "%d points: %d agree, %d agree with a coexisting intermittent solution, %d disagree"
+                 % (n, agree, co, dis), fontsize=10)
+    h, lab = axes[0, 0].get_legend_handles_labels()
+    for ax in axes.flat[1:]:
+        for hh, ll in zip(*ax.get_legend_handles_labels()):
+            if ll not in lab:
+                h.append(hh)
+                lab.append(ll)
+    fig.legend(h, lab, loc="lower center", ncol=2, fontsize=8)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    fig.savefig(fig_dir / "figS2_ch05_classifier_validation.png")
+    plt.close(fig)
+    return str(fig_dir / "figS2_ch05_classifier_validation.png")
+
+
+def draw(data_dir, fig_dir):
+    cases = read_csv(data_dir / "cases.csv")
+    import json
+    key = json.load(open(data_dir / "key_numbers.json"))
+    wo, wc = key["omega_open"]["value"], key["omega_closed"]["value"]
+    out = [frc_figure(data_dir, fig_dir, num, short, labels, cases, wo, wc) for num, short, labels in FIGS]
+    out.append(validation_map(data_dir, fig_dir))
+    return out
