@@ -17,6 +17,7 @@ const char* to_string(ContactState s) {
 #include <stdexcept>
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 #include <gsl/gsl_roots.h>
 
 namespace gearhb {
@@ -48,7 +49,45 @@ double crossing(const Eigen::VectorXd& uc, double a, double b) {
   return r;
 }
 
+double minus_trig_poly(double theta, void* params) { return -trig_poly(theta, params); }
+
+// Refine the sampled extremum at theta_j (value us[j]) between its neighbours with
+// GSL's Brent minimiser on -sign*u; returns the refined value (never worse than us[j]).
+double refine_extremum(const Eigen::VectorXd& uc, const Eigen::VectorXd& us, int j, double sign) {
+  const int N = int(us.size());
+  const double dt = 2.0 * M_PI / N;
+  const double fa = -sign * us[(j + N - 1) % N], fm = -sign * us[j], fb = -sign * us[(j + 1) % N];
+  if (!(fm < fa && fm < fb)) return us[j];   // flat or a plateau: the sample is as good
+  gsl_function F{sign > 0 ? minus_trig_poly : trig_poly, const_cast<Eigen::VectorXd*>(&uc)};
+  gsl_min_fminimizer* m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  gsl_set_error_handler_off();
+  double best = us[j];
+  if (gsl_min_fminimizer_set_with_values(m, &F, j * dt, fm, (j - 1) * dt, fa, (j + 1) * dt, fb) == GSL_SUCCESS) {
+    for (int it = 0; it < 100; ++it) {
+      gsl_min_fminimizer_iterate(m);
+      const double lo = gsl_min_fminimizer_x_lower(m), hi = gsl_min_fminimizer_x_upper(m);
+      if (gsl_min_test_interval(lo, hi, 1e-13, 0.0) == GSL_SUCCESS) break;
+    }
+    best = -sign * gsl_min_fminimizer_f_minimum(m);
+  }
+  gsl_min_fminimizer_free(m);
+  return sign > 0 ? std::max(best, us[j]) : std::min(best, us[j]);
+}
+
 }  // namespace
+
+std::pair<double, double> trig_extremes(const Eigen::VectorXd& c, const Eigen::VectorXd& samples) {
+  Eigen::Index jmax = 0, jmin = 0;
+  samples.maxCoeff(&jmax);
+  samples.minCoeff(&jmin);
+  return {refine_extremum(c, samples, int(jmin), -1.0), refine_extremum(c, samples, int(jmax), +1.0)};
+}
+
+ContactState contact_state(const Eigen::VectorXd& uc, const Eigen::VectorXd& us) {
+  const auto [lo, hi] = trig_extremes(uc, us);
+  if (!(hi > 0.0)) return ContactState::open;
+  return lo > 0.0 ? ContactState::full : ContactState::intermittent;
+}
 
 std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
                                                          const Eigen::VectorXd& us) {

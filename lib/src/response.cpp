@@ -1,6 +1,7 @@
 #include "gearhb/response.hpp"
 
 #include <cmath>
+#include <tuple>
 
 #include "gearhb/stability.hpp"
 
@@ -18,8 +19,7 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   const Eigen::VectorXd c = hb_.project(X, q_);
   const Eigen::VectorXd x = fine_.to_time(c);
   ResponseSummary r;
-  r.x_max = x.maxCoeff();
-  r.x_min = x.minCoeff();
+  std::tie(r.x_min, r.x_max) = trig_extremes(c, x);
   r.x_mean = c[0];
   double ss = 0.0;
   for (int k = 1; k <= H; ++k) ss += 0.5 * (c[2 * k - 1] * c[2 * k - 1] + c[2 * k] * c[2 * k]);
@@ -30,8 +30,9 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   for (const auto& ct : hb_.contacts()) {
     Eigen::VectorXd uc = hb_.project(X, ct.w) + ct.gap_harmonics;
     uc[0] += ct.gap;
-    const Eigen::VectorXd u = fine_.to_time(uc);
-    for (int j = 0; j < u.size(); ++j) (u[j] > 0.0 ? any_closed : any_open) = true;
+    const ContactState s = contact_state(uc, fine_.to_time(uc));
+    any_closed = any_closed || s != ContactState::open;
+    any_open = any_open || s != ContactState::full;
   }
   r.contact = any_closed ? (any_open ? ContactState::intermittent : ContactState::full)
                          : ContactState::open;

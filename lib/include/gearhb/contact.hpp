@@ -57,6 +57,16 @@ namespace gearhb {
 std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
                                                          const Eigen::VectorXd& us);
 
+// Smallest and largest value over a period of the trigonometric polynomial with
+// coefficients `c`, given its uniform samples: the extreme samples, refined between
+// their neighbours by GSL's Brent minimiser (so a crest that falls between two
+// samples is not missed; exact to ~1e-13 in phase).
+std::pair<double, double> trig_extremes(const Eigen::VectorXd& c, const Eigen::VectorXd& samples);
+
+// Contact state over a period of the penetration u (coefficients uc, samples us):
+// open if max u <= 0, full if min u > 0, intermittent otherwise (extremes refined).
+ContactState contact_state(const Eigen::VectorXd& uc, const Eigen::VectorXd& us);
+
 // Moments Sc[m] = (1/2pi) int_I cos(m theta), Ss[m] = (1/2pi) int_I sin(m theta), m = 0..M.
 void indicator_moments(const std::vector<std::pair<double, double>>& intervals, int M,
                        double* Sc, double* Ss);

@@ -1,10 +1,12 @@
 #pragma once
 // What a frequency-response curve shows of one periodic solution (SPEC §2):
 // for a coordinate q' x (a DOF, or a relative displacement such as x1 - x2),
-//   x_max, x_min  over one period (evaluated on a fine grid of the Fourier series),
+//   x_max, x_min  over one period (extreme samples of the Fourier series on a fine
+//                 grid, refined by Brent between neighbours: contact.hpp trig_extremes),
 //   x_rms_ac      RMS of the oscillating part, sqrt(sum_k (a_k^2 + b_k^2) / 2),
 //   x_h1          amplitude of the first harmonic, sqrt(a_1^2 + b_1^2),
-// and the contact state over the period (open / full / intermittent).
+// and the contact state over the period (open / full / intermittent), judged on
+// the refined extremes of every contact penetration.
 #include <string>
 #include <vector>
 
