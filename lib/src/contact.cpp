@@ -51,18 +51,31 @@ double crossing(const Eigen::VectorXd& uc, double a, double b) {
 
 double minus_trig_poly(double theta, void* params) { return -trig_poly(theta, params); }
 
-// Refine the sampled extremum at theta_j (value us[j]) between its neighbours with
-// GSL's Brent minimiser on -sign*u; returns the refined value (never worse than us[j]).
+// Refine the sampled extremum at theta_j (value us[j]) with GSL's Brent minimiser
+// on -sign*u, in a bracket (a, m, b) with f(m) below f(a) and f(b): the sample and
+// its two neighbours, or - when a neighbour ties with it (the crest half-way
+// between two samples) - the two tied samples and their midpoint. Returns the
+// refined value (never worse than the sample).
 double refine_extremum(const Eigen::VectorXd& uc, const Eigen::VectorXd& us, int j, double sign) {
   const int N = int(us.size());
   const double dt = 2.0 * M_PI / N;
-  const double fa = -sign * us[(j + N - 1) % N], fm = -sign * us[j], fb = -sign * us[(j + 1) % N];
-  if (!(fm < fa && fm < fb)) return us[j];   // flat or a plateau: the sample is as good
-  gsl_function F{sign > 0 ? minus_trig_poly : trig_poly, const_cast<Eigen::VectorXd*>(&uc)};
+  Eigen::VectorXd& c = const_cast<Eigen::VectorXd&>(uc);
+  auto f = [&](double th) { return -sign * trig_poly(th, &c); };
+  double xa = (j - 1) * dt, xm = j * dt, xb = (j + 1) * dt;
+  double fa = -sign * us[(j + N - 1) % N], fm = -sign * us[j], fb = -sign * us[(j + 1) % N];
+  if (!(fm < fa && fm < fb)) {
+    // a tie with a neighbour: try the midpoint between the two tied samples
+    const bool right = !(fm < fb);
+    const double mid = right ? xm + 0.5 * dt : xm - 0.5 * dt, fmid = f(mid);
+    if (right) { xa = xm; fa = fm; xm = mid; fm = fmid; }
+    else       { xb = xm; fb = fm; xm = mid; fm = fmid; }
+    if (!(fm < fa && fm < fb)) return us[j];   // a plateau: the sample is as good
+  }
+  gsl_function F{sign > 0 ? minus_trig_poly : trig_poly, &c};
   gsl_min_fminimizer* m = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
   gsl_set_error_handler_off();
   double best = us[j];
-  if (gsl_min_fminimizer_set_with_values(m, &F, j * dt, fm, (j - 1) * dt, fa, (j + 1) * dt, fb) == GSL_SUCCESS) {
+  if (gsl_min_fminimizer_set_with_values(m, &F, xm, fm, xa, fa, xb, fb) == GSL_SUCCESS) {
     for (int it = 0; it < 100; ++it) {
       gsl_min_fminimizer_iterate(m);
       const double lo = gsl_min_fminimizer_x_lower(m), hi = gsl_min_fminimizer_x_upper(m);
