@@ -13,7 +13,14 @@
 // shifts i k w. Selection criterion: keep the 2n eigenvalues with the smallest
 // |Im lambda| (those whose eigenvectors are dominated by the retained
 // low harmonics; Lazarus & Thomas, C. R. Mecanique 338 (2010) 510-517;
-// Moore, "Floquet theory as a computational tool", SIAM J. Numer. Anal. 2005).
+// Moore, "Floquet theory as a computational tool", SIAM J. Numer. Anal. 2005),
+// plus every eigenvalue with |Im lambda| <= 0.51 w: at a period doubling the
+// multipliers are real negative, their exponents sit at Im = +-w/2 (shifted by
+// the truncation error either way) and there are more of them than slots;
+// without this Hill called period-doubled orbits stable (ch. 6, against GSL
+// Floquet multipliers).
+// The eigenproblem is solved for mu = lambda / w (time in radians of forcing
+// phase), which keeps the companion matrix balanced for stiff gear models.
 // The solution is stable when every selected exponent has Re(lambda) < 0
 // (within a tolerance relative to omega).
 #include <complex>
@@ -23,7 +30,7 @@
 namespace gearhb {
 
 struct HillResult {
-  Eigen::VectorXcd exponents;   // the 2n selected Floquet exponents
+  Eigen::VectorXcd exponents;   // the 2n selected Floquet exponents (more if tied)
   double max_real = 0.0;        // largest real part among them
   bool stable = true;
 };
