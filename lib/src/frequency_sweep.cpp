@@ -74,10 +74,13 @@ TimeIntegrationCheck compare_with_time_integration(const HarmonicBalance& hb, co
   // Eligible points: stable, in the requested state, away from every fold.
   std::vector<std::size_t> eligible;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    if (!c.stable[i] || ev.summarize(P[i].X).contact != opt.state) continue;
+    const ResponseSummary r = ev.summarize(P[i].X);
+    if (!c.stable[i] || r.contact != opt.state) continue;
+    if (r.x_max < opt.min_crest_fraction * 0.5 * (r.x_max - r.x_min)) continue;
     bool near = false;
     for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - P[i].omega) < opt.fold_margin * f.omega;
-    if (!near) eligible.push_back(i);
+    if (near || (opt.accept && !opt.accept(i))) continue;
+    eligible.push_back(i);
   }
   TimeIntegrationCheck out;
   if (eligible.empty()) return out;
@@ -97,14 +100,15 @@ TimeIntegrationCheck compare_with_time_integration(const HarmonicBalance& hb, co
     const SteadyState ss = ti.steady_state(x0, v0, P[i].omega, to);
     if (!ss.converged) {
       std::ostringstream os;
-      os << "time integration did not reach a periodic state at omega = " << P[i].omega
+      os << "time integration did not reach a periodic state at omega = " << P[i].omega * opt.omega_factor
          << " rad/s after " << ss.periods << " periods (mismatch " << ss.mismatch << ")";
       throw std::runtime_error(os.str());
     }
     const double xm = (ss.x * q).maxCoeff();
     const double rel = std::fabs(r.x_max - xm) / std::fabs(xm);
     out.worst_rel_diff = std::max(out.worst_rel_diff, rel);
-    out.table.add_row({P[i].omega, r.x_max, xm, rel, long(ss.periods), std::string(to_string(r.contact))});
+    out.table.add_row({P[i].omega * opt.omega_factor, r.x_max, xm, rel, long(ss.periods),
+                       std::string(to_string(r.contact))});
     ++out.points;
   }
   return out;

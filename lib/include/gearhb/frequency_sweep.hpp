@@ -60,6 +60,13 @@ struct TimeIntegrationCheckOptions {
   int points = 8;                                  // at most this many comparisons
   ContactState state = ContactState::intermittent; // compare points in this state only
   double fold_margin = 2e-3;                       // skip points within fold_margin*omega of a fold
+  // Skip points whose crest x_max is below this fraction of the half peak-to-peak
+  // (a crest grazing 0 makes a relative error of x_max meaningless).
+  double min_crest_fraction = 0.0;
+  // Further filter on the branch point index, applied last (e.g. an independent
+  // stability test that is too costly to run on every point); empty = accept all.
+  std::function<bool(std::size_t)> accept;
+  double omega_factor = 1.0;   // omega written to the table = omega x this (scaled-time models)
 };
 
 struct TimeIntegrationCheck {
