@@ -21,6 +21,16 @@ def natural_frequencies(data_dir):
             for st in ("open", "closed")}
 
 
+def frequency_axis(ax, wn):
+    """Natural-frequency reference lines (open dash-dot grey, closed dotted green) and the zoomed w axis."""
+    for w in wn["open"]:
+        ax.axvline(w, color="0.5", ls="-.", lw=0.8)
+    for w in wn["closed"]:
+        ax.axvline(w, color="C2", ls=":", lw=0.9)
+    ax.set_xlim(*XLIM)
+    ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+
+
 def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
     d = read_csv(data_dir / ("frc_%s.csv" % stem))
     fig_, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0))
@@ -31,18 +41,14 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
     lo, hi = min(d["x_min"]), max(d["x_max"])
     span = hi - lo
     level = -gap
-    if lo - span <= level <= hi + span:
+    visible = lo - span <= level <= hi + span   # is the contact level worth drawing?
+    if visible:
         a1.axhline(level, color="C3", ls=":", lw=1.2, label="contact level d = -g = %g m" % level)
     title = "Fig. %s: relative motion, g = %g m" % (fig, gap)
-    if not lo - span <= level <= hi + span:
+    if not visible:
         title += "\n(contact level d = -g = %g m is far %s: the masses never %s)" % (
             level, "above" if level > hi else "below", "touch" if level > hi else "separate")
-    for w in wn["open"]:
-        a1.axvline(w, color="0.5", ls="-.", lw=0.8)
-    for w in wn["closed"]:
-        a1.axvline(w, color="C2", ls=":", lw=0.9)
-    a1.set_xlim(*XLIM)
-    a1.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+    frequency_axis(a1, wn)
     a1.set_ylabel(r"relative displacement $d = x_1 - x_2$ [m]")
     a1.set_title(title)
     from matplotlib.lines import Line2D
@@ -52,22 +58,13 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
           Line2D([], [], color="C2", ls=":", lw=0.9, label=r"closed $\omega_n$ = %s rad/s" %
                  ", ".join("%.4g" % w for w in wn["closed"]))]
     a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="upper left", framealpha=0.9)
-    if gap < 0 and level > hi + span:
-        a1.set_ylim(lo - 0.1 * span, hi + 0.6 * span)
-    else:
-        top = max(hi, level if lo - span <= level <= hi + span else hi)
-        bottom = min(lo, level if lo - span <= level <= hi + span else lo)
-        a1.set_ylim(bottom - 0.1 * (top - bottom), top + 0.9 * (top - bottom))
+    top, bottom = (max(hi, level), min(lo, level)) if visible else (hi, lo)
+    a1.set_ylim(bottom - 0.1 * (top - bottom), top + 0.9 * (top - bottom))
 
     for name, c in (("x1", "C0"), ("x2", "C1")):
         e = read_csv(data_dir / ("frc_%s_%s.csv" % (stem, name)))
         plot_branch(a2, e, "x_h1", c, "mass %s" % name[1])
-    for w in wn["open"]:
-        a2.axvline(w, color="0.5", ls="-.", lw=0.8)
-    for w in wn["closed"]:
-        a2.axvline(w, color="C2", ls=":", lw=0.9)
-    a2.set_xlim(*XLIM)
-    a2.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+    frequency_axis(a2, wn)
     a2.set_ylabel("first-harmonic amplitude of each mass [m]")
     a2.set_title("each mass (in-phase resonance at sqrt(k/m), contact-free)")
     a2.legend(fontsize=8, loc="upper right")
