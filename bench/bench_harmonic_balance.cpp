@@ -3,9 +3,9 @@
 // Times are reported in the issue notes, never asserted in tests.
 #include <benchmark/benchmark.h>
 
-#include "gearhb/continuation.hpp"
-#include "gearhb/harmonic_balance.hpp"
-#include "gearhb/response.hpp"
+#include "gearhb/hb/continuation.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/response.hpp"
 
 using namespace gearhb;
 

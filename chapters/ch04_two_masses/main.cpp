@@ -44,12 +44,13 @@
 #include <string>
 #include <vector>
 
-#include "gearhb/cli.hpp"
-#include "gearhb/frequency_sweep.hpp"
-#include "gearhb/harmonic_balance.hpp"
-#include "gearhb/linear_dynamics.hpp"
-#include "gearhb/output.hpp"
-#include "gearhb/response.hpp"
+#include "gearhb/app/tables.hpp"
+#include "gearhb/app/cli.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/app/output.hpp"
+#include "gearhb/hb/response.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -252,7 +253,7 @@ int main(int argc, char** argv) {
         TimeIntegrationCheckOptions to;
         to.points = sol.check_points;
         const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, kNormal, to);
-        chk.table.write(out + "check_time_integration.csv");
+        time_integration_table(chk).write(out + "check_time_integration.csv");
         key.add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
         key.add("time_integration_points", double(chk.points), "-");
       }

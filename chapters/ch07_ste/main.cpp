@@ -40,13 +40,13 @@
 #include <string>
 #include <vector>
 
-#include "gearhb/cli.hpp"
-#include "gearhb/gear_geometry.hpp"
-#include "gearhb/hertz.hpp"
-#include "gearhb/iso6336.hpp"
-#include "gearhb/output.hpp"
-#include "gearhb/ste.hpp"
-#include "gearhb/tooth_fe.hpp"
+#include "gearhb/app/cli.hpp"
+#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/iso6336.hpp"
+#include "gearhb/app/output.hpp"
+#include "gearhb/gears/ste.hpp"
+#include "gearhb/gears/tooth_fe.hpp"
 
 using namespace gearhb;
 

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/contact.hpp"
-#include "gearhb/fourier.hpp"
+#include "gearhb/hb/contact.hpp"
+#include "gearhb/core/fourier.hpp"
 
 using namespace gearhb;
 

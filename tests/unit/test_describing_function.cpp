@@ -12,7 +12,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/describing_function.hpp"
+#include "gearhb/hb/describing_function.hpp"
 
 using gearhb::describing_function;
 using gearhb::describing_function_closed_form;

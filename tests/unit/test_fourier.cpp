@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/fourier.hpp"
+#include "gearhb/core/fourier.hpp"
 
 using gearhb::Aft;
 

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/frequency_sweep.hpp"
-#include "gearhb/response.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/response.hpp"
 #include "test_models.hpp"
 
 using namespace gearhb;
@@ -54,7 +54,7 @@ TEST(FrequencySweep, TimeIntegrationCheckPicksStableIntermittentPointsAwayFromFo
   to.points = 6;
   const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, Eigen::VectorXd::Constant(1, 1.0), to);
   EXPECT_EQ(chk.points, 6);
-  EXPECT_EQ(chk.table.rows(), 6u);
+  EXPECT_EQ(chk.rows.size(), 6u);
   // issue #3 criterion: x_max within 0.5 % of GSL time integration.
   EXPECT_LT(chk.worst_rel_diff, 5e-3);
 }

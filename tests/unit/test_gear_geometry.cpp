@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gear_geometry.hpp"
-#include "gearhb/iso6336.hpp"
+#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/iso6336.hpp"
 
 using namespace gearhb;
 

@@ -4,10 +4,10 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gear_pair.hpp"
-#include "gearhb/harmonic_balance.hpp"
-#include "gearhb/linear_dynamics.hpp"
-#include "gearhb/newton.hpp"
+#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/core/newton.hpp"
 
 using namespace gearhb;
 

@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/continuation.hpp"
-#include "gearhb/harmonic_balance.hpp"
-#include "gearhb/linear_dynamics.hpp"
+#include "gearhb/hb/continuation.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
 #include "test_models.hpp"
 
 using namespace gearhb;

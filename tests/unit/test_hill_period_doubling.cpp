@@ -11,8 +11,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/fourier.hpp"
-#include "gearhb/stability.hpp"
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/hb/stability.hpp"
 
 using namespace gearhb;
 

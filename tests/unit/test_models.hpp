@@ -1,6 +1,6 @@
 #pragma once
 // Small models shared by the unit tests.
-#include "gearhb/harmonic_balance.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
 
 namespace test_models {
 

@@ -13,10 +13,10 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/continuation.hpp"
-#include "gearhb/response.hpp"
-#include "gearhb/stability.hpp"
-#include "gearhb/time_integration.hpp"
+#include "gearhb/hb/continuation.hpp"
+#include "gearhb/hb/response.hpp"
+#include "gearhb/hb/stability.hpp"
+#include "gearhb/hb/time_integration.hpp"
 #include "test_models.hpp"
 
 using namespace gearhb;

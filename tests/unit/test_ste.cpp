@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/hertz.hpp"
-#include "gearhb/ste.hpp"
+#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/ste.hpp"
 
 using namespace gearhb;
 

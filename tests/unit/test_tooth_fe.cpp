@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/hertz.hpp"
-#include "gearhb/tooth_fe.hpp"
+#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/tooth_fe.hpp"
 
 using namespace gearhb;
 

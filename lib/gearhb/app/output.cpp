@@ -1,0 +1,70 @@
+#include "gearhb/app/output.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace gearhb {
+
+void write_file_atomic(const std::string& path, const std::string& content) {
+  namespace fs = std::filesystem;
+  const fs::path target(path);
+  if (target.has_parent_path()) fs::create_directories(target.parent_path());
+  const fs::path tmp = target.string() + ".tmp." + std::to_string(::getpid());
+  {
+    std::ofstream f(tmp, std::ios::binary | std::ios::trunc);
+    if (!f) throw std::runtime_error("cannot open " + tmp.string() + " for writing");
+    f << content;
+    f.flush();
+    if (!f) {
+      f.close();
+      fs::remove(tmp);
+      throw std::runtime_error("write failed: " + tmp.string());
+    }
+  }
+  std::error_code ec;
+  fs::rename(tmp, target, ec);
+  if (ec) {
+    fs::remove(tmp);
+    throw std::runtime_error("cannot rename " + tmp.string() + " to " + path + ": " + ec.message());
+  }
+}
+
+Table::Table(std::vector<std::string> columns) : columns_(std::move(columns)) {}
+
+void Table::add_row(std::vector<Cell> row) {
+  if (row.size() != columns_.size())
+    throw std::logic_error("Table::add_row: row has " + std::to_string(row.size()) +
+                           " cells, table has " + std::to_string(columns_.size()) + " columns");
+  rows_.push_back(std::move(row));
+}
+
+std::string Table::to_csv() const {
+  std::string out;
+  for (std::size_t c = 0; c < columns_.size(); ++c) out += (c ? "," : "") + columns_[c];
+  out += "\n";
+  char buf[64];
+  for (const auto& row : rows_) {
+    for (std::size_t c = 0; c < row.size(); ++c) {
+      if (c) out += ",";
+      if (const double* d = std::get_if<double>(&row[c])) {
+        std::snprintf(buf, sizeof buf, "%.10g", *d);
+        out += buf;
+      } else if (const long* l = std::get_if<long>(&row[c])) {
+        out += std::to_string(*l);
+      } else {
+        out += std::get<std::string>(row[c]);
+      }
+    }
+    out += "\n";
+  }
+  return out;
+}
+
+void KeyNumbers::add(const std::string& name, double value, const std::string& unit) {
+  j_[name] = {{"value", value}, {"unit", unit}};
+}
+
+}  // namespace gearhb

@@ -1,0 +1,40 @@
+#include "gearhb/core/linear_dynamics.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace gearhb {
+
+void LinearSystem::check() const {
+  const auto n = M.rows();
+  if (n == 0 || M.cols() != n || C.rows() != n || C.cols() != n || K.rows() != n || K.cols() != n)
+    throw std::invalid_argument("LinearSystem: M, C, K must be square and of equal size");
+  if (!M.isApprox(M.transpose()))
+    throw std::invalid_argument("LinearSystem: M must be symmetric");
+  Eigen::LLT<Eigen::MatrixXd> llt(M);
+  if (llt.info() != Eigen::Success)
+    throw std::invalid_argument("LinearSystem: M must be positive definite");
+}
+
+Eigen::MatrixXd rayleigh_damping(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K, double alpha,
+                                 double beta) {
+  return alpha * M + beta * K;
+}
+
+Eigen::VectorXcd frequency_response(const LinearSystem& sys, const Eigen::VectorXcd& F, double omega) {
+  const std::complex<double> i(0.0, 1.0);
+  Eigen::MatrixXcd D = (sys.K - omega * omega * sys.M).cast<std::complex<double>>() +
+                       i * omega * sys.C.cast<std::complex<double>>();
+  return D.partialPivLu().solve(F);
+}
+
+Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
+  Eigen::GeneralizedSelfAdjointEigenSolver<Eigen::MatrixXd> es(K, M);
+  if (es.info() != Eigen::Success) throw std::runtime_error("modal_analysis: eigensolver failed");
+  Modes m;
+  m.omega = es.eigenvalues().cwiseMax(0.0).cwiseSqrt();
+  m.Phi = es.eigenvectors();
+  return m;
+}
+
+}  // namespace gearhb

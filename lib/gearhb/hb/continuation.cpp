@@ -1,0 +1,260 @@
+#include "gearhb/hb/continuation.hpp"
+
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+namespace gearhb {
+
+std::string Branch::summary() const {
+  std::ostringstream os;
+  os << points.size() << " points, " << folds.size() << " folds, " << rejected_steps
+     << " rejected steps, " << (complete ? "complete" : "INCOMPLETE");
+  for (const auto& f : failures)
+    os << "; failure at omega = " << f.omega << " (residual " << f.residual << ", ds " << f.ds
+       << "): " << f.what;
+  return os.str();
+}
+
+namespace {
+
+// The scaled augmented system for the corrector and the tangent.
+struct Scaled {
+  const ParametricProblem& p;
+  const Scaling& s;
+  int n;
+  Eigen::VectorXd R, dRdw;
+  Eigen::MatrixXd J;
+  Scaled(const ParametricProblem& prob, const Scaling& sc)
+      : p(prob), s(sc), n(prob.size()), R(n), dRdw(n), J(n, n) {}
+  Eigen::VectorXd X(const Eigen::VectorXd& y) const { return s.x.cwiseProduct(y.head(n)); }
+  double omega(const Eigen::VectorXd& y) const { return y[n] * s.omega; }
+  Eigen::VectorXd y(const Eigen::VectorXd& X, double w) const {
+    Eigen::VectorXd out(n + 1);
+    out.head(n) = X.cwiseQuotient(s.x);
+    out[n] = w / s.omega;
+    return out;
+  }
+  // Fills the first n rows of A = [dR/dy] (scaled) and returns max|R|/r.
+  double eval(const Eigen::VectorXd& y, Eigen::MatrixXd& A) {
+    p.evaluate(X(y), omega(y), R, &J, &dRdw);
+    A.topLeftCorner(n, n) = (J * s.x.asDiagonal()) / s.residual;
+    A.block(0, n, n, 1) = dRdw * (s.omega / s.residual);
+    return R.cwiseAbs().maxCoeff() / s.residual;
+  }
+};
+
+// Unit tangent at y, oriented along `previous`: [A; previous'] t = [0; 1].
+bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previous, Eigen::VectorXd& t) {
+  const int n = S.n;
+  Eigen::MatrixXd A(n + 1, n + 1);
+  S.eval(y, A);
+  A.row(n) = previous.transpose();
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
+  rhs[n] = 1.0;
+  t = A.partialPivLu().solve(rhs);
+  if (!t.allFinite() || t.norm() == 0.0) return false;
+  t.normalize();
+  if (t.dot(previous) < 0) t = -t;
+  return true;
+}
+
+// Corrector: Newton on { R(y) = 0 ; normal' (y - y_p) = 0 }, from y = y_p (in place).
+// Returns true on convergence; reports iterations and final scaled residual.
+bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int max_iterations,
+             double tolerance, int& iters, double& res) {
+  const int n = S.n;
+  const Eigen::VectorXd yp = y;
+  Eigen::MatrixXd A(n + 1, n + 1);
+  Eigen::VectorXd F(n + 1);
+  double last_step = 0.0;
+  for (iters = 0; iters <= max_iterations; ++iters) {
+    res = S.eval(y, A);
+    if (!std::isfinite(res)) return false;
+    if (iters > 0 && res < tolerance && last_step < tolerance) return true;
+    if (iters == max_iterations) return false;
+    A.row(n) = normal.transpose();
+    F.head(n) = -S.R / S.s.residual;
+    F[n] = -normal.dot(y - yp);
+    const Eigen::VectorXd dy = A.partialPivLu().solve(F);
+    if (!dy.allFinite()) return false;
+    last_step = dy.cwiseAbs().maxCoeff();
+    y += dy;
+  }
+  return false;
+}
+
+// The fold between two converged points ya, yb whose tangents ta, tb have omega
+// components of opposite sign: bisection on the chord fraction, each trial point
+// corrected back onto the branch in the hyperplane normal to the chord, until the
+// omega component of the tangent there changes sign within 1e-8 of the chord.
+// Omega is stationary at a fold, so this gives the fold frequency to round-off.
+// If a corrector fails (it should not on a short chord) the linear interpolation
+// of the omega-tangent is kept.
+Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::VectorXd& ta,
+                            const Eigen::VectorXd& yb, const Eigen::VectorXd& tb, double tolerance) {
+  const int n = S.n;
+  const double a_lin = ta[n] / (ta[n] - tb[n]);
+  Eigen::VectorXd best = (1.0 - a_lin) * ya + a_lin * yb;
+  const Eigen::VectorXd normal = (yb - ya).normalized();
+  const bool sign_a = ta[n] > 0;
+  double lo = 0.0, hi = 1.0;
+  while (hi - lo > 1e-8) {
+    const double mid = 0.5 * (lo + hi);
+    Eigen::VectorXd y = (1.0 - mid) * ya + mid * yb, tm;
+    int iters = 0;
+    double res = 0.0;
+    if (!correct(S, y, normal, 30, tolerance, iters, res) || !tangent(S, y, ta, tm)) return best;
+    best = y;
+    ((tm[n] > 0) == sign_a ? lo : hi) = mid;
+  }
+  return best;
+}
+
+}  // namespace
+
+Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
+                               const Scaling& s, const ContinuationOptions& opt) {
+  Branch b;
+  const int n = p.size();
+  const double dir = opt.omega_end >= opt.omega_start ? 1.0 : -1.0;
+  Scaled S(p, s);
+
+  // 1. First point: Newton at omega_start.
+  Eigen::VectorXd X = X0;
+  NewtonOptions nopt{opt.tolerance, 50};
+  NewtonReport nr = newton_solve(p, X, opt.omega_start, s, nopt);
+  if (!nr.converged) {
+    b.failures.push_back({opt.omega_start, nr.residual, 0.0, "first point: " + nr.message});
+    return b;
+  }
+  Eigen::VectorXd y = S.y(X, opt.omega_start);
+  Eigen::VectorXd t0 = Eigen::VectorXd::Zero(n + 1);
+  t0[n] = dir;
+  Eigen::VectorXd t;
+  if (!tangent(S, y, t0, t)) {
+    b.failures.push_back({opt.omega_start, nr.residual, 0.0, "singular Jacobian at the first point"});
+    return b;
+  }
+  b.points.push_back({X, opt.omega_start, nr.iterations, nr.residual, 0.0, t[n]});
+
+  const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
+  double ds = opt.ds_initial;
+  for (int step = 0;; ++step) {
+    if (step >= opt.max_steps) {
+      b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
+                                                     std::to_string(opt.max_steps) + ")"});
+      return b;
+    }
+    // 2. Predictor and corrector, halving ds until the corrector converges.
+    bool accepted = false;
+    Eigen::VectorXd yn, tn;
+    int iters = 0;
+    double res = 0.0;
+    std::string why;
+    while (!accepted) {
+      const Eigen::VectorXd yp = y + ds * t;
+      yn = yp;
+      bool converged = correct(S, yn, t, opt.corrector_max_iterations, opt.tolerance, iters, res);
+      why = converged ? "" : "corrector did not converge";
+      if (converged) {
+        if (!tangent(S, yn, t, tn)) {
+          converged = false;
+          why = "singular augmented Jacobian";
+        } else if (tn.dot(t) < cos_turn && ds > 4.0 * opt.ds_min) {
+          converged = false;   // the branch turns too fast for this step: refine
+          why = "tangent turned too sharply";
+        }
+      }
+      if (converged) {
+        accepted = true;
+      } else {
+        ++b.rejected_steps;
+        ds *= 0.5;
+        if (ds < opt.ds_min) {
+          b.failures.push_back({S.omega(y), res, ds, why + " with ds below ds_min"});
+          return b;
+        }
+      }
+    }
+    // 3. Accept; detect a fold; adapt the step.
+    const double w_new = S.omega(yn);
+    BranchPoint pt{S.X(yn), w_new, iters, res, ds, tn[n]};
+    if ((t[n] > 0) != (tn[n] > 0) && t[n] != 0.0) {
+      const Eigen::VectorXd yf = locate_fold(S, y, t, yn, tn, opt.tolerance);
+      b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
+    }
+    // Reached the end of the range: finish with a Newton solve exactly at omega_end.
+    if ((w_new - opt.omega_end) * dir >= 0.0) {
+      const double w0 = S.omega(y);
+      const double a = (opt.omega_end - w0) / (w_new - w0);
+      Eigen::VectorXd Xe = (1.0 - a) * S.X(y) + a * pt.X;
+      NewtonReport er = newton_solve(p, Xe, opt.omega_end, s, nopt);
+      if (er.converged) b.points.push_back({Xe, opt.omega_end, er.iterations, er.residual, ds, tn[n]});
+      else b.points.push_back(pt);
+      b.complete = true;
+      return b;
+    }
+    if ((w_new - opt.omega_start) * dir < 0.0 && b.points.size() > 2) {
+      b.points.push_back(pt);
+      b.failures.push_back({w_new, res, ds, "branch turned back out of the range at its start"});
+      return b;
+    }
+    b.points.push_back(pt);
+    y = yn;
+    t = tn;
+    if (iters <= 3) ds = std::min(ds * 1.5, opt.ds_max);
+    else if (iters >= 7) ds = std::max(ds * 0.7, opt.ds_min);
+  }
+}
+
+Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
+                            const Scaling& s, const ContinuationOptions& opt) {
+  Branch b;
+  Eigen::VectorXd X = X0;
+  NewtonOptions nopt{opt.tolerance, opt.corrector_max_iterations};
+  const int steps = std::max(1, opt.natural_points);
+  Eigen::VectorXd last_good = X0;
+  for (int i = 0; i <= steps; ++i) {
+    const double w = opt.omega_start + (opt.omega_end - opt.omega_start) * i / steps;
+    X = last_good;
+    NewtonReport r = newton_solve(p, X, w, s, nopt);
+    if (!r.converged) {
+      // Stop here: the point of this method is to show where it gives up.
+      b.failures.push_back({w, r.residual, 0.0, "Newton: " + r.message});
+      break;
+    }
+    b.points.push_back({X, w, r.iterations, r.residual, 0.0, 0.0});
+    last_good = X;
+  }
+  b.complete = b.failures.empty();
+  return b;
+}
+
+double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
+                         const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
+                         double tol) {
+  const bool sa = state(a.X);
+  if (sa == state(b.X)) throw std::invalid_argument("locate_transition: no change of state between the points");
+  Scaled S(p, s);
+  const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
+  const Eigen::VectorXd normal = (yb - ya).normalized();
+  // Bisection on the fraction f of the chord a -> b; each trial point is pulled back
+  // onto the branch in the hyperplane normal to the chord, so a fold between a and
+  // b does no harm.
+  double lo = 0.0, hi = 1.0, w = a.omega;
+  while ((hi - lo) * (yb - ya).norm() * s.omega > tol) {
+    const double mid = 0.5 * (lo + hi);
+    Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
+    int iters = 0;
+    double res = 0.0;
+    if (!correct(S, y, normal, 30, 1e-12, iters, res))
+      throw std::runtime_error("locate_transition: corrector failed near omega = " +
+                               std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
+    w = S.omega(y);
+    (state(S.X(y)) == sa ? lo : hi) = mid;
+  }
+  return w;
+}
+
+}  // namespace gearhb

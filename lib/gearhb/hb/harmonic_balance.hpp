@@ -1,0 +1,100 @@
+#pragma once
+// Harmonic balance with unilateral contacts (thesis ch. 2; SPEC §3).
+//
+// Equation of motion, n DOFs, forcing at frequency omega (theta = omega t):
+//
+//   M x'' + C x' + K x + sum_i w_i max(kc_i (g_i(theta) + w_i' x), 0)
+//        = f0 + fc cos(theta) + fs sin(theta)
+//
+// Unknowns: the real Fourier coefficients of x, static term kept (the thesis
+// drops it in ch. 3-4, which is wrong as soon as the contact force has a mean),
+// stored harmonic-major:  X = [X_0 (n), X_c1 (n), X_s1 (n), ..., X_cH (n), X_sH (n)].
+//
+// Residual (Galerkin projection on cos(k theta), sin(k theta), k = 0..H):
+//   k = 0:  K X_0                              + Fnl_0  - f0
+//   k >= 1: (K - (k w)^2 M) X_ck + k w C X_sk  + Fnl_ck - fc [k = 1]
+//           (K - (k w)^2 M) X_sk - k w C X_ck  + Fnl_sk - fs [k = 1]
+// (thesis §2.2: D(n) = -(n w)^2 M + i n w C + K; the thesis prints -(n w^2) M.)
+//
+// The contact forces Fnl come from AFT (thesis §2.3): for each contact, the
+// coefficients of u = g + w'x go to N time samples (FFTW), then either
+//  - sampled (the classic AFT): the law is applied sample by sample and the
+//    samples go back to coefficients; Jacobian dFnl/dX = sum_i (w_i w_i') (x) G(s_i),
+//    G the AFT product matrix of the sampled stiffness s_i = kc_i [u_i > 0];
+//  - exact (default): the samples only bracket the contact crossings, which are
+//    refined on the trigonometric polynomial, and the projection of the
+//    piecewise-linear law is integrated in closed form (contact.hpp). Same
+//    Jacobian structure with G the product matrix of the contact indicator.
+// Both Jacobians are exact for their residual. Why exact is the default: the
+// sampled residual is piecewise linear in X with a kink per sample crossing,
+// which near folds creates spurious micro-folds (ch. 3 sample study).
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/contact.hpp"
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/core/newton.hpp"
+
+namespace gearhb {
+
+// External forcing f0 + fc cos(theta) + fs sin(theta), each an n-vector.
+enum class ContactQuadrature { exact, sampled };
+
+struct Excitation {
+  Eigen::VectorXd f0, fc, fs;
+};
+
+class HarmonicBalance : public ParametricProblem {
+ public:
+  // N = 0: Aft::default_samples(H) = 4 (2H+1) time samples per period.
+  HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact> contacts, Excitation f, int H,
+                  int N = 0, ContactQuadrature quadrature = ContactQuadrature::exact);
+  ContactQuadrature quadrature() const { return quad_; }
+
+  int size() const override { return (2 * H_ + 1) * n_; }
+  int dofs() const { return n_; }
+  int harmonics() const { return H_; }
+  int samples() const { return aft_.samples(); }
+  const LinearSystem& system() const { return sys_; }
+  const std::vector<UnilateralContact>& contacts() const { return contacts_; }
+  const Excitation& excitation() const { return f_; }
+
+  void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                Eigen::VectorXd* dRdw) const override;
+
+  // Index of coefficient `basis` (0 static, 2k-1 cos k, 2k sin k) of DOF `dof` in X.
+  int index(int basis, int dof) const { return basis * n_ + dof; }
+  // Coefficients (2H+1) of the coordinate q' x (e.g. q = e_1, or e_1 - e_2).
+  Eigen::VectorXd project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const;
+
+  // Solution with every contact removed (open contact): static + first harmonic,
+  // exact for the linear system. A natural first guess for Newton.
+  Eigen::VectorXd open_contact_solution(double omega) const;
+  // The same with every contact permanently closed (springs kc_i w_i w_i' and
+  // their constant preloads kc_i g_i added): exact while the contacts stay shut.
+  Eigen::VectorXd closed_contact_solution(double omega) const;
+
+  // Characteristic sizes, from the problem's own data over [omega_min, omega_max]:
+  // displacement = the largest of the open- and closed-contact linear vibration
+  // amplitudes (first harmonic, scanned over the range) and of the gaps'
+  // oscillating parts (the static offset and constant gaps only if nothing
+  // oscillates);
+  // residual = (max diagonal of K + sum kc) x that.
+  Scaling scaling(double omega_min, double omega_max) const;
+
+ private:
+  LinearSystem sys_;
+  std::vector<UnilateralContact> contacts_;
+  Excitation f_;
+  int n_, H_;
+  Aft aft_;
+  ContactQuadrature quad_;
+  // Work buffers (evaluate is const but not re-entrant: one object per thread).
+  mutable Eigen::VectorXd uc_, us_, fs_, ss_, fcoef_, mc_, ms_;
+  mutable Eigen::MatrixXd G_;
+  Eigen::VectorXd linear_solution(double omega, bool closed) const;
+};
+
+}  // namespace gearhb

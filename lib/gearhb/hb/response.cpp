@@ -1,0 +1,54 @@
+#include "gearhb/hb/response.hpp"
+
+#include <cmath>
+#include <tuple>
+
+#include "gearhb/hb/stability.hpp"
+
+namespace gearhb {
+
+ResponseEvaluator::ResponseEvaluator(const HarmonicBalance& hb, Eigen::VectorXd q, int fine)
+    : hb_(hb), q_(std::move(q)), fine_(hb.harmonics(), fine) {}
+
+Eigen::VectorXd ResponseEvaluator::history(const Eigen::VectorXd& X) const {
+  return fine_.to_time(hb_.project(X, q_));
+}
+
+ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
+  const int H = hb_.harmonics();
+  const Eigen::VectorXd c = hb_.project(X, q_);
+  const Eigen::VectorXd x = fine_.to_time(c);
+  ResponseSummary r;
+  std::tie(r.x_min, r.x_max) = trig_extremes(c, x);
+  r.x_mean = c[0];
+  double ss = 0.0;
+  for (int k = 1; k <= H; ++k) ss += 0.5 * (c[2 * k - 1] * c[2 * k - 1] + c[2 * k] * c[2 * k]);
+  r.x_rms_ac = std::sqrt(ss);
+  r.x_h1 = std::hypot(c[1], c[2]);
+  // Contact state: penetration u = g + w'x of every contact on the fine grid.
+  bool any_open = false, any_closed = false;
+  for (const auto& ct : hb_.contacts()) {
+    Eigen::VectorXd uc = hb_.project(X, ct.w) + ct.gap_harmonics;
+    uc[0] += ct.gap;
+    const ContactState s = contact_state(uc, fine_.to_time(uc));
+    any_closed = any_closed || s != ContactState::open;
+    any_open = any_open || s != ContactState::full;
+  }
+  r.contact = any_closed ? (any_open ? ContactState::intermittent : ContactState::full)
+                         : ContactState::open;
+  return r;
+}
+
+std::vector<bool> branch_stability(const HarmonicBalance& hb, const Branch& b) {
+  std::vector<bool> st;
+  st.reserve(b.points.size());
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  for (const auto& p : b.points) {
+    hb.evaluate(p.X, p.omega, R, &J, nullptr);
+    st.push_back(hill_stability(J, hb.system().M, hb.system().C, p.omega, hb.harmonics()).stable);
+  }
+  return st;
+}
+
+}  // namespace gearhb

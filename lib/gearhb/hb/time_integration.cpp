@@ -1,0 +1,159 @@
+#include "gearhb/hb/time_integration.hpp"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+namespace gearhb {
+
+namespace {
+
+double gap_at(const UnilateralContact& c, double theta) {
+  double g = c.gap + c.gap_harmonics[0];
+  const int H = int(c.gap_harmonics.size() - 1) / 2;
+  for (int k = 1; k <= H; ++k)
+    g += c.gap_harmonics[2 * k - 1] * std::cos(k * theta) + c.gap_harmonics[2 * k] * std::sin(k * theta);
+  return g;
+}
+
+struct OdeContext {
+  const TimeIntegrator* ti;
+  const HarmonicBalance* hb;
+  double omega;
+  int n;
+  bool variational;
+  Eigen::MatrixXd Minv;
+};
+
+// State y = [x (n), v (n)] and, with variational equations, Phi (2n x 2n, column-major).
+int rhs(double t, const double y[], double dydt[], void* params) {
+  auto* c = static_cast<OdeContext*>(params);
+  const int n = c->n;
+  Eigen::Map<const Eigen::VectorXd> x(y, n), v(y + n, n);
+  const Eigen::VectorXd a = c->ti->acceleration(t, x, v, c->omega);
+  for (int i = 0; i < n; ++i) {
+    dydt[i] = y[n + i];
+    dydt[n + i] = a[i];
+  }
+  if (c->variational) {
+    // d/dt Phi = A(t) Phi,  A = [0 I; -Minv (K + sum s_i w w') , -Minv C]
+    const auto& sys = c->hb->system();
+    Eigen::MatrixXd Kt = sys.K;
+    const double theta = c->omega * t;
+    for (const auto& ct : c->hb->contacts())
+      Kt += contact_stiffness(ct.kc, gap_at(ct, theta) + ct.w.dot(x)) * ct.w * ct.w.transpose();
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+    A.topRightCorner(n, n).setIdentity();
+    A.bottomLeftCorner(n, n) = -c->Minv * Kt;
+    A.bottomRightCorner(n, n) = -c->Minv * sys.C;
+    Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
+    Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
+    dPhi = A * Phi;
+  }
+  return GSL_SUCCESS;
+}
+
+struct Driver {
+  gsl_odeiv2_system sys;
+  gsl_odeiv2_driver* d;
+  Driver(OdeContext& ctx, std::size_t dim, double h0, double abs_tol, double rel_tol) {
+    sys = {rhs, nullptr, dim, &ctx};
+    d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, h0, abs_tol, rel_tol);
+  }
+  ~Driver() { gsl_odeiv2_driver_free(d); }
+  void advance(double& t, double t1, double* y) {
+    const int status = gsl_odeiv2_driver_apply(d, &t, t1, y);
+    if (status != GSL_SUCCESS)
+      throw std::runtime_error(std::string("GSL ODE driver failed at t = ") + std::to_string(t) +
+                               ": " + gsl_strerror(status));
+  }
+};
+
+}  // namespace
+
+Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
+                                             const Eigen::VectorXd& v, double omega) const {
+  const auto& sys = hb_.system();
+  const auto& f = hb_.excitation();
+  const double theta = omega * t;
+  Eigen::VectorXd rhs = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta) - sys.C * v - sys.K * x;
+  for (const auto& ct : hb_.contacts())
+    rhs -= contact_force(ct.kc, gap_at(ct, theta) + ct.w.dot(x)) * ct.w;
+  return Minv_ * rhs;
+}
+
+SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                         double omega, const TimeIntegrationOptions& opt) const {
+  const int n = hb_.dofs();
+  gsl_set_error_handler_off();
+  OdeContext ctx{this, &hb_, omega, n, false, Minv_};
+  const double T = 2.0 * M_PI / omega;
+  Driver drv(ctx, 2 * n, T / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  std::vector<double> y(2 * n);
+  for (int i = 0; i < n; ++i) {
+    y[i] = x0[i];
+    y[n + i] = v0[i];
+  }
+  SteadyState ss;
+  double t = 0.0;
+  const double vscale = opt.x_scale * omega;
+  for (int p = 1; p <= opt.max_periods; ++p) {
+    std::vector<double> start = y;
+    drv.advance(t, p * T, y.data());
+    double mis = 0.0;
+    for (int i = 0; i < n; ++i) {
+      mis = std::max(mis, std::fabs(y[i] - start[i]) / opt.x_scale);
+      mis = std::max(mis, std::fabs(y[n + i] - start[n + i]) / vscale);
+    }
+    ss.periods = p;
+    ss.mismatch = mis;
+    if (mis < opt.periodicity_tol) {
+      ss.converged = true;
+      break;
+    }
+  }
+  // Sample the last period.
+  ss.x0 = Eigen::Map<Eigen::VectorXd>(y.data(), n);
+  ss.v0 = Eigen::Map<Eigen::VectorXd>(y.data() + n, n);
+  ss.x.resize(opt.samples_per_period, n);
+  const double t0 = t;
+  for (int j = 0; j < opt.samples_per_period; ++j) {
+    drv.advance(t, t0 + T * j / opt.samples_per_period, y.data());
+    for (int i = 0; i < n; ++i) ss.x(j, i) = y[i];
+  }
+  return ss;
+}
+
+Eigen::MatrixXd TimeIntegrator::monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                          double omega, const TimeIntegrationOptions& opt) const {
+  const int n = hb_.dofs(), d = 2 * n;
+  gsl_set_error_handler_off();
+  OdeContext ctx{this, &hb_, omega, n, true, Minv_};
+  const double T = 2.0 * M_PI / omega;
+  Driver drv(ctx, d + d * d, T / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  std::vector<double> y(d + d * d, 0.0);
+  for (int i = 0; i < n; ++i) {
+    y[i] = x0[i];
+    y[n + i] = v0[i];
+  }
+  for (int i = 0; i < d; ++i) y[d + i * d + i] = 1.0;
+  double t = 0.0;
+  drv.advance(t, T, y.data());
+  return Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
+}
+
+void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                      Eigen::VectorXd& x0, Eigen::VectorXd& v0) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  x0 = X.segment(hb.index(0, 0), n);
+  v0 = Eigen::VectorXd::Zero(n);
+  for (int k = 1; k <= H; ++k) {
+    x0 += X.segment(hb.index(2 * k - 1, 0), n);                  // cos(0) = 1
+    v0 += k * omega * X.segment(hb.index(2 * k, 0), n);           // d/dt sin = k w cos
+  }
+}
+
+}  // namespace gearhb

@@ -1,0 +1,64 @@
+#pragma once
+// Direct time integration of the same equation the harmonic balance solves,
+//
+//   M x'' + C x' + K x + sum_i w_i max(kc_i (g_i(w t) + w_i' x), 0) = f0 + fc cos wt + fs sin wt,
+//
+// with GSL's adaptive embedded Runge-Kutta Prince-Dormand 8(9) driver
+// (gsl_odeiv2_step_rk8pd). It is the independent check of harmonic balance:
+// integrate from a given state, period after period, until the state at the
+// start of a period repeats (a periodic steady state), then sample that last
+// period. Also computes the monodromy matrix (state-transition matrix over one
+// period, from the variational equations) whose eigenvalues, the Floquet
+// multipliers, check Hill's method independently.
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/harmonic_balance.hpp"
+
+namespace gearhb {
+
+struct TimeIntegrationOptions {
+  double rel_tol = 1e-10, abs_tol = 1e-12;  // GSL driver tolerances (abs_tol scaled by x_scale)
+  double x_scale = 1.0;                     // typical displacement, for abs_tol
+  int max_periods = 20000;
+  double periodicity_tol = 1e-9;            // |state(T) - state(0)| / x_scale, per period
+  int samples_per_period = 512;
+};
+
+struct SteadyState {
+  bool converged = false;
+  int periods = 0;                 // periods integrated
+  double mismatch = 0.0;           // last |state(T)-state(0)| / x_scale
+  Eigen::VectorXd x0, v0;          // state at the start of the last period
+  Eigen::MatrixXd x;               // samples (samples_per_period x n) over the last period
+};
+
+class TimeIntegrator {
+ public:
+  // Uses the model (M, C, K, contacts, forcing) of `hb`; H and N of hb are irrelevant here.
+  explicit TimeIntegrator(const HarmonicBalance& hb)
+      : hb_(hb), Minv_(hb.system().M.inverse()) {}
+
+  // Integrate from (x0, v0) at phase 0 until periodic, then sample the last period.
+  SteadyState steady_state(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                           const TimeIntegrationOptions& opt) const;
+
+  // Monodromy matrix (2n x 2n) about the orbit through (x0, v0) at phase 0.
+  Eigen::MatrixXd monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                            const TimeIntegrationOptions& opt) const;
+
+  // Right-hand side: acceleration for state (x, v) at time t.
+  Eigen::VectorXd acceleration(double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
+                               double omega) const;
+
+ private:
+  const HarmonicBalance& hb_;
+  Eigen::MatrixXd Minv_;
+};
+
+// Initial state (x, x') at phase 0 of a harmonic-balance solution X.
+void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                      Eigen::VectorXd& x0, Eigen::VectorXd& v0);
+
+}  // namespace gearhb
