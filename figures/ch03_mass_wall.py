@@ -3,36 +3,55 @@ import math
 
 import matplotlib.pyplot as plt
 
-from style import legend_styles, mark_contact, plot_branch, read_csv, save
+from style import case_rows, legend_styles, mark_contact, plot_branch, read_csv, read_params, save
 
 
-def frc_figure(data_dir, fig_dir, name, title, cases):
-    """cases: list of (label, legend text). Plots x_max and x_min vs omega, gap levels."""
-    fig, ax = plt.subplots(figsize=(6.4, 4.2))
+def frc_figure(data_dir, fig_dir, name, title, cases, vary):
+    """cases: labels of the case table; vary: the column ("gap" or "F") that tells them
+    apart in the legend. Plots x_max and x_min vs omega and the gap levels."""
+    rows = case_rows(data_dir)
+    unit = {"gap": "m", "F": "N"}[vary]
+    sym = {"gap": "g", "F": "F"}[vary]
+    fig, ax = plt.subplots(figsize=(6.4, 5.0))
     drawn = set()   # gap levels already drawn (Figs. 11-12 share one gap)
-    for n, (label, text) in enumerate(cases):
+    for n, label in enumerate(cases):
         d = read_csv(data_dir / ("frc_%s.csv" % label))
         c = "C%d" % n
+        text = "%s = %g %s" % (sym, rows[label][vary], unit)
         plot_branch(ax, d, "x_max", c, text + ": $x_{max}$")
         plot_branch(ax, d, "x_min", c)
         mark_contact(ax, d, "x_max", c)
-        g = float(label.split("_")[0][1:])
+        g = rows[label]["gap"]
         if g in drawn:
             continue
         drawn.add(g)
         ax.axhline(-g, color=c, ls=":", lw=1)
-        ax.annotate("in contact where x > -g = %g m" % -g, (1.25, -g), color=c, fontsize=7,
+        ax.annotate("in contact where x > -g = %g m" % -g, (0.805, -g), color=c, fontsize=7,
                     xytext=(3, 3), textcoords="offset points")
     ax.set_xlim(0.8, 1.6)   # the data span 0.5-2 rad/s; nothing happens outside this window
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 0.5-2)")
     ax.set_ylabel(r"displacement $x_{max}$ (upper), $x_{min}$ (lower) [m]")
-    ax.set_title(title)
+    p = read_params(data_dir)
+    ax.set_title("%s (H = %d, m = %g kg, k = %g N/m, kc = %g N/m)" % (title, p["H"], p["m"], p["k"], p["kc"]),
+                 fontsize=9)
     h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + legend_styles(ax), loc="best", ncol=2, framealpha=0.9)
+    ax.legend(handles=h + legend_styles(ax), loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=3,
+              fontsize=7, frameon=False)
     return save(fig, fig_dir / name)
 
 
-def time_figures(data_dir, fig_dir, label, gap, first_fig, names):
+def pair_title(data_dir, fig, cases, vary):
+    """Title from the case table: what the two cases share and what they vary."""
+    rows = case_rows(data_dir)
+    r0, r1 = rows[cases[0]], rows[cases[1]]
+    if vary == "gap":
+        return "Fig. %s: g = %g and %g m (F = %g N)" % (fig, r0["gap"], r1["gap"], r0["F"])
+    return "Fig. %s: g = %g m, F = %g and %g N" % (fig, r0["gap"], r0["F"], r1["F"])
+
+
+def time_figures(data_dir, fig_dir, label, first_fig, names):
+    row = case_rows(data_dir)[label]
+    gap, F0 = row["gap"], row["F0"]
     d = read_csv(data_dir / ("frc_%s.csv" % label))
     marks = read_csv(data_dir / "marks.csv")
     out = []
@@ -48,7 +67,7 @@ def time_figures(data_dir, fig_dir, label, gap, first_fig, names):
         a1.set_xlim(0.8, 1.6)
         a1.set_xlabel(r"$\omega$ [rad/s] (zoom; data 0.5-2)")
         a1.set_ylabel(r"$x_{max}$, $x_{min}$ [m]")
-        a1.set_title("frequency response (g = %g m, F0 = 1 N)" % gap)
+        a1.set_title("frequency response (g = %g m, F0 = %g N)" % (gap, F0))
         h, _ = a1.get_legend_handles_labels()
         a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="lower right", framealpha=0.9)
         t = read_csv(data_dir / ("time_%s_%s.csv" % (label, mark)))
@@ -64,14 +83,16 @@ def time_figures(data_dir, fig_dir, label, gap, first_fig, names):
 
 def draw(data_dir, fig_dir):
     out = []
+    p = read_params(data_dir)
     # Fig. 7: linear FRFs
     d = read_csv(data_dir / "fig07_linear.csv")
     fig, ax = plt.subplots(figsize=(6.4, 4.0))
-    ax.semilogy(d["omega"], d["x_open"], label="open contact (k), resonance 1 rad/s")
-    ax.semilogy(d["omega"], d["x_full"], label=r"full contact (k + k$_c$), resonance $\sqrt{2}$ rad/s")
+    ax.semilogy(d["omega"], d["x_open"], label="open contact (k), resonance %.4g rad/s" % math.sqrt(p["k"] / p["m"]))
+    ax.semilogy(d["omega"], d["x_full"], label=r"full contact (k + k$_c$), resonance %.4g rad/s"
+                % math.sqrt((p["k"] + p["kc"]) / p["m"]))
     ax.set_xlabel(r"$\omega$ [rad/s]")
     ax.set_ylabel("amplitude |X| [m]")
-    ax.set_title("Fig. 7: linear response, F = 0.01 N, c = 0.01 N s/m")
+    ax.set_title("Fig. 7: linear response, F = %g N, c = %g N s/m" % (case_rows(data_dir)["g-1.2_F0.01"]["F"], p["c"]))
     ax.legend()
     out.append(save(fig, fig_dir / "fig07_linear_open_full.png"))
     # Fig. 8: contact force
@@ -83,20 +104,18 @@ def draw(data_dir, fig_dir):
     ax.plot(th, d["F_open"], label=r"open: $N_0$ = -1.5 N (always 0)")
     ax.set_xlabel(r"phase $\vartheta$ [deg]")
     ax.set_ylabel(r"$F_c = \max(N_0 + k_c x_0 \cos\vartheta, 0)$ [N]")
-    ax.set_title(r"Fig. 8: contact force, $k_c$ = 1 N/m, $x_0$ = 1 m")
+    ax.set_title(r"Fig. 8: contact force, $k_c$ = %g N/m, $x_0$ = 1 m" % p["kc"])
     ax.legend()
     out.append(save(fig, fig_dir / "fig08_contact_force.png"))
-    out.append(frc_figure(data_dir, fig_dir, "fig09_masswall_gap.png", "Fig. 9: gap g = -1.2 and -0.6 m (F = 0.01 N)",
-                          [("g-1.2_F0.01", "g = -1.2 m"), ("g-0.6_F0.01", "g = -0.6 m")]))
-    out.append(frc_figure(data_dir, fig_dir, "fig10_masswall_preload.png", "Fig. 10: preload g = 1 and 0.4 m (F = 0.01 N)",
-                          [("g1_F0.01", "g = 1 m"), ("g0.4_F0.01", "g = 0.4 m")]))
-    out.append(frc_figure(data_dir, fig_dir, "fig11_masswall_force_g-0.6.png", "Fig. 11: g = -0.6 m, F = 0.01 and 0.001 N",
-                          [("g-0.6_F0.01", "F = 0.01 N"), ("g-0.6_F0.001", "F = 0.001 N")]))
-    out.append(frc_figure(data_dir, fig_dir, "fig12_masswall_force_g-1.2.png", "Fig. 12: g = -1.2 m, F = 0.01 and 0.03 N",
-                          [("g-1.2_F0.01", "F = 0.01 N"), ("g-1.2_F0.03", "F = 0.03 N")]))
-    out += time_figures(data_dir, fig_dir, "g-1.5_F0.01_F01", -1.5, 13,
+    figs = [("fig09_masswall_gap.png", "9", ["g-1.2_F0.01", "g-0.6_F0.01"], "gap"),
+            ("fig10_masswall_preload.png", "10", ["g1_F0.01", "g0.4_F0.01"], "gap"),
+            ("fig11_masswall_force_g-0.6.png", "11", ["g-0.6_F0.01", "g-0.6_F0.001"], "F"),
+            ("fig12_masswall_force_g-1.2.png", "12", ["g-1.2_F0.01", "g-1.2_F0.03"], "F")]
+    for name, num, cases, vary in figs:
+        out.append(frc_figure(data_dir, fig_dir, name, pair_title(data_dir, num, cases, vary), cases, vary))
+    out += time_figures(data_dir, fig_dir, "g-1.5_F0.01_F01", 13,
                         ["static_gap_before_contact", "static_gap_in_contact", "static_gap_after_contact"])
-    out += time_figures(data_dir, fig_dir, "g-0.5_F0.01_F01", -0.5, 16,
+    out += time_figures(data_dir, fig_dir, "g-0.5_F0.01_F01", 16,
                         ["static_contact_before_separation", "static_contact_separating", "static_contact_after"])
     # Supplementary: the AFT sample study
     d = read_csv(data_dir / "sample_study.csv")
@@ -107,7 +126,8 @@ def draw(data_dir, fig_dir):
     ax.axhline(d["folds"][ex[0]], color="C2", ls="--", label="exact projection of the contact law (any N)")
     ax.set_xlabel("time samples per period N")
     ax.set_ylabel("folds found on the g = -0.6 m curve")
-    ax.set_title("Supplement: spurious folds of sampled AFT vs N (H = 10); true count 2")
+    ax.set_title("Supplement: spurious folds of sampled AFT vs N (H = %d); exact projection: %d"
+                 % (d["H"][ex[0]], d["folds"][ex[0]]))
     ax.legend()
     out.append(save(fig, fig_dir / "figS1_ch03_aft_samples.png"))
     return out

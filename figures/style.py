@@ -16,17 +16,30 @@ plt.rcParams.update({"figure.dpi": 110, "savefig.dpi": 130, "axes.grid": True,
 
 
 def read_csv(path):
-    """CSV -> dict of columns (floats where possible)."""
+    """CSV -> dict of columns (floats where possible; an empty field, "none", reads as NaN)."""
     with open(path) as f:
         rows = list(csv.DictReader(f))
     cols = {}
     for k in rows[0].keys():
         vals = [r[k] for r in rows]
         try:
-            cols[k] = [float(v) for v in vals]
+            cols[k] = [float(v) if v != "" else float("nan") for v in vals]
         except ValueError:
             cols[k] = vals
     return cols
+
+
+def read_params(data_dir):
+    """The run's parameters (params.json) as {name: value}."""
+    import json
+    with open(data_dir / "params.json") as f:
+        return {k: v["value"] for k, v in json.load(f).items()}
+
+
+def case_rows(data_dir):
+    """The run's case table (cases.csv) as {label: {column: value}}."""
+    d = read_csv(data_dir / "cases.csv")
+    return {lb: {k: d[k][i] for k in d} for i, lb in enumerate(d["label"])}
 
 
 def runs(flags):

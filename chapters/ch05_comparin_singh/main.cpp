@@ -341,8 +341,8 @@ int main(int argc, char** argv) {
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       thesis_failures += int(c.branch.failures.size());
       index.add_row({cs.label, cs.figure, cs.load.Fm, cs.load.Fp, cs.load.gap, cs.load.gap + cls.dm_open(),
-                     cls.describe(sol.omega_min, sol.omega_max), b.size() == 2 ? b[0] : NAN,
-                     b.size() == 2 ? b[1] : NAN, states, long(c.branch.points.size()),
+                     cls.describe(sol.omega_min, sol.omega_max), b.size() == 2 ? Table::Cell(b[0]) : Table::Cell(std::string()),
+                     b.size() == 2 ? Table::Cell(b[1]) : Table::Cell(std::string()), states, long(c.branch.points.size()),
                      long(c.branch.folds.size()), long(c.branch.rejected_steps),
                      long(c.branch.failures.size()), secs});
       std::cout << "ch05_comparin_singh: " << cs.label << ": " << c.branch.summary() << "; predicted "

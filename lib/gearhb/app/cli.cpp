@@ -1,5 +1,7 @@
 #include "gearhb/app/cli.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
@@ -11,6 +13,7 @@ namespace gearhb {
 
 std::string Range::violation(double v) const {
   std::ostringstream os;
+  os << std::setprecision(12);
   if (!std::isfinite(v)) return "must be a finite number";
   switch (kind) {
     case Kind::any: return "";
@@ -30,14 +33,51 @@ std::string Range::violation(double v) const {
   return "";
 }
 
+void ParameterSet::group(const std::string& title, bool own_case) {
+  group_ = title;
+  group_own_ = own_case;
+}
+
 void ParameterSet::add(const std::string& name, double* value, const std::string& unit,
                        const std::string& help, Range range) {
-  entries_.push_back({name, unit, help, value, nullptr, *value, range});
+  entries_.push_back({name, unit, help, value, nullptr, *value, range, group_, group_own_});
 }
 
 void ParameterSet::add(const std::string& name, int* value, const std::string& unit,
                        const std::string& help, Range range) {
-  entries_.push_back({name, unit, help, nullptr, value, double(*value), range});
+  entries_.push_back({name, unit, help, nullptr, value, double(*value), range, group_, group_own_});
+}
+
+std::vector<std::string> ParameterSet::overridden_own_case() const {
+  std::vector<std::string> out;
+  for (const auto& k : overridden_)
+    if (const Entry* e = find(k); e && e->own_case) out.push_back(k);
+  return out;
+}
+
+double parse_decimal(const std::string& text, const std::string& what) {
+  // Decimal syntax only: [+-] digits [. digits] [(e|E) [+-] digits], at least one digit.
+  std::size_t i = 0, n = text.size(), digits = 0;
+  if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
+  while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) { ++i; ++digits; }
+  if (i < n && text[i] == '.') {
+    ++i;
+    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) { ++i; ++digits; }
+  }
+  bool ok = digits > 0;
+  if (ok && i < n && (text[i] == 'e' || text[i] == 'E')) {
+    ++i;
+    if (i < n && (text[i] == '+' || text[i] == '-')) ++i;
+    std::size_t exp_digits = 0;
+    while (i < n && std::isdigit(static_cast<unsigned char>(text[i]))) { ++i; ++exp_digits; }
+    ok = exp_digits > 0;
+  }
+  if (!ok || i != n) throw UsageError(what + ": '" + text + "' is not a decimal number");
+  errno = 0;
+  const double v = std::strtod(text.c_str(), nullptr);
+  // ERANGE with a finite result is underflow (denormal or zero): a valid value.
+  if (!std::isfinite(v)) throw UsageError(what + ": '" + text + "' is out of the range of a double");
+  return v;
 }
 
 const ParameterSet::Entry* ParameterSet::find(const std::string& name) const {
@@ -53,13 +93,9 @@ void ParameterSet::set(const std::string& assignment) {
   const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   const Entry* e = find(key);
   if (!e) throw UsageError("unknown parameter '" + key + "' (see --help)");
-  errno = 0;
-  char* end = nullptr;
-  const double v = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(v))
-    throw UsageError("parameter '" + key + "': '" + text + "' is not a number");
+  const double v = parse_decimal(text, "parameter '" + key + "'");
   if (e->i) {
-    if (v != std::floor(v) || std::fabs(v) > 1e9)
+    if (v != std::floor(v) || std::fabs(v) > 2e9)
       throw UsageError("parameter '" + key + "': '" + text + "' is not a whole number");
     *e->i = int(v);
   } else {
@@ -91,13 +127,43 @@ bool ParameterSet::was_set(const std::string& name) const {
 }
 
 std::string ParameterSet::help_text() const {
-  std::ostringstream os;
-  os << "Parameters (--set key=value):\n";
+  // Column widths from the longest entry, so long names never collide.
+  std::size_t wn = 4, wd = 7, wu = 4;
+  std::vector<std::string> defaults;
   for (const auto& e : entries_) {
     std::ostringstream def;
     def << e.default_value;
-    os << "  " << std::left << std::setw(14) << e.name << std::setw(12) << def.str()
-       << std::setw(10) << (e.unit.empty() ? "-" : e.unit) << e.help << "\n";
+    defaults.push_back(def.str());
+    wn = std::max(wn, e.name.size());
+    wd = std::max(wd, defaults.back().size());
+    wu = std::max(wu, e.unit.size());
+  }
+  std::ostringstream os;
+  os << "Parameters (--set key=value):\n";
+  os << "  " << std::left << std::setw(int(wn) + 2) << "name" << std::setw(int(wd) + 2) << "default"
+     << std::setw(int(wu) + 2) << "unit" << "meaning\n";
+  std::string current = "\x01";
+  for (std::size_t i = 0; i < entries_.size(); ++i) {
+    const auto& e = entries_[i];
+    if (e.group != current) {
+      current = e.group;
+      if (!current.empty()) os << " " << current << ":\n";
+    }
+    os << "  " << std::left << std::setw(int(wn) + 2) << e.name << std::setw(int(wd) + 2) << defaults[i]
+       << std::setw(int(wu) + 2) << (e.unit.empty() ? "-" : e.unit) << e.help;
+    if (e.range.kind != Range::Kind::any) {
+      std::ostringstream r;
+      r << std::setprecision(12);
+      switch (e.range.kind) {
+        case Range::Kind::positive: r << " (> 0)"; break;
+        case Range::Kind::nonnegative: r << " (>= 0)"; break;
+        case Range::Kind::at_least: r << " (>= " << e.range.lo << ")"; break;
+        case Range::Kind::between: r << " (" << e.range.lo << " to " << e.range.hi << ")"; break;
+        default: break;
+      }
+      os << r.str();
+    }
+    os << "\n";
   }
   return os.str();
 }
@@ -111,6 +177,7 @@ nlohmann::json ParameterSet::to_json() const {
   return j;
 }
 
+// LEGACY (until every chapter runs on Study).
 CommandLine parse_command_line(int argc, char** argv, ParameterSet& params,
                                const std::string& default_out_dir) {
   CommandLine cl;

@@ -1,7 +1,7 @@
 #pragma once
-// Command line of every chapter program (SPEC §2):
+// Parameters of a program's command line (README "Running a chapter"):
 //
-//   chNN_name [--out DIR] [--set key=value]... [--help]
+//   --set key=value   (repeatable)
 //
 // Each chapter keeps its parameters in plain structs (one per concern) whose
 // member initialisers are the thesis defaults. It binds every member to a name
@@ -9,7 +9,7 @@
 // ranges, and echoes the values used into the output folder.
 //
 // Bad input (unknown key, malformed number, value out of its physical range)
-// raises UsageError; the chapter's main prints its one line and exits with 2
+// raises UsageError; the Study (study.hpp) prints its one line and exits with 2
 // before anything is written.
 #include <functional>
 #include <map>
@@ -46,7 +46,15 @@ class ParameterSet {
   void add(const std::string& name, int* value, const std::string& unit,
            const std::string& help, Range range = Range::any());
 
-  // Apply one "key=value" override. Throws UsageError naming the key.
+  // Parameters added after this call are listed under `title` in --help. An
+  // own-case group holds the parameters of the user's own case (--case own):
+  // setting one of them for another selection is a usage error.
+  void group(const std::string& title, bool own_case = false);
+  // The overridden parameters that belong to an own-case group.
+  std::vector<std::string> overridden_own_case() const;
+
+  // Apply one "key=value" override. Throws UsageError naming the key. The value
+  // must be a decimal floating-point number (no hex, no blanks, no inf/nan).
   void set(const std::string& assignment);
   // Check every parameter against its range. Throws UsageError naming the first bad one.
   void validate() const;
@@ -65,12 +73,21 @@ class ParameterSet {
     int* i = nullptr;
     double default_value = 0.0;
     Range range;
+    std::string group;
+    bool own_case = false;
   };
   const Entry* find(const std::string& name) const;
   std::vector<Entry> entries_;
   std::vector<std::string> overridden_;
+  std::string group_;
+  bool group_own_ = false;
 };
 
+// Parse a decimal floating-point number (digits, one optional point, optional
+// exponent; denormals accepted). Throws UsageError naming `what` otherwise.
+double parse_decimal(const std::string& text, const std::string& what);
+
+// LEGACY (until every chapter runs on Study, study.hpp): the old per-chapter frame.
 // What a chapter's command line asked for.
 struct CommandLine {
   std::string out_dir;   // --out DIR (default given by the chapter)

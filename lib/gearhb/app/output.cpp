@@ -4,7 +4,9 @@
 #include <filesystem>
 #include <fstream>
 #include <stdexcept>
+#include <fcntl.h>
 #include <unistd.h>
+#include <cmath>
 
 namespace gearhb {
 
@@ -24,6 +26,12 @@ void write_file_atomic(const std::string& path, const std::string& content) {
       throw std::runtime_error("write failed: " + tmp.string());
     }
   }
+  // On disk before the rename, so a crash never leaves a renamed empty file.
+  const int fd = ::open(tmp.c_str(), O_RDONLY);
+  if (fd >= 0) {
+    ::fsync(fd);
+    ::close(fd);
+  }
   std::error_code ec;
   fs::rename(tmp, target, ec);
   if (ec) {
@@ -38,6 +46,11 @@ void Table::add_row(std::vector<Cell> row) {
   if (row.size() != columns_.size())
     throw std::logic_error("Table::add_row: row has " + std::to_string(row.size()) +
                            " cells, table has " + std::to_string(columns_.size()) + " columns");
+  // A non-finite number is an error of the run that computed it, never data.
+  for (std::size_t c = 0; c < row.size(); ++c)
+    if (const double* d = std::get_if<double>(&row[c]); d && !std::isfinite(*d))
+      throw std::runtime_error("non-finite value (" + std::to_string(*d) + ") in column '" + columns_[c] +
+                               "', row " + std::to_string(rows_.size() + 1));
   rows_.push_back(std::move(row));
 }
 
@@ -64,6 +77,8 @@ std::string Table::to_csv() const {
 }
 
 void KeyNumbers::add(const std::string& name, double value, const std::string& unit) {
+  if (!std::isfinite(value))
+    throw std::runtime_error("key number '" + name + "' is not finite (" + std::to_string(value) + ")");
   j_[name] = {{"value", value}, {"unit", unit}};
 }
 

@@ -1,8 +1,9 @@
 #pragma once
-// Writing a chapter's results (SPEC §2): CSV tables with a header row,
-// key_numbers.json, and the echo of the parameters. Every file is written
-// atomically (temporary file in the same folder, then rename), so a failed run
-// never leaves a half-written file behind.
+// Writing a program's results (README "Output files"): CSV tables with a header
+// row, key_numbers.json, and the echo of the parameters. Every file is written
+// atomically (temporary file in the same folder, fsync, then rename), so a crash
+// never leaves a half-written file behind. A non-finite number (inf, NaN) in a
+// table or a key number is an error naming the column or key: it is never written.
 #include <string>
 #include <variant>
 #include <vector>
@@ -20,7 +21,7 @@ class Table {
  public:
   using Cell = std::variant<double, long, std::string>;
   explicit Table(std::vector<std::string> columns);
-  void add_row(std::vector<Cell> row);   // must match the column count
+  void add_row(std::vector<Cell> row);   // must match the column count; finite numbers only
   std::size_t rows() const { return rows_.size(); }
   std::string to_csv() const;            // %.10g numbers, header first
   void write(const std::string& path) const { write_file_atomic(path, to_csv()); }

@@ -31,9 +31,11 @@ struct Aft::Plans {
 };
 
 int Aft::default_samples(int H, double oversampling) {
-  int n = int(std::ceil(oversampling * (2 * H + 1)));
-  n = std::max(n, 4 * H + 2);
-  return n + (n % 2);
+  // In double: no integer overflow for any H; sizes beyond an int are refused.
+  double n = std::max(std::ceil(oversampling * (2.0 * H + 1.0)), 4.0 * H + 2.0);
+  if (!(n <= 1 << 30)) throw std::invalid_argument("Aft: H = " + std::to_string(H) + " needs too many samples");
+  const int m = int(n);
+  return m + (m % 2);
 }
 
 Aft::Aft(int H, int N, double oversampling) : H_(H), N_(N ? N : default_samples(H, oversampling)) {

@@ -1,0 +1,192 @@
+#include "gearhb/app/study.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <iostream>
+#include <new>
+#include <sstream>
+#include <stdexcept>
+
+#include "gearhb/core/gsl_errors.hpp"
+
+namespace gearhb {
+
+namespace fs = std::filesystem;
+
+// --- Run ------------------------------------------------------------------------
+
+Run::Run(std::string program, Selection selection, std::string staging, bool quiet)
+    : program_(std::move(program)), sel_(std::move(selection)), staging_(std::move(staging)), quiet_(quiet) {}
+
+bool Run::wants(const std::string& label, bool in_quick_subset) const {
+  switch (sel_.kind) {
+    case Selection::Kind::all: return true;
+    case Selection::Kind::quick: return in_quick_subset;
+    case Selection::Kind::own: return false;
+    case Selection::Kind::one: return label == sel_.label;
+  }
+  return false;
+}
+
+void Run::write(const std::string& file, const Table& table) const {
+  write_file_atomic(staging_ + "/" + file, table.to_csv());
+}
+
+void Run::write_text(const std::string& file, const std::string& text) const {
+  write_file_atomic(staging_ + "/" + file, text);
+}
+
+void Run::say(const std::string& line) const { std::cout << program_ << ": " << line << std::endl; }
+
+void Run::progress(const std::string& what, long point, double omega, double step) {
+  if (quiet_) return;
+  const auto now = std::chrono::steady_clock::now();
+  if (now - last_progress_ < std::chrono::seconds(1)) return;
+  last_progress_ = now;
+  std::fprintf(stderr, "%s: %s: point %ld, omega = %.6g rad/s, step %.3g\n", program_.c_str(), what.c_str(),
+               point, omega, step);
+}
+
+// --- Study ----------------------------------------------------------------------
+
+Study::Study(std::string program, std::string banner)
+    : program_(std::move(program)), banner_(std::move(banner)) {}
+
+void Study::cases(const std::vector<std::string>& labels, const std::vector<std::string>& quick) {
+  labels_ = labels;
+  quick_ = std::set<std::string>(quick.begin(), quick.end());
+}
+
+std::string Study::help_text() const {
+  std::ostringstream os;
+  os << banner_ << "\n\n"
+     << "Usage: " << program_ << " [--case all|quick|own|LABEL] [--out DIR] [--set key=value]... [--quiet]\n"
+     << "Options:\n"
+     << "  --case all     every case of the chapter: the data of every figure (default)\n"
+     << "  --case quick   the regression subset run by CTest\n"
+     << "  --case own     one case with your parameters (the 'own case' group below)\n"
+     << "  --case LABEL   one case of the chapter's table:";
+  for (const auto& l : labels_) os << " " << l;
+  os << "\n"
+     << "  --out DIR      output folder (default build/data/" << program_ << ")\n"
+     << "  --set k=v      override one parameter (repeatable)\n"
+     << "  --quiet        no progress lines on stderr\n"
+     << "  --help         this text\n\n"
+     << params_.help_text();
+  return os.str();
+}
+
+namespace {
+
+struct Parsed {
+  Selection selection;
+  std::string out;
+  bool help = false, quiet = false;
+};
+
+Parsed parse(int argc, char** argv, ParameterSet& params, const std::vector<std::string>& labels,
+             const std::string& default_out) {
+  Parsed p;
+  p.out = default_out;
+  std::string which = "all";
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    auto value = [&](const std::string& flag) -> std::string {
+      if (arg.size() > flag.size() && arg.compare(0, flag.size() + 1, flag + "=") == 0)
+        return arg.substr(flag.size() + 1);
+      if (a + 1 >= argc) throw UsageError(flag + " expects a value");
+      return argv[++a];
+    };
+    auto is = [&](const std::string& flag) { return arg == flag || arg.rfind(flag + "=", 0) == 0; };
+    if (arg == "--help" || arg == "-h") p.help = true;
+    else if (arg == "--quiet") p.quiet = true;
+    else if (is("--out")) p.out = value("--out");
+    else if (is("--set")) params.set(value("--set"));
+    else if (is("--case")) which = value("--case");
+    else throw UsageError("unknown argument '" + arg + "' (see --help)");
+  }
+  if (p.out.empty()) throw UsageError("--out needs a non-empty folder name");
+  if (which == "all") p.selection.kind = Selection::Kind::all;
+  else if (which == "quick") p.selection.kind = Selection::Kind::quick;
+  else if (which == "own") p.selection.kind = Selection::Kind::own;
+  else {
+    bool known = false;
+    for (const auto& l : labels) known = known || l == which;
+    if (!known) throw UsageError("--case '" + which + "' is not all, quick, own or a case of this chapter (see --help)");
+    p.selection = {Selection::Kind::one, which};
+  }
+  params.validate();
+  if (p.selection.kind != Selection::Kind::own) {
+    const auto own = params.overridden_own_case();
+    if (!own.empty())
+      throw UsageError("parameter '" + own.front() + "' sets the own case: add --case own");
+  }
+  return p;
+}
+
+// The staging folder beside the output folder: ".<name>.staging".
+fs::path staging_for(const fs::path& out) {
+  fs::path abs = fs::absolute(out).lexically_normal();
+  if (abs.filename().empty()) abs = abs.parent_path();
+  if (abs.filename().empty() || abs == abs.root_path())
+    throw UsageError("--out '" + out.string() + "' does not name a folder");
+  return abs.parent_path() / ("." + abs.filename().string() + ".staging");
+}
+
+// Move every staged file into the output folder (each a rename, atomic), then remove staging.
+void publish(const fs::path& staging, const fs::path& out) {
+  fs::create_directories(out);
+  for (const auto& entry : fs::recursive_directory_iterator(staging)) {
+    if (!entry.is_regular_file()) continue;
+    const fs::path target = out / fs::relative(entry.path(), staging);
+    fs::create_directories(target.parent_path());
+    fs::rename(entry.path(), target);
+  }
+  fs::remove_all(staging);
+}
+
+}  // namespace
+
+int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
+  const std::string default_out = "build/data/" + program_;
+  Parsed p;
+  fs::path staging;
+  try {
+    p = parse(argc, argv, params_, labels_, default_out);
+    if (p.help) {
+      std::cout << help_text();
+      return 0;
+    }
+    if (checks_) checks_(p.selection);
+    staging = staging_for(p.out);
+  } catch (const UsageError& e) {
+    std::cerr << program_ << ": error: " << e.what() << "\n";
+    return 2;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  GslErrorsReturned gsl_policy;
+  try {
+    std::error_code ec;
+    fs::remove_all(staging, ec);   // left by a run that was killed
+    if (ec) throw std::runtime_error("cannot clean the staging folder " + staging.string() + ": " + ec.message());
+    Run run(program_, p.selection, staging.string(), p.quiet);
+    run.write_text("params.json", params_.to_json().dump(2) + "\n");
+    steps(run);
+    run.key_numbers().write((staging / "key_numbers.json").string());
+    run.write("timings.csv", run.timings_);
+    publish(staging, p.out);
+  } catch (const std::exception& e) {
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    const bool usage = dynamic_cast<const UsageError*>(&e) != nullptr;
+    const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
+    std::cerr << program_ << (usage ? ": error: " : ": failed: ")
+              << (memory ? "out of memory (reduce H, N or the number of points)" : e.what()) << "\n";
+    return usage ? 2 : 1;
+  }
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  std::printf("%s: done in %.1f s, data in %s\n", program_.c_str(), secs, p.out.c_str());
+  return 0;
+}
+
+}  // namespace gearhb

@@ -1,0 +1,112 @@
+#pragma once
+// The frame every chapter program runs in (README "Running a chapter").
+//
+//   chNN_name [--case all|quick|own|LABEL] [--out DIR] [--set key=value]... [--quiet] [--help]
+//
+//   --case all    every case of the chapter: the data of every figure (default)
+//   --case quick  the regression subset CTest runs: the same steps on fewer or cheaper cases
+//   --case own    one case with your own parameters (the "own case" group of --help)
+//   --case LABEL  one case of the chapter's case table
+//
+// A chapter program is a class whose steps are short functions; its main() builds a
+// Study, registers its parameter structs and its case labels, and hands its steps to
+// Study::run. The study
+//   1. parses the command line and validates every parameter (ranges, then the
+//      chapter's cross-parameter checks) before anything is written: bad input is
+//      one line on stderr and exit status 2;
+//   2. runs the steps with a Run, which writes every file into a staging folder next
+//      to DIR (".<DIR name>.staging", cleaned by the next run if a run was killed);
+//   3. on success moves the files into DIR (each fsync'ed, then renamed) and prints the
+//      wall time; on failure (exit 1, one line saying where and why) removes the
+//      staging folder, so DIR is left as it was.
+// Every run writes params.json (the parameters used), key_numbers.json and
+// timings.csv (wall-clock seconds per step: the only file that differs between runs).
+#include <chrono>
+#include <functional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "gearhb/app/cli.hpp"
+#include "gearhb/app/output.hpp"
+
+namespace gearhb {
+
+// What a run computes.
+struct Selection {
+  enum class Kind { all, quick, own, one } kind = Kind::all;
+  std::string label;   // the case, for Kind::one
+};
+
+// Handed to a chapter's steps: what to compute and where its files go.
+class Run {
+ public:
+  Run(std::string program, Selection selection, std::string staging, bool quiet);
+
+  const Selection& selection() const { return sel_; }
+  bool quick() const { return sel_.kind == Selection::Kind::quick; }
+  bool own() const { return sel_.kind == Selection::Kind::own; }
+  // The chapter-wide steps (linear references, checks, studies) run for all and quick.
+  bool whole_chapter() const { return sel_.kind == Selection::Kind::all || quick(); }
+  // Whether the case `label` of the case table is computed in this run
+  // (all: every case; quick: those the chapter marked quick; LABEL: that one).
+  bool wants(const std::string& label, bool in_quick_subset) const;
+
+  // Files (names relative to the output folder; written atomically into staging).
+  void write(const std::string& file, const Table& table) const;
+  void write_text(const std::string& file, const std::string& text) const;
+  KeyNumbers& key_numbers() { return key_; }
+
+  // Narration on stdout ("<program>: <line>") and a progress line on stderr
+  // (at most one a second, none with --quiet).
+  void say(const std::string& line) const;
+  void progress(const std::string& what, long point, double omega, double step);
+
+  // Time one step: runs f(), records its wall-clock seconds in timings.csv.
+  template <class F>
+  auto timed(const std::string& what, F&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    struct Record {
+      Run* run; std::string what; std::chrono::steady_clock::time_point t0;
+      ~Record() { run->timings_.add_row({what, std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()}); }
+    } record{this, what, t0};
+    return f();
+  }
+
+ private:
+  friend class Study;
+  std::string program_;
+  Selection sel_;
+  std::string staging_;
+  bool quiet_;
+  KeyNumbers key_;
+  Table timings_{{"step", "seconds"}};
+  std::chrono::steady_clock::time_point last_progress_{};
+};
+
+class Study {
+ public:
+  // program: the executable's name; banner: the equation and what the program makes
+  // (printed by --help). The default output folder is build/data/<program>.
+  Study(std::string program, std::string banner);
+
+  ParameterSet& parameters() { return params_; }
+  // The chapter's case labels, and which of them form the quick subset.
+  void cases(const std::vector<std::string>& labels, const std::vector<std::string>& quick);
+  // Cross-parameter checks (throw UsageError through ParameterSet::require); run
+  // after --set and the range checks, before anything is written.
+  void check(std::function<void(const Selection&)> checks) { checks_ = std::move(checks); }
+
+  // Parse, validate, run `steps`, publish. Returns the exit status (0, 1 or 2).
+  int run(int argc, char** argv, const std::function<void(Run&)>& steps);
+
+ private:
+  std::string program_, banner_;
+  ParameterSet params_;
+  std::vector<std::string> labels_;
+  std::set<std::string> quick_;
+  std::function<void(const Selection&)> checks_;
+  std::string help_text() const;
+};
+
+}  // namespace gearhb
