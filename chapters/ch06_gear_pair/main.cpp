@@ -380,7 +380,7 @@ int main(int argc, char** argv) {
     // ---- Step 3: the frequency responses of Figs. 40-45, both kc -----------
     Table index({"figure", "kc", "Fi", "Fa", "static_delta_open", "static_delta_closed", "points", "folds",
                  "unstable_points", "hill_stable_floquet_unstable", "rejected_steps", "transitions", "start", "end", "changed_lo",
-                 "changed_hi", "first_change_omega", "delta_max", "delta_min", "seconds"});
+                 "changed_hi", "first_change_omega", "delta_max", "delta_min"});
     for (double kc : kcs) {
       if (sol.quick && kc != gp.kc) continue;
       GearPairParameters g = gp;
@@ -416,8 +416,7 @@ int main(int argc, char** argv) {
         for (bool st : c.stable) unstable += st ? 0 : 1;
         index.add_row({long(cs.figure), kc, cs.Fi, cs.Fa, d_open, d_closed, long(c.branch.points.size()),
                        long(c.branch.folds.size()), unstable, hill_only, long(c.branch.rejected_steps), long(s.transitions),
-                       s.start, s.end, s.intermittent_lo, s.intermittent_hi, first, s.delta_max, s.delta_min,
-                       seconds_since(t0)});
+                       s.start, s.end, s.intermittent_lo, s.intermittent_hi, first, s.delta_max, s.delta_min});
         key.add("transitions_" + stem, s.transitions, "-");
         key.add("first_change_omega_" + stem, std::isnan(first) ? 0.0 : first, "rad/s");
         std::cout << "ch06_gear_pair: " << stem << ": " << c.branch.summary() << ", " << s.transitions
@@ -444,7 +443,7 @@ int main(int argc, char** argv) {
 
     // ---- Step 5: convergence in H (Fig. 43 case, intermittent band) -------
     if (!sol.quick) {
-      Table t({"H", "points", "folds", "delta_max_peak", "delta_min_peak", "seconds"});
+      Table t({"H", "points", "folds", "delta_max_peak", "delta_min_peak"});
       for (int H : {3, 5, 8, 10, 14}) {
         Solver s2 = sol;
         s2.H = H;
@@ -454,7 +453,7 @@ int main(int argc, char** argv) {
         const FrequencyCurve c = sweep_frequency(hb, sweep_options(s2, 10000.0, 20000.0, w0), "H study");
         const ContactSummary s = summarize_contact(hb, c, T2, w0);
         t.add_row({long(H), long(c.branch.points.size()), long(c.branch.folds.size()), s.delta_max,
-                   s.delta_min, seconds_since(t0)});
+                   s.delta_min});
       }
       t.write(out + "h_study.csv");
     }

@@ -189,6 +189,7 @@ CommandLine parse_command_line(int argc, char** argv, ParameterSet& params,
       return argv[++a];
     };
     if (arg == "--help" || arg == "-h") cl.help = true;
+    else if (arg == "--quiet") continue;
     else if (arg == "--out") cl.out_dir = next("a directory");
     else if (arg == "--set") params.set(next("key=value"));
     else if (arg.rfind("--set=", 0) == 0) params.set(arg.substr(6));
