@@ -92,6 +92,10 @@ void ParameterSet::set(const std::string& assignment) {
     throw UsageError("--set expects key=value, got '" + assignment + "'");
   const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   const Entry* e = find(key);
+  if (!e && keep_unregistered_) {
+    unregistered_.emplace_back(key, text);
+    return;
+  }
   if (!e) throw UsageError("unknown parameter '" + key + "' (see --help)");
   const double v = parse_decimal(text, "parameter '" + key + "'");
   if (e->i) {

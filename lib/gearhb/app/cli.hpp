@@ -13,6 +13,7 @@
 // before anything is written.
 #include <functional>
 #include <map>
+#include <utility>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,6 +62,11 @@ class ParameterSet {
   // Cross-parameter condition: throws UsageError(message) unless ok.
   static void require(bool ok, const std::string& message);
 
+  // Keys that name no registered parameter are kept (key, value text) instead of
+  // refused, for a program whose parameters come from a file (gearhb_frc).
+  void keep_unregistered() { keep_unregistered_ = true; }
+  const std::vector<std::pair<std::string, std::string>>& unregistered() const { return unregistered_; }
+
   bool was_set(const std::string& name) const;
   bool any_set() const { return !overridden_.empty(); }
   std::string help_text() const;     // one line per parameter: name, default, unit, meaning
@@ -81,6 +87,8 @@ class ParameterSet {
   std::vector<std::string> overridden_;
   std::string group_;
   bool group_own_ = false;
+  bool keep_unregistered_ = false;
+  std::vector<std::pair<std::string, std::string>> unregistered_;
 };
 
 // Parse a decimal floating-point number (digits, one optional point, optional

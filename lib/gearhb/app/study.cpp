@@ -60,15 +60,18 @@ void Study::cases(const std::vector<std::string>& labels, const std::vector<std:
 std::string Study::help_text() const {
   std::ostringstream os;
   os << banner_ << "\n\n"
-     << "Usage: " << program_ << " [--case all|quick|own|LABEL] [--out DIR] [--set key=value]... [--quiet]\n"
-     << "Options:\n"
-     << "  --case all     every case of the chapter: the data of every figure (default)\n"
-     << "  --case quick   the regression subset run by CTest\n"
-     << "  --case own     one case with your parameters (the 'own case' group below)\n"
-     << "  --case LABEL   one case of the chapter's table:";
-  for (const auto& l : labels_) os << " " << l;
-  os << "\n"
-     << "  --out DIR      output folder (default build/data/" << program_ << ")\n"
+     << "Usage: " << program_ << (positional_name_.empty() ? "" : " " + positional_name_)
+     << (labels_.empty() ? "" : " [--case all|quick|own|LABEL]") << " [--out DIR] [--set key=value]... [--quiet]\n"
+     << "Options:\n";
+  if (!labels_.empty()) {
+    os << "  --case all     every case of the chapter: the data of every figure (default)\n"
+       << "  --case quick   the regression subset run by CTest\n"
+       << "  --case own     one case with your parameters (the 'own case' group below)\n"
+       << "  --case LABEL   one case of the chapter's table:";
+    for (const auto& l : labels_) os << " " << l;
+    os << "\n";
+  }
+  os << "  --out DIR      output folder (default build/data/" << program_ << ")\n"
      << "  --set k=v      override one parameter (repeatable)\n"
      << "  --quiet        no progress lines on stderr\n"
      << "  --help         this text\n\n"
@@ -80,12 +83,12 @@ namespace {
 
 struct Parsed {
   Selection selection;
-  std::string out;
+  std::string out, positional;
   bool help = false, quiet = false;
 };
 
 Parsed parse(int argc, char** argv, ParameterSet& params, const std::vector<std::string>& labels,
-             const std::string& default_out) {
+             const std::string& default_out, const std::string& positional_name) {
   Parsed p;
   p.out = default_out;
   std::string which = "all";
@@ -103,8 +106,11 @@ Parsed parse(int argc, char** argv, ParameterSet& params, const std::vector<std:
     else if (is("--out")) p.out = value("--out");
     else if (is("--set")) params.set(value("--set"));
     else if (is("--case")) which = value("--case");
+    else if (!positional_name.empty() && p.positional.empty() && !arg.empty() && arg[0] != '-') p.positional = arg;
     else throw UsageError("unknown argument '" + arg + "' (see --help)");
   }
+  if (!positional_name.empty() && p.positional.empty() && !p.help)
+    throw UsageError("missing " + positional_name + " (see --help)");
   if (p.out.empty()) throw UsageError("--out needs a non-empty folder name");
   if (which == "all") p.selection.kind = Selection::Kind::all;
   else if (which == "quick") p.selection.kind = Selection::Kind::quick;
@@ -152,7 +158,8 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   Parsed p;
   fs::path staging;
   try {
-    p = parse(argc, argv, params_, labels_, default_out);
+    p = parse(argc, argv, params_, labels_, default_out, positional_name_);
+    positional_ = p.positional;
     if (p.help) {
       std::cout << help_text();
       return 0;
@@ -162,6 +169,9 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   } catch (const UsageError& e) {
     std::cerr << program_ << ": error: " << e.what() << "\n";
     return 2;
+  } catch (const std::exception& e) {   // a check that failed for another reason
+    std::cerr << program_ << ": failed: " << e.what() << "\n";
+    return 1;
   }
   const auto t0 = std::chrono::steady_clock::now();
   GslErrorsReturned gsl_policy;

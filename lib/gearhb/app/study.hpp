@@ -56,6 +56,8 @@ class Run {
   void write(const std::string& file, const Table& table) const;
   void write_text(const std::string& file, const std::string& text) const;
   KeyNumbers& key_numbers() { return key_; }
+  // The staging folder (for a tool that writes into it itself, e.g. a plot script).
+  const std::string& staging_path() const { return staging_; }
 
   // Narration on stdout ("<program>: <line>") and a progress line on stderr
   // (at most one a second, none with --quiet).
@@ -93,6 +95,10 @@ class Study {
   ParameterSet& parameters() { return params_; }
   // The chapter's case labels, and which of them form the quick subset.
   void cases(const std::vector<std::string>& labels, const std::vector<std::string>& quick);
+  // The program takes one positional argument (e.g. a model file), named `what`
+  // in --help; available from positional() once the command line is parsed.
+  void positional(const std::string& what) { positional_name_ = what; }
+  const std::string& positional() const { return positional_; }
   // Cross-parameter checks (throw UsageError through ParameterSet::require); run
   // after --set and the range checks, before anything is written.
   void check(std::function<void(const Selection&)> checks) { checks_ = std::move(checks); }
@@ -106,6 +112,7 @@ class Study {
   std::vector<std::string> labels_;
   std::set<std::string> quick_;
   std::function<void(const Selection&)> checks_;
+  std::string positional_name_, positional_;
   std::string help_text() const;
 };
 

@@ -18,6 +18,30 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
   return t;
 }
 
+Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
+                         const Eigen::VectorXd& output) {
+  const int n = hb.dofs();
+  std::vector<std::string> columns = {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact"};
+  std::vector<ResponseEvaluator> dof;
+  for (int i = 0; i < n; ++i) {
+    for (const char* what : {"_max", "_min", "_h1"}) columns.push_back("q" + std::to_string(i + 1) + what);
+    dof.emplace_back(hb, Eigen::VectorXd::Unit(n, i));
+  }
+  const ResponseEvaluator ev(hb, output);
+  Table t(columns);
+  for (std::size_t p = 0; p < b.points.size(); ++p) {
+    const auto r = ev.summarize(b.points[p].X);
+    std::vector<Table::Cell> row = {b.points[p].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean,
+                                    long(stable[p] ? 1 : 0), std::string(to_string(r.contact))};
+    for (int i = 0; i < n; ++i) {
+      const auto q = dof[i].summarize(b.points[p].X);
+      row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
+    }
+    t.add_row(std::move(row));
+  }
+  return t;
+}
+
 Table time_integration_table(const TimeIntegrationCheck& check) {
   Table t({"omega", "x_max_hb", "x_max_time_integration", "rel_diff", "periods", "contact"});
   for (const auto& r : check.rows)

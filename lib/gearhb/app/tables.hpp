@@ -18,6 +18,12 @@ namespace gearhb {
 Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
                                const std::vector<bool>& stable, const Eigen::VectorXd& q);
 
+// The frequency response of a model file (gearhb_frc): the columns of
+// frequency_response_table for the output coordinate (omega, x_max, x_min, x_rms_ac,
+// x_h1, x_mean, stable, contact), then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n.
+Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
+                         const Eigen::VectorXd& output);
+
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);
 

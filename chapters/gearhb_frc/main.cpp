@@ -1,0 +1,133 @@
+// ===========================================================================
+// gearhb_frc: the frequency response of your own system, from a model file
+// ===========================================================================
+//
+//     M x'' + C x' + K x + sum_i d_i max(kc_i (g_i(theta) + d_i' x), 0) = f0 + fc cos(w t) + fs sin(w t)
+//
+// Any n-DOF system with unilateral contacts, described in JSON (model_file.hpp,
+// README "Your own system from a file"); no C++ needed. The steps: read_model
+// (in the study's checks, so a bad file exits 2 before anything is written),
+// natural_frequencies, frequency_response, draw.
+//
+// Sample runs:
+//   build/bin/gearhb_frc chapters/gearhb_frc/examples/nlvib_ex03.json --out /tmp/ex03
+//   build/bin/gearhb_frc chapters/gearhb_frc/examples/mass_wall.json --set contacts.0.gap=-0.8
+// ===========================================================================
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <string>
+
+#include "gearhb/app/model_file.hpp"
+#include "gearhb/app/study.hpp"
+#include "gearhb/app/tables.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/response.hpp"
+
+#ifndef GEARHB_FIGURES_DIR
+#define GEARHB_FIGURES_DIR ""
+#endif
+
+using namespace gearhb;
+
+namespace {
+
+class FrequencyResponseFromFile {
+ public:
+  explicit FrequencyResponseFromFile(Study& study);
+  void run(Run& run);
+
+ private:
+  Study& study_;
+  int plot_ = 1;
+  ModelFile model_;
+
+  void read_model();
+  void natural_frequencies(Run& run) const;
+  void frequency_response(Run& run) const;
+  void draw(Run& run) const;
+};
+
+FrequencyResponseFromFile::FrequencyResponseFromFile(Study& study) : study_(study) {
+  ParameterSet& P = study.parameters();
+  P.keep_unregistered();   // --set PATH=VALUE addresses the model file
+  P.group("program");
+  P.add("plot", &plot_, "-", "1 draw DIR/frc.png (needs python3-matplotlib), 0 data only", Range::between(0, 1));
+  study.positional("MODEL.json");
+  study.check([this](const Selection&) { read_model(); });
+}
+
+void FrequencyResponseFromFile::run(Run& run) {
+  run.write_text("params.json", model_.resolved.dump(2) + "\n");
+  natural_frequencies(run);
+  frequency_response(run);
+  if (plot_) draw(run);
+}
+
+// Step 1 (in the checks, before anything is written): the model file and the overrides.
+void FrequencyResponseFromFile::read_model() {
+  model_ = read_model_file(study_.positional(), study_.parameters().unregistered());
+}
+
+// Step 2: natural frequencies with every contact open and every contact closed.
+void FrequencyResponseFromFile::natural_frequencies(Run& run) const {
+  const LinearSystem& s = model_.system;
+  Eigen::MatrixXd K_closed = s.K;
+  for (const auto& c : model_.contacts) K_closed += c.kc * c.w * c.w.transpose();
+  const Modes open = modal_analysis(s.M, s.K), closed = modal_analysis(s.M, K_closed);
+  Table t({"mode", "omega_open", "omega_closed"});
+  for (int i = 0; i < s.dofs(); ++i) {
+    t.add_row({long(i + 1), open.omega[i], closed.omega[i]});
+    run.key_numbers().add("omega_open_" + std::to_string(i + 1), open.omega[i], "rad/s");
+    run.key_numbers().add("omega_closed_" + std::to_string(i + 1), closed.omega[i], "rad/s");
+  }
+  run.write("modes.csv", t);
+}
+
+// Step 3: one arc-length continuation over the range, every point's stability and contact.
+void FrequencyResponseFromFile::frequency_response(Run& run) const {
+  const HarmonicBalance hb = model_.harmonic_balance();
+  SweepOptions o;
+  o.omega_min = std::min(model_.omega_from, model_.omega_to);
+  o.omega_max = std::max(model_.omega_from, model_.omega_to);
+  o.continuation.ds_max = model_.ds_max;
+  FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
+  // The lowest frequency of the curve where a contact first closes (if any does).
+  const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
+  if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
+  if (model_.omega_from > model_.omega_to) {   // written in the order the file asks for
+    std::reverse(c.branch.points.begin(), c.branch.points.end());
+    std::reverse(c.stable.begin(), c.stable.end());
+  }
+  run.say(model_.name + ": " + c.branch.summary());
+  run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
+  const ResponseEvaluator ev(hb, model_.output);
+  double peak = -1e300;
+  for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
+  KeyNumbers& key = run.key_numbers();
+  key.add("complete", c.branch.complete ? 1.0 : 0.0, "-");
+  key.add("points", double(c.branch.points.size()), "-");
+  key.add("folds", double(c.branch.folds.size()), "-");
+  key.add("x_max_peak", peak, "m");
+}
+
+// Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
+void FrequencyResponseFromFile::draw(Run& run) const {
+  const std::string script = std::string(GEARHB_FIGURES_DIR) + "/frc.py";
+  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
+  if (std::string(GEARHB_FIGURES_DIR).empty() || std::system(cmd.c_str()) != 0)
+    run.say("frc.png not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Study study("gearhb_frc",
+              "gearhb_frc: the frequency response of your own system, from a model file\n"
+              "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(w t) + fs sin(w t)\n"
+              "Writes DIR/frc.csv, modes.csv, key_numbers.json, params.json (the resolved model), frc.png.\n\n" +
+                  model_file_help());
+  FrequencyResponseFromFile program(study);
+  return study.run(argc, argv, [&](Run& run) { program.run(run); });
+}

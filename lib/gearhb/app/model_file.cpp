@@ -1,0 +1,233 @@
+#include "gearhb/app/model_file.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "gearhb/app/cli.hpp"
+#include "gearhb/app/solver_settings.hpp"
+#include "gearhb/core/fourier.hpp"
+
+namespace gearhb {
+
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& file, const std::string& key, const std::string& why) {
+  throw UsageError(file + ": '" + key + "' " + why);
+}
+
+// --- overrides: a number at a dotted path -------------------------------------
+void apply_override(json& root, const std::string& file, const std::string& path, const std::string& text) {
+  json* node = &root;
+  std::stringstream ss(path);
+  std::string part;
+  while (std::getline(ss, part, '.')) {
+    if (node->is_object() && node->contains(part)) {
+      node = &(*node)[part];
+    } else if (node->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+               part.size() < 9 && std::stoul(part) < node->size()) {
+      node = &(*node)[std::stoul(part)];
+    } else {
+      fail(file, path, "is not in the model (--set overrides a number that the file has)");
+    }
+  }
+  if (!node->is_number()) fail(file, path, "is not a number (--set overrides numbers only)");
+  *node = parse_decimal(text, "--set " + path);
+}
+
+// --- typed readers that name the key ------------------------------------------
+double number(const json& j, const std::string& file, const std::string& key) {
+  if (!j.is_number()) fail(file, key, "must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail(file, key, "must be finite");
+  return v;
+}
+
+int whole(const json& j, const std::string& file, const std::string& key, int lo, int hi) {
+  const double v = number(j, file, key);
+  if (v != std::floor(v) || v < lo || v > hi)
+    fail(file, key, "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return int(v);
+}
+
+Eigen::VectorXd vector(const json& j, const std::string& file, const std::string& key, int n) {
+  if (!j.is_array() || int(j.size()) != n) fail(file, key, "must be a list of " + std::to_string(n) + " numbers");
+  Eigen::VectorXd v(n);
+  for (int i = 0; i < n; ++i) v[i] = number(j[i], file, key + "." + std::to_string(i));
+  return v;
+}
+
+Eigen::MatrixXd matrix(const json& j, const std::string& file, const std::string& key, int n) {
+  if (!j.is_array() || int(j.size()) != n)
+    fail(file, key, "must be a list of " + std::to_string(n) + " rows");
+  Eigen::MatrixXd m(n, n);
+  for (int r = 0; r < n; ++r) m.row(r) = vector(j[r], file, key + "." + std::to_string(r), n).transpose();
+  return m;
+}
+
+void only_keys(const json& j, const std::string& file, const std::string& where,
+               const std::vector<std::string>& allowed) {
+  if (!j.is_object()) fail(file, where, "must be an object");
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || item.key() == a;
+    if (!ok) fail(file, (where.empty() ? "" : where + ".") + item.key(), "is not a model key (see --help)");
+  }
+}
+
+void symmetric(const Eigen::MatrixXd& m, const std::string& file, const std::string& key) {
+  for (int r = 0; r < m.rows(); ++r)
+    for (int c = 0; c < r; ++c)
+      if (std::fabs(m(r, c) - m(c, r)) > 1e-12 * (std::fabs(m(r, c)) + std::fabs(m(c, r)) + 1e-300))
+        fail(file, key, "is not symmetric (entry " + std::to_string(r) + "," + std::to_string(c) + ")");
+}
+
+// A periodic gap from a CSV `phase,gap`: its first H harmonics, [0, a1, b1, ...].
+Eigen::VectorXd read_gap_file(const std::string& path, const std::string& key, int H) {
+  std::ifstream in(path);
+  if (!in) fail(path, key, "cannot be opened");
+  std::string line;
+  std::getline(in, line);
+  if (line != "phase,gap" && line != "phase,gap\r") fail(path, key, "needs the header 'phase,gap'");
+  std::vector<double> phase, gap;
+  int row = 1;
+  while (std::getline(in, line)) {
+    ++row;
+    if (line.empty()) continue;
+    const auto comma = line.find(',');
+    if (comma == std::string::npos) fail(path, key, "row " + std::to_string(row) + ": expected phase,gap");
+    const std::string where = path + " row " + std::to_string(row);
+    phase.push_back(parse_decimal(line.substr(0, comma), where + " phase"));
+    gap.push_back(parse_decimal(line.substr(comma + 1), where + " gap"));
+  }
+  const int n = int(gap.size());
+  if (n < 2 * H + 1) fail(path, key, "has " + std::to_string(n) + " rows; needs at least 2H+1 = " + std::to_string(2 * H + 1));
+  for (int i = 0; i < n; ++i)
+    if (std::fabs(phase[i] - double(i) / n) > 1e-6)
+      fail(path, key, "row " + std::to_string(i + 2) + ": phases must be uniform in [0, 1) from 0 (expected " +
+                          std::to_string(double(i) / n) + ")");
+  // Fourier coefficients by the uniform-sample transform (exact for a band-limited gap).
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(2 * H + 1);
+  for (int i = 0; i < n; ++i) {
+    const double th = 2 * M_PI * i / n;
+    for (int k = 1; k <= H; ++k) {
+      c[2 * k - 1] += 2.0 / n * gap[i] * std::cos(k * th);
+      c[2 * k] += 2.0 / n * gap[i] * std::sin(k * th);
+    }
+    c[0] += gap[i] / n;
+  }
+  return c;
+}
+
+json load(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw UsageError(path + ": cannot be opened");
+  try {
+    return json::parse(in);
+  } catch (const json::exception& e) {
+    throw UsageError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+}
+
+}  // namespace
+
+ModelFile read_model_file(const std::string& path,
+                          const std::vector<std::pair<std::string, std::string>>& overrides) {
+  json j = load(path);
+  only_keys(j, path, "", {"name", "mass", "stiffness", "damping", "rayleigh", "contacts", "forcing", "harmonics",
+                          "samples", "omega", "output", "solver"});
+  for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
+  for (const char* k : {"mass", "stiffness", "harmonics", "omega", "output"})
+    if (!j.contains(k)) fail(path, k, "is missing");
+  ModelFile m;
+  m.resolved = j;
+  m.name = j.value("name", std::string("model"));
+  if (!j["mass"].is_array() || j["mass"].empty()) fail(path, "mass", "must be a non-empty list of rows");
+  const int n = int(j["mass"].size());
+  LinearSystem& s = m.system;
+  s.M = matrix(j["mass"], path, "mass", n);
+  s.K = matrix(j["stiffness"], path, "stiffness", n);
+  symmetric(s.M, path, "mass");
+  if (Eigen::LLT<Eigen::MatrixXd>(s.M).info() != Eigen::Success) fail(path, "mass", "is not positive definite");
+  if (j.contains("damping") == j.contains("rayleigh")) fail(path, "damping", "or 'rayleigh' must be given, not both");
+  if (j.contains("damping")) {
+    s.C = matrix(j["damping"], path, "damping", n);
+  } else {
+    only_keys(j["rayleigh"], path, "rayleigh", {"alpha", "beta"});
+    s.C = rayleigh_damping(s.M, s.K, number(j["rayleigh"].value("alpha", json(0.0)), path, "rayleigh.alpha"),
+                           number(j["rayleigh"].value("beta", json(0.0)), path, "rayleigh.beta"));
+  }
+  m.harmonics = whole(j["harmonics"], path, "harmonics", 1, max_harmonics(n));
+  m.samples = j.contains("samples") ? whole(j["samples"], path, "samples", 0, max_aft_samples) : 0;
+  if (m.samples != 0 && m.samples < 4 * m.harmonics + 2) fail(path, "samples", "must be 0 or >= 4H+2");
+  only_keys(j["omega"], path, "omega", {"from", "to"});
+  m.omega_from = number(j["omega"].value("from", json()), path, "omega.from");
+  m.omega_to = number(j["omega"].value("to", json()), path, "omega.to");
+  if (m.omega_from <= 0 || m.omega_to <= 0 || m.omega_from == m.omega_to)
+    fail(path, "omega", "needs 0 < from != to");
+  only_keys(j["output"], path, "output", {"direction"});
+  m.output = vector(j["output"].value("direction", json()), path, "output.direction", n);
+  const json forcing = j.value("forcing", json::object());
+  only_keys(forcing, path, "forcing", {"static", "cos", "sin"});
+  auto force = [&](const char* k) {
+    return forcing.contains(k) ? vector(forcing[k], path, std::string("forcing.") + k, n) : Eigen::VectorXd::Zero(n);
+  };
+  m.forcing = {force("static"), force("cos"), force("sin")};
+  const json contacts = j.value("contacts", json::array());
+  if (!contacts.is_array()) fail(path, "contacts", "must be a list");
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const std::string key = "contacts." + std::to_string(i);
+    only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file"});
+    UnilateralContact c;
+    c.w = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
+    c.kc = number(contacts[i].value("kc", json()), path, key + ".kc");
+    if (c.kc < 0) fail(path, key + ".kc", "must be >= 0");
+    c.gap = number(contacts[i].value("gap", json(0.0)), path, key + ".gap");
+    if (contacts[i].contains("gap_file")) {
+      if (!contacts[i]["gap_file"].is_string()) fail(path, key + ".gap_file", "must be a file name");
+      std::filesystem::path gp = contacts[i]["gap_file"].get<std::string>();
+      if (gp.is_relative()) gp = std::filesystem::path(path).parent_path() / gp;
+      c.gap_harmonics = read_gap_file(gp.string(), key + ".gap_file", m.harmonics);
+    }
+    m.contacts.push_back(c);
+  }
+  const json solver = j.value("solver", json::object());
+  only_keys(solver, path, "solver", {"exact_contact", "ds_max"});
+  if (solver.contains("exact_contact")) m.exact_contact = whole(solver["exact_contact"], path, "solver.exact_contact", 0, 1);
+  if (solver.contains("ds_max")) {
+    m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
+    if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
+  }
+  return m;
+}
+
+HarmonicBalance ModelFile::harmonic_balance() const {
+  return HarmonicBalance(system, contacts, forcing, harmonics, samples,
+                         exact_contact ? ContactQuadrature::exact : ContactQuadrature::sampled);
+}
+
+std::string model_file_help() {
+  return "Model file keys (JSON; SI units; n = number of DOFs):\n"
+         "  name                  text shown in titles\n"
+         "  mass                  n x n, symmetric positive definite [kg]\n"
+         "  stiffness             n x n [N/m]\n"
+         "  damping               n x n [N s/m], or instead\n"
+         "  rayleigh.alpha/beta   C = alpha M + beta K [1/s, s]\n"
+         "  contacts[i].direction n numbers: the contact normal (penetration g + direction'x)\n"
+         "  contacts[i].kc        contact stiffness >= 0 [N/m]\n"
+         "  contacts[i].gap       g [m]: < 0 clearance, > 0 preload (F = max(kc (g + direction'x), 0))\n"
+         "  contacts[i].gap_file  optional CSV 'phase,gap' (one period, uniform phases from 0, gap [m])\n"
+         "  forcing.static/cos/sin  n numbers each: f0 + fc cos(w t) + fs sin(w t) [N]\n"
+         "  harmonics             H >= 1\n"
+         "  samples               AFT samples per period (0 = 4(2H+1); else >= 4H+2)\n"
+         "  omega.from, omega.to  frequency range [rad/s], swept from 'from' to 'to'\n"
+         "  output.direction      n numbers: the plotted coordinate q'x\n"
+         "  solver.exact_contact  1 exact projection of the contact law (default), 0 sampled AFT\n"
+         "  solver.ds_max         largest arc-length step (default 0.02)\n"
+         "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n";
+}
+
+}  // namespace gearhb

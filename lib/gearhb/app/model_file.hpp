@@ -1,0 +1,64 @@
+#pragma once
+// A model file: any n-DOF system with unilateral contacts that the library can
+// solve, described in JSON (README "Your own system from a file"):
+//
+//   {
+//     "name":      "two masses, unilateral spring",
+//     "mass":      [[1, 0], [0, 1]],                      n x n, symmetric positive definite
+//     "stiffness": [[1, -1], [-1, 2]],                    n x n
+//     "damping":   [[0.03, -0.03], [-0.03, 0.06]],        n x n, or instead
+//     "rayleigh":  {"alpha": a, "beta": b},               C = a M + b K
+//     "contacts":  [ {"direction": [1, 0], "kc": 100, "gap": -1,
+//                     "gap_file": "gap.csv"} ],            optional periodic gap (phase,gap)
+//     "forcing":   {"static": [0, 0], "cos": [0, 0.1], "sin": [0, 0]},
+//     "harmonics": 21,
+//     "samples":   0,                                     AFT samples (0 = 4 (2H+1))
+//     "omega":     {"from": 0.8, "to": 0.5},              [rad/s], either direction
+//     "output":    {"direction": [1, 0]},                 the plotted coordinate q' x
+//     "solver":    {"exact_contact": 1, "ds_max": 0.02}
+//   }
+//
+// Contact law of the library: F = max(kc (g + direction' x), 0); gap g < 0 a
+// clearance, g > 0 a preload. A gap file is a CSV with header `phase,gap`: one
+// period, uniform phases in [0, 1) starting at 0, gap in m, at least 2H+1 rows;
+// its first H harmonics are added to the constant `gap`. A relative gap_file path
+// is taken relative to the model file.
+//
+// Overrides: `--set path=value` replaces a number at a dotted path
+// (`harmonics=10`, `omega.to=0.4`, `contacts.0.kc=50`, `mass.1.1=2`).
+// Every error is a UsageError naming the key (and the row of a gap file).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <Eigen/Dense>
+#include <nlohmann/json.hpp>
+
+#include "gearhb/hb/harmonic_balance.hpp"
+
+namespace gearhb {
+
+struct ModelFile {
+  std::string name;
+  LinearSystem system;
+  std::vector<UnilateralContact> contacts;
+  Excitation forcing;
+  int harmonics = 0, samples = 0;
+  double omega_from = 0.0, omega_to = 0.0;   // [rad/s]
+  Eigen::VectorXd output;                    // the plotted coordinate
+  int exact_contact = 1;
+  double ds_max = 0.02;
+  nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
+
+  HarmonicBalance harmonic_balance() const;
+};
+
+// Read, override and check a model file. Throws UsageError with one line naming
+// the file and the key.
+ModelFile read_model_file(const std::string& path,
+                          const std::vector<std::pair<std::string, std::string>>& overrides);
+
+// Text for --help: every key, its unit and meaning.
+std::string model_file_help();
+
+}  // namespace gearhb
