@@ -46,6 +46,8 @@ def main():
         for f in made:
             print("[figures]   wrote %s" % f)
         print("[figures]   %s done in %.1f s" % (exe.name, time.time() - t0), flush=True)
+    import report
+    print("[figures] report: %s" % report.write(build))
 
 
 if __name__ == "__main__":

@@ -166,6 +166,15 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
     }
     if (checks_) checks_(p.selection);
     staging = staging_for(p.out);
+    // The output folder must be writable: try the staging folder now (removed again).
+    std::error_code ec;
+    fs::remove_all(staging, ec);
+    fs::create_directories(staging, ec);
+    if (ec) throw UsageError("--out '" + p.out + "': cannot write there (" + ec.message() + ")");
+    if (fs::exists(p.out) && !fs::is_directory(p.out)) {
+      fs::remove_all(staging, ec);
+      throw UsageError("--out '" + p.out + "' is a file, not a folder");
+    }
   } catch (const UsageError& e) {
     std::cerr << program_ << ": error: " << e.what() << "\n";
     return 2;
@@ -176,9 +185,6 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   const auto t0 = std::chrono::steady_clock::now();
   GslErrorsReturned gsl_policy;
   try {
-    std::error_code ec;
-    fs::remove_all(staging, ec);   // left by a run that was killed
-    if (ec) throw std::runtime_error("cannot clean the staging folder " + staging.string() + ": " + ec.message());
     Run run(program_, p.selection, staging.string(), p.quiet);
     run.write_text("params.json", params_.to_json().dump(2) + "\n");
     steps(run);

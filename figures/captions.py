@@ -1,0 +1,69 @@
+"""Captions of the report (figures/report.py): for each chapter program, each figure
+(a file-name pattern in build/figures/), its thesis figure number, and one paragraph:
+what it shows and what to notice. Plus the thesis figures that cannot be computed."""
+
+CHAPTERS = [
+    {"program": "ch03_mass_wall", "title": "Chapter 3: a mass against a wall", "figures": [
+        ("fig07_*.png", "Fig. 7", "Linear frequency response with the contact open (spring k) and closed (k + kc): "
+         "the two resonances, 1 and sqrt(2) rad/s, between which the contact curves live."),
+        ("fig08_*.png", "Fig. 8", "The contact law max(N0 + kc x0 cos theta, 0) over one cycle for a preload that keeps "
+         "contact, one that loses it for part of the cycle, and a gap never closed: the force is clipped, not negative."),
+        ("fig09_*.png", "Fig. 9", "Two clearances: g = -1.2 m is never reached (the linear curve); g = -0.6 m bends the "
+         "resonance to the right (hardening) with two folds and an unstable (dashed) middle branch."),
+        ("fig10_*.png", "Fig. 10", "Two preloads: the mass starts in contact; where the vibration exceeds the static "
+         "penetration it separates and the resonance bends to the left (softening). Notice x_min leaving the wall level."),
+        ("fig11_*.png", "Fig. 11", "The same gap with two forcing amplitudes: the small force never reaches the wall, "
+         "the larger one does. Nonlinearity depends on amplitude."),
+        ("fig12_*.png", "Fig. 12", "A larger force makes the far wall (g = -1.2 m) reachable: the overhang appears."),
+        ("fig1[345]_*.png", "Figs. 13-15", "With a static force F0 the mass sits 1 m off centre: the curve with the current "
+         "point, beside x(t) there, before, during and after contact (points chosen by a stated rule)."),
+        ("fig1[678]_*.png", "Figs. 16-18", "Starting in contact (g = -0.5 m, F0 = 1 N) and separating near resonance."),
+        ("figS1_*.png", "supplement", "Folds found with the classic sampled AFT against the number of time samples: spurious "
+         "micro-folds, against the 2 true ones that the exact projection finds at any N."),
+    ]},
+    {"program": "ch04_two_masses", "title": "Chapter 4: two masses with contact between them", "figures": [
+        ("fig2[0-3]_*.png", "Figs. 20-23", "Relative displacement d = x1 - x2 (left, with the contact level -g) and each mass's "
+         "amplitude (right) for g = -0.5, -0.005, 0.15, 0.6 m: never in contact, intermittent (two folds), always in contact."),
+    ]},
+    {"program": "ch05_comparin_singh", "title": "Chapter 5: the Comparin & Singh impact pair", "figures": [
+        ("fig2[5-9]_*.png", "Figs. 25-29", "Frequency responses for the thesis' (Fm, Fp, g) cases; the title states the regime "
+         "predicted by the analytic criteria, the curve the harmonic-balance result; the shaded band is the predicted "
+         "intermittent range."),
+        ("fig30_*.png", "Fig. 30", "The last pair of the thesis' cases."),
+        ("figS2_*.png", "supplement", "The rebuilt regime classifier against every harmonic-balance solution of a 1200-point grid."),
+    ]},
+    {"program": "ch06_gear_pair", "title": "Chapter 6: a 6-DOF spur-gear pair with external forcing", "figures": [
+        ("fig4[0-5]_*.png", "Figs. 40-45", "Mesh deflection Delta against forcing frequency for the thesis' static and "
+         "harmonic loads (kc = 5e8 N/m): dashed where unstable; where the mesh opens the curves bend and fold."),
+        ("figS4[0-5]_*.png", "supplement", "The same with the printed kc = 5e2 N/m: every curve is the linear open response "
+         "shifted, which is why 5e8 is the default (chapter README)."),
+    ]},
+    {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
+        ("fig4[89]_*.png", "Figs. 48-49", "Deflection of one tooth pair loaded at two contact node pairs (constant thickness)."),
+        ("fig5[01]_*.png", "Figs. 50-51", "The FE cantilever against the exact cubic deflection."),
+        ("fig5[2-5]_*.png", "Figs. 52-55", "Two pairs in contact: the load shared by the constraint of a common transmission error."),
+        ("fig56_*.png", "Fig. 56", "Bending moment of the fused beams."),
+        ("fig57_*.png", "Fig. 57", "The involute tooth thickness used by the variable-thickness model."),
+        ("fig5[89]_*.png", "Figs. 58-59", "Deformed teeth, one and two pairs in contact."),
+        ("fig60_*.png", "Fig. 60", "STE over the mesh cycle for 100, 200, 300 N m: jumps where the second pair enters."),
+        ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE: the excitation of chapter 8."),
+        ("fig6[2-4]_*.png", "Figs. 62-64", "The refined 14-node model and its STE and coefficients."),
+        ("ch07_extra_*.png", "supplement", "Convergence of the STE beyond 14 nodes."),
+    ]},
+]
+
+NOT_COMPUTABLE = [
+    ("Figs. 1-4", "introduction: gear drives, engines and their data from other sources"),
+    ("Fig. 5", "sketch of the pseudo-arc-length continuation method"),
+    ("Fig. 6", "sketch of the mass-against-wall model"),
+    ("Fig. 19", "sketch of the two-mass system"),
+    ("Fig. 24", "sketch of the Comparin & Singh system"),
+    ("Figs. 31-39", "sketches: tooth profile, line of action, pressure angle, gear-pair reference frames, forces and displacements"),
+    ("Figs. 46-47", "sketches of the tooth model (teeth as beams and as springs)"),
+    ("Fig. 65", "sketch of the limit positions for the angle of the tooth axis"),
+    ("Fig. 66", "sketch of the 1-DOF gear model (after Ozguven & Houser)"),
+    ("Fig. 68", "mesh stiffness found by Parker, Vijayakar & Imajo (2000): their data are not available"),
+    ("Figs. 71-72, 83-84", "comparisons with the FE and experimental curves of Parker, Vijayakar & Imajo (2000): not available; our curves are drawn alone"),
+    ("Figs. 73-76", "sketches of the base pitch along the line of action and of the backlash geometry"),
+    ("Parker's curves in Figs. 60 and 79", "not available: our STE and coefficients are drawn alone, nothing in their place"),
+]
