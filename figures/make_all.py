@@ -2,11 +2,13 @@
 """Run every chapter program and draw every thesis figure (`make figures`).
 
 For each chapter program build/bin/chNN_name:
-  1. run it:  build/bin/chNN_name --out build/data/chNN_name
+  1. run it:  build/bin/chNN_name --out build/data/chNN_name   (two programs at a time)
   2. draw:    figures/chNN_name.py  (its draw(data_dir, fig_dir) function)
-Figures land in build/figures/figNN_*.png, named after the thesis figure number.
+Figures land in build/figures/figNN_*.png, named after the thesis figure number;
+then build/figures/index.html (figures/report.py) links them all.
 """
 import argparse
+import concurrent.futures
 import importlib.util
 import pathlib
 import subprocess
@@ -14,12 +16,14 @@ import sys
 import time
 
 HERE = pathlib.Path(__file__).resolve().parent
+sys.path.insert(0, str(HERE))
 
 
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--build", default="build")
     ap.add_argument("--only", help="run just this chapter (e.g. ch03_mass_wall)")
+    ap.add_argument("--jobs", type=int, default=2, help="chapter programs run at once")
     args = ap.parse_args()
     build = pathlib.Path(args.build).resolve()
     fig_dir = build / "figures"
@@ -29,23 +33,27 @@ def main():
         chapters = [p for p in chapters if p.name == args.only]
     if not chapters:
         sys.exit("no chapter programs in %s/bin: run `make build` first" % build)
-    for exe in chapters:
-        data_dir = build / "data" / exe.name
+    # The programs run two at a time (the machine has two cores; each program is
+    # single-threaded); each chapter's figures are drawn as soon as its data is there.
+    def run(exe):
         t0 = time.time()
+        data_dir = build / "data" / exe.name
         print("[figures] %s --out %s" % (exe, data_dir), flush=True)
-        subprocess.run([str(exe), "--out", str(data_dir)], check=True)
-        script = HERE / (exe.name + ".py")
-        if not script.exists():
-            print("[figures]   (no figure script %s)" % script.name)
-            continue
-        spec = importlib.util.spec_from_file_location(exe.name, script)
-        mod = importlib.util.module_from_spec(spec)
-        sys.path.insert(0, str(HERE))
-        spec.loader.exec_module(mod)
-        made = mod.draw(data_dir, fig_dir)
-        for f in made:
-            print("[figures]   wrote %s" % f)
-        print("[figures]   %s done in %.1f s" % (exe.name, time.time() - t0), flush=True)
+        subprocess.run([str(exe), "--quiet", "--out", str(data_dir)], check=True)
+        return exe, data_dir, time.time() - t0
+
+    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+        for fut in concurrent.futures.as_completed([pool.submit(run, exe) for exe in chapters]):
+            exe, data_dir, secs = fut.result()
+            script = HERE / (exe.name + ".py")
+            if not script.exists():
+                print("[figures]   (no figure script %s)" % script.name)
+                continue
+            spec = importlib.util.spec_from_file_location(exe.name, script)
+            mod = importlib.util.module_from_spec(spec)
+            spec.loader.exec_module(mod)
+            made = mod.draw(data_dir, fig_dir)
+            print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
     import report
     print("[figures] report: %s" % report.write(build))
 
