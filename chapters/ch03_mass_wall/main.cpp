@@ -184,7 +184,7 @@ void MassAgainstWall::contact_force_law(Run& run) const {
 
 // Step 3 (Figs. 9-18): one continuation per case of the table.
 void MassAgainstWall::frequency_responses(Run& run) const {
-  Table index({"label", "figure", "gap", "F", "F0", "points", "folds", "rejected_steps"});
+  Table index({"label", "figure", "gap", "F", "F0", "points", "folds", "rejected_steps", "complete"});
   Table marks({"label", "mark", "omega", "x_max", "contact"});
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
@@ -192,7 +192,7 @@ void MassAgainstWall::frequency_responses(Run& run) const {
     const FrequencyCurve c = sweep(run, hb, cs.label);
     run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c.branch, c.stable, kX));
     index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
-                   long(c.branch.folds.size()), long(c.branch.rejected_steps)});
+                   long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
     if (has(cs, Measure::time_marks)) time_histories(run, cs, hb, c, marks);
   }
