@@ -1,11 +1,12 @@
 #pragma once
 // Unilateral contact law (thesis §2.3, §3; SPEC §3):
 //
-//     F_c = max( k_c (g + v), 0 ),     v = w' x  (relative displacement along the normal)
+//     F_c = max( k_c (g + v), 0 ),     v = n' x  (relative displacement along the normal n)
 //
 // g > 0 is a preload (bodies pressed together at x = 0), g < 0 a gap. The force
-// F_c acts on the structure as  -w F_c  (it pushes the DOFs along -w), so the
-// equation of motion reads  M x'' + C x' + K x + w F_c = f(t).
+// F_c acts on the structure as  -n F_c  (it pushes the DOFs along -n), so the
+// equation of motion reads  M x'' + C x' + K x + n F_c = f(t)
+// (n is the member `normal`).
 // The gap may also vary periodically with the forcing phase (e.g. a
 // transmission error): g(theta) = g + sum_k (gc_k cos k theta + gs_k sin k theta).
 #include <Eigen/Dense>
@@ -13,7 +14,7 @@
 namespace gearhb {
 
 struct UnilateralContact {
-  Eigen::VectorXd w;       // contact normal over the DOFs (v = w' x)
+  Eigen::VectorXd normal;  // contact normal over the DOFs (v = normal' x)
   double kc = 0.0;         // contact stiffness [N/m]
   double gap = 0.0;        // g: > 0 preload, < 0 clearance [m]
   // Optional periodic part of the gap, real Fourier coefficients [0, a1, b1, ...]
