@@ -137,7 +137,7 @@ int main(int argc, char** argv) {
     // ---- Single case: the user's own parameters -------------------------
     if (P.any_set()) {
       HarmonicBalance hb = make_model(osc, load, sol);
-      const Curve c = sweep_frequency(hb, sweep_options(sol), "frc");
+      const Curve c = require_complete(sweep_frequency(hb, sweep_options(sol), "frc"), "frc");
       write_curve(hb, c, out + "frc.csv");
       key.add("folds", double(c.branch.folds.size()), "-");
       key.add("points", double(c.branch.points.size()), "-");
@@ -191,7 +191,7 @@ int main(int argc, char** argv) {
     for (const auto& cs : cases) {
       const auto t0 = std::chrono::steady_clock::now();
       HarmonicBalance hb = make_model(osc, cs.load, sol);
-      const Curve c = sweep_frequency(hb, sweep_options(sol), cs.label);
+      const Curve c = require_complete(sweep_frequency(hb, sweep_options(sol), cs.label), cs.label);
       write_curve(hb, c, out + "frc_" + cs.label + ".csv");
       const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
       index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
@@ -248,7 +248,7 @@ int main(int argc, char** argv) {
     // ---- Step 4: harmonic balance against GSL time integration (g = -0.6) ---
     {
       HarmonicBalance hb = make_model(osc, {-0.6, 0.01, 0.0}, sol);
-      const Curve c = sweep_frequency(hb, sweep_options(sol), "check");
+      const Curve c = require_complete(sweep_frequency(hb, sweep_options(sol), "check"), "check");
       const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, VectorXd::Constant(1, 1.0));
       time_integration_table(chk).write(out + "check_time_integration.csv");
       key.add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");

@@ -104,7 +104,7 @@ SweepOptions sweep_options(const Solver& s) {
 // One case: the curve of d = x1 - x2 and of each mass, written as three tables.
 FrequencyCurve run_case(const HarmonicBalance& hb, const Solver& s, const std::string& stem,
                         const std::string& out) {
-  const FrequencyCurve c = sweep_frequency(hb, sweep_options(s), stem);
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s), stem), stem);
   frequency_response_table(hb, c.branch, c.stable, kNormal).write(out + stem + ".csv");
   frequency_response_table(hb, c.branch, c.stable, Vector2d(1, 0)).write(out + stem + "_x1.csv");
   frequency_response_table(hb, c.branch, c.stable, Vector2d(0, 1)).write(out + stem + "_x2.csv");
