@@ -98,7 +98,7 @@ SweepOptions sweep_options(const Solver& s) {
 }
 
 void write_curve(const HarmonicBalance& hb, const Curve& c, const std::string& path) {
-  frequency_response_table(hb, c.branch, c.stable, VectorXd::Constant(1, 1.0)).write(path);
+  frequency_response_table(hb, c, VectorXd::Constant(1, 1.0)).write(path);
 }
 
 }  // namespace

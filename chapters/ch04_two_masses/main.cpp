@@ -105,9 +105,9 @@ SweepOptions sweep_options(const Solver& s) {
 FrequencyCurve run_case(const HarmonicBalance& hb, const Solver& s, const std::string& stem,
                         const std::string& out) {
   const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s), stem), stem);
-  frequency_response_table(hb, c.branch, c.stable, kNormal).write(out + stem + ".csv");
-  frequency_response_table(hb, c.branch, c.stable, Vector2d(1, 0)).write(out + stem + "_x1.csv");
-  frequency_response_table(hb, c.branch, c.stable, Vector2d(0, 1)).write(out + stem + "_x2.csv");
+  frequency_response_table(hb, c, kNormal).write(out + stem + ".csv");
+  frequency_response_table(hb, c, Vector2d(1, 0)).write(out + stem + "_x1.csv");
+  frequency_response_table(hb, c, Vector2d(0, 1)).write(out + stem + "_x2.csv");
   return c;
 }
 

@@ -287,7 +287,7 @@ int main(int argc, char** argv) {
       write_file_atomic(out + "params.json", P.to_json().dump(2) + "\n");
       HarmonicBalance hb = make_model(pair, load, sol.H, sol.N);
       const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), "frc"), "frc");
-      frequency_response_table(hb, c.branch, c.stable, q).write(out + "frc.csv");
+      frequency_response_table(hb, c, q).write(out + "frc.csv");
       const Classifier cls{pair, load};
       write_prediction(cls, sol, out + "prediction.csv");
       key.add("folds", double(c.branch.folds.size()), "-");
@@ -322,7 +322,7 @@ int main(int argc, char** argv) {
       const auto t0 = std::chrono::steady_clock::now();
       HarmonicBalance hb = make_model(pair, cs.load, sol.H, sol.N);
       const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), cs.label), cs.label);
-      frequency_response_table(hb, c.branch, c.stable, q).write(out + "frc_" + cs.label + ".csv");
+      frequency_response_table(hb, c, q).write(out + "frc_" + cs.label + ".csv");
       const Classifier cls{pair, cs.load};
       write_prediction(cls, sol, out + "prediction_" + cs.label + ".csv");
       // Which contact states the HB branch visits, and whether that is what the

@@ -136,8 +136,10 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
       BifurcationType type = ch.type;
       if (type == BifurcationType::fold) {
         // a fold of the branch between these points (tangent turned) or a branch point
+        // (the HB fold and the +1 crossing of the corrected orbit differ by the HB
+        // truncation error, so they may fall in neighbouring intervals)
         bool fold = false;
-        for (const auto& f : c.branch.folds) fold = fold || f.after_point == int(i) - 1;
+        for (const auto& f : c.branch.folds) fold = fold || std::abs(f.after_point - (int(i) - 1)) <= 2;
         if (!fold) type = BifurcationType::branch_point;
       }
       const auto count = ch.count;
