@@ -10,7 +10,9 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/app/tables.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 #include "test_models.hpp"
 
@@ -82,4 +84,40 @@ TEST(NlvibEx03, TimeIntegrationLeavesThePeriodOneOrbitInsideTheRegimes) {
   EXPECT_EQ(pd, 2);
   EXPECT_EQ(ns, 2);
   EXPECT_EQ(stable, 3);
+}
+
+
+TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
+  HarmonicBalance hb = test_models::nlvib_ex03(10);
+  const FrequencyCurve c = ex03(10);
+  ASSERT_TRUE(c.complete) << c.failure;
+  const std::string frc = frequency_response_table(hb, c, Eigen::Vector2d(1, 0)).to_csv();
+  EXPECT_EQ(frc.substr(0, frc.find('\n')),
+            "omega,x_max,x_min,x_rms_ac,x_h1,x_mean,stable,contact,floquet_modulus,floquet_angle,hb_orbit_error");
+  const Table bt = bifurcation_table(c);
+  EXPECT_EQ(bt.rows(), c.bifurcations.size());
+  const std::string b = bt.to_csv();
+  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus");
+  EXPECT_NE(b.find("period_doubling"), std::string::npos);
+  EXPECT_NE(b.find("neimark_sacker"), std::string::npos);
+}
+
+TEST(NlvibEx03, HillOptionAndNoStability) {
+  HarmonicBalance hb = test_models::nlvib_ex03(10);
+  SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 0.8;
+  o.direction = SweepDirection::down;
+  o.stability = StabilityMethod::none;
+  const FrequencyCurve none = sweep_frequency(hb, o, "none");
+  EXPECT_TRUE(none.floquet.empty());
+  EXPECT_TRUE(none.bifurcations.empty());
+  for (bool s : none.stable) EXPECT_TRUE(s);
+  o.stability = StabilityMethod::hill;
+  const FrequencyCurve hill = sweep_frequency(hb, o, "hill");
+  EXPECT_EQ(hill.stable, hill.hill_stable);
+  EXPECT_EQ(hill.stable, branch_stability(hb, hill.branch));
+  int unstable = 0;
+  for (bool s : hill.stable) unstable += s ? 0 : 1;
+  EXPECT_GT(unstable, 10);   // the middle branch and the regimes
 }
