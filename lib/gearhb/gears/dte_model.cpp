@@ -1,8 +1,12 @@
 #include "gearhb/gears/dte_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <stdexcept>
+
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/hb/contact.hpp"
 
 namespace gearhb {
 
@@ -45,6 +49,25 @@ Eigen::VectorXd dte_closed_contact(const DteGear& g, int H, double omega) {
     X[2 * n] = -Xn.imag();
   }
   return X;
+}
+
+Eigen::VectorXd dte_penetration(const DteGear& g, const Eigen::VectorXd& X) {
+  const int H = int(X.size() - 1) / 2;
+  return X + ste_harmonics(g, H);
+}
+
+double dte_mean_contact_force(const DteGear& g, const Eigen::VectorXd& X) {
+  const Eigen::VectorXd u = dte_penetration(g, X);
+  const int H = int(u.size() - 1) / 2;
+  const Aft aft(H, std::max(Aft::default_samples(H), 64));
+  const auto intervals = contact_intervals(u, aft.to_time(u));
+  double sum = 0.0;
+  for (const auto& [a, b] : intervals) {
+    sum += u[0] * (b - a);
+    for (int k = 1; k <= H; ++k)
+      sum += (u[2 * k - 1] * (std::sin(k * b) - std::sin(k * a)) - u[2 * k] * (std::cos(k * b) - std::cos(k * a))) / k;
+  }
+  return g.kc * sum / (2.0 * M_PI);
 }
 
 double rms_ac(const Eigen::VectorXd& c) {

@@ -48,6 +48,14 @@ HarmonicBalance dte_harmonic_balance(const DteGear& g, int H, int N = 0,
 //   X0 = (F0 - kc e0) / (k_t + kc),  X_k = -kc E_k / (k_t + kc - (k w)^2 me + i k w c).
 Eigen::VectorXd dte_closed_contact(const DteGear& g, int H, double omega);
 
+// Penetration u = x + e (coefficients, 2H+1) of a harmonic-balance solution X.
+Eigen::VectorXd dte_penetration(const DteGear& g, const Eigen::VectorXd& X);
+
+// Mean contact force over the period, (kc / 2 pi) sum_I int_I u dtheta, integrated
+// in closed form over the exact contact intervals I (hb/contact.hpp). At a
+// harmonic-balance solution it must equal F0 (the static balance, thesis §8.1).
+double dte_mean_contact_force(const DteGear& g, const Eigen::VectorXd& X);
+
 // RMS of the oscillating part of a real Fourier series: sqrt(sum_k (a_k^2 + b_k^2) / 2)
 // (thesis §8.2 prints sqrt(v'v)/length(v) for sqrt(v'v/length(v))).
 double rms_ac(const Eigen::VectorXd& coeffs);
