@@ -80,8 +80,8 @@ const std::vector<Case> kCases = {
     {"T100_H1", "69", 100, 1, false, {}},
     {"T200_H1", "69", 200, 1, false, {}},
     {"T300_H1", "69", 300, 1, false, {Measure::convergence}},
-    {"T100_H5", "70", 100, 5, false, {Measure::time_check}},
-    {"T200_H5", "70", 200, 5, false, {Measure::time_check}},
+    {"T100_H5", "70", 100, 5, true, {Measure::time_check}},
+    {"T200_H5", "70", 200, 5, true, {Measure::time_check}},
     {"T300_H5", "70", 300, 5, true, {Measure::time_check, Measure::time_history, Measure::convergence}},
     {"T300_H10", "H-convergence", 300, 10, false, {Measure::convergence}},
     {"T300_H20", "H-convergence", 300, 20, false, {Measure::convergence}},
@@ -352,6 +352,7 @@ void GearResponse::measure(Run& run, const std::string& label, const DteGear& g,
   }
   KeyNumbers& key = run.key_numbers();
   key.add("loss_bands_" + label, double(band), "-");
+  key.add("contact_loss_" + label, band > 0 ? 1.0 : 0.0, "-");
   const double f_loss = first_transition(hb, c, opens_somewhere(hb));
   if (std::isfinite(f_loss)) key.add("loss_onset_hz_" + label, hz(f_loss), "Hz");
   double peak = 0.0;
