@@ -101,7 +101,9 @@ def time_history(data_dir, fig_dir, kn, cases):
             label="x + e (mesh deflection; contact lost where < 0)")
     a1.axhline(0, color="0.5", lw=0.6)
     a1.set_ylabel("[um]")
-    a1.legend(fontsize=7.5, loc="lower right")
+    lo, hi = a1.get_ylim()
+    a1.set_ylim(lo, hi + 0.6 * (hi - lo))
+    a1.legend(fontsize=7.5, loc="upper center", ncol=2)
     a2.plot(d["t_ms"], [f / 1e3 for f in d["contact_force"]], color="k")
     F0 = cases["T300_H5"]["F0"]
     a2.axhline(F0 / 1e3, color="C1", ls=":", label="F0 = T/r = %.0f N (the mean)" % F0)
