@@ -149,7 +149,7 @@ HarmonicBalance MassAgainstWall::model(const Loading& l, const SolverSettings& s
 }
 
 FrequencyCurve MassAgainstWall::sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const {
-  FrequencyCurve c = run.timed("sweep " + label, [&] { return sweep_frequency(hb, sweep_options(sol_), label); });
+  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, sweep_options(sol_), label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;
 }
@@ -190,7 +190,7 @@ void MassAgainstWall::frequency_responses(Run& run) const {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.load, sol_);
     const FrequencyCurve c = sweep(run, hb, cs.label);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c.branch, c.stable, kX));
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kX));
     index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
@@ -295,7 +295,7 @@ void MassAgainstWall::sample_study(Run& run) const {
 void MassAgainstWall::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_);
   const FrequencyCurve c = sweep(run, hb, "own");
-  run.write("frc.csv", frequency_response_table(hb, c.branch, c.stable, kX));
+  run.write("frc.csv", frequency_response_table(hb, c, kX));
   const ResponseEvaluator ev(hb, kX);
   double peak = -INFINITY;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);

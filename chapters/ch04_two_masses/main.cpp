@@ -7,7 +7,7 @@
 //     m x1'' + c11 x1' + k x1 + Fc = F1 cos(w t)
 //     m x2'' + c22 x2' + k x2 - Fc = F2 cos(w t)        Fc = max( kc (g + x1 - x2), 0 )
 //
-// i.e. M x'' + C x' + K x + w Fc = f cos(w t) with the contact normal w = [1, -1]:
+// i.e. M x'' + C x' + K x + n Fc = f cos(w t) with the contact normal n = [1, -1]:
 // the masses touch when the relative displacement x1 - x2 exceeds -g (g < 0 a
 // clearance, g > 0 a preload), and the contact pushes mass 1 back (-x) and mass 2
 // forward (+x). Each mass is tied to ground by k; Rayleigh damping C = alpha M + beta K
@@ -104,10 +104,10 @@ SweepOptions sweep_options(const Solver& s) {
 // One case: the curve of d = x1 - x2 and of each mass, written as three tables.
 FrequencyCurve run_case(const HarmonicBalance& hb, const Solver& s, const std::string& stem,
                         const std::string& out) {
-  const FrequencyCurve c = sweep_frequency(hb, sweep_options(s), stem);
-  frequency_response_table(hb, c.branch, c.stable, kNormal).write(out + stem + ".csv");
-  frequency_response_table(hb, c.branch, c.stable, Vector2d(1, 0)).write(out + stem + "_x1.csv");
-  frequency_response_table(hb, c.branch, c.stable, Vector2d(0, 1)).write(out + stem + "_x2.csv");
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s), stem), stem);
+  frequency_response_table(hb, c, kNormal).write(out + stem + ".csv");
+  frequency_response_table(hb, c, Vector2d(1, 0)).write(out + stem + "_x1.csv");
+  frequency_response_table(hb, c, Vector2d(0, 1)).write(out + stem + "_x2.csv");
   return c;
 }
 

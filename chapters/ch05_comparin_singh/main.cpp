@@ -286,8 +286,8 @@ int main(int argc, char** argv) {
     if (P.was_set("Fm") || P.was_set("Fp") || P.was_set("gap")) {
       write_file_atomic(out + "params.json", P.to_json().dump(2) + "\n");
       HarmonicBalance hb = make_model(pair, load, sol.H, sol.N);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol), "frc");
-      frequency_response_table(hb, c.branch, c.stable, q).write(out + "frc.csv");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), "frc"), "frc");
+      frequency_response_table(hb, c, q).write(out + "frc.csv");
       const Classifier cls{pair, load};
       write_prediction(cls, sol, out + "prediction.csv");
       key.add("folds", double(c.branch.folds.size()), "-");
@@ -321,8 +321,8 @@ int main(int argc, char** argv) {
     for (const auto& cs : cases) {
       const auto t0 = std::chrono::steady_clock::now();
       HarmonicBalance hb = make_model(pair, cs.load, sol.H, sol.N);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol), cs.label);
-      frequency_response_table(hb, c.branch, c.stable, q).write(out + "frc_" + cs.label + ".csv");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), cs.label), cs.label);
+      frequency_response_table(hb, c, q).write(out + "frc_" + cs.label + ".csv");
       const Classifier cls{pair, cs.load};
       write_prediction(cls, sol, out + "prediction_" + cs.label + ".csv");
       // Which contact states the HB branch visits, and whether that is what the
@@ -389,7 +389,7 @@ int main(int argc, char** argv) {
             const Loading l{Fm, Fp, s_all[idx] - Fm / pair.k};
             HarmonicBalance hb = make_model(pair, l, sol.H, sol.N);
             const std::string label = "grid_Fm" + fmt(Fm) + "_Fp" + fmt(Fp) + "_g" + fmt(l.gap);
-            const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol), label);
+            const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), label), label);
             ResponseEvaluator ev(hb, q);
             const Classifier cls{pair, l};
             for (int j = 0; j < val.grid_omegas; ++j) {
@@ -451,7 +451,7 @@ int main(int argc, char** argv) {
     {
       const Loading l = cases[2].load;   // Fig. 26, g = -1 m: full and intermittent contact
       HarmonicBalance hb = make_model(pair, l, 1, 0);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol), "describing_function_H1");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), "describing_function_H1"), "describing_function_H1");
       const PiecewiseLinearForce f{pair.k, pair.kc, l.gap};
       const double Fa = M / pair.m1 * l.Fp;
       Table t({"omega", "dm", "dp", "contact_angle", "N_fm", "N_fp", "rel_err_static", "rel_err_dynamic",
@@ -484,7 +484,7 @@ int main(int argc, char** argv) {
     {
       const Loading l = cases[2].load;
       HarmonicBalance hb = make_model(pair, l, sol.H, sol.N);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol), "check");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol), "check"), "check");
       TimeIntegrationCheckOptions o;
       o.points = val.ti_points;
       const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, q, o);

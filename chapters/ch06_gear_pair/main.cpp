@@ -330,7 +330,7 @@ int main(int argc, char** argv) {
     // ---- Single curve: the user's own parameters ---------------------------
     if (sol.single) {
       HarmonicBalance hb = make_model(gp, load.Fi, load.Fa, sol, w0);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sol, sol.omega_min, sol.omega_max, w0), "frc");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol, sol.omega_min, sol.omega_max, w0), "frc"), "frc");
       frc_table(hb, c, floquet_stability(hb, c), T2, w0).write(out + "frc.csv");
       const ContactSummary s = summarize_contact(hb, c, T2, w0);
       key.add("transitions", s.transitions, "-");
@@ -399,8 +399,8 @@ int main(int argc, char** argv) {
         if (sol.quick) sc.H = std::min(sol.H, 3), sc.N = 0;
         if (kc != gp.kc) sc.ds_max = sol.ds_max_alt;
         HarmonicBalance hb = make_model(g, cs.Fi, cs.Fa, sc, w0);
-        const FrequencyCurve c = sweep_frequency(hb, sweep_options(sc, sol.omega_min, wmax, w0),
-                                                 "fig" + std::to_string(cs.figure) + " kc=" + kc_tag(kc));
+        const std::string label = "fig" + std::to_string(cs.figure) + " kc=" + kc_tag(kc);
+        const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sc, sol.omega_min, wmax, w0), label), label);
         const std::string stem = "fig" + std::to_string(cs.figure) + "_kc" + kc_tag(kc);
         const std::vector<bool> floq = sol.quick ? c.stable : floquet_stability(hb, c);
         long hill_only = 0;   // Hill-stable points that Floquet calls unstable
@@ -437,7 +437,7 @@ int main(int argc, char** argv) {
       ParameterSet::require(sol.omega_min <= 10000.0 && sol.omega_max >= whi,
                             "parameter 'omega_min'/'omega_max' must contain 10-20 krad/s for the time-integration check");
       HarmonicBalance hb = make_model(gp, -1e6, 1e4, sc, w0);
-      const FrequencyCurve c = sweep_frequency(hb, sweep_options(sc, 10000.0, whi, w0), "check");
+      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sc, 10000.0, whi, w0), "check"), "check");
       time_integration_check(hb, c, T2, w0, sol.quick ? 6 : sol.ti_points, out, key);
     }
 
@@ -450,7 +450,7 @@ int main(int argc, char** argv) {
         s2.N = 0;
         const auto t0 = std::chrono::steady_clock::now();
         HarmonicBalance hb = make_model(gp, -1e6, 1e4, s2, w0);
-        const FrequencyCurve c = sweep_frequency(hb, sweep_options(s2, 10000.0, 20000.0, w0), "H study");
+        const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s2, 10000.0, 20000.0, w0), "H study"), "H study");
         const ContactSummary s = summarize_contact(hb, c, T2, w0);
         t.add_row({long(H), long(c.branch.points.size()), long(c.branch.folds.size()), s.delta_max,
                    s.delta_min});

@@ -74,7 +74,7 @@ void FrequencyResponseFromFile::read_model() {
 void FrequencyResponseFromFile::natural_frequencies(Run& run) const {
   const LinearSystem& s = model_.system;
   Eigen::MatrixXd K_closed = s.K;
-  for (const auto& c : model_.contacts) K_closed += c.kc * c.w * c.w.transpose();
+  for (const auto& c : model_.contacts) K_closed += c.kc * c.normal * c.normal.transpose();
   const Modes open = modal_analysis(s.M, s.K), closed = modal_analysis(s.M, K_closed);
   Table t({"mode", "omega_open", "omega_closed"});
   for (int i = 0; i < s.dofs(); ++i) {

@@ -1,6 +1,8 @@
 // Unit tests of lib/contact: crossings, contact intervals and moments, refined
 // extremes and the contact state, each against a closed form.
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -65,4 +67,107 @@ TEST(Contact, StateOfAGrazingCrestIsDecidedByTheRefinedCrest) {
   }
   const Eigen::VectorXd full = two_harmonic(2.0, 1.0, 0.2);
   EXPECT_EQ(contact_state(full, aft.to_time(full)), ContactState::full);
+}
+
+// --- every contact interval, wherever the samples fall -------------------------
+
+namespace {
+// u = cos(m (theta - phi)) - cos(m delta), in the H = m basis: m intervals of
+// width 2 delta centred on phi + 2 pi j / m (closed form).
+Eigen::VectorXd cosine_comb(int m, double phi, double delta, int H) {
+  Eigen::VectorXd c = Eigen::VectorXd::Zero(2 * H + 1);
+  c[0] = -std::cos(m * delta);
+  c[2 * m - 1] = std::cos(m * phi);
+  c[2 * m] = std::sin(m * phi);
+  return c;
+}
+// Sorted interval centres and widths, centres reduced to [0, 2 pi).
+std::vector<std::pair<double, double>> centres_widths(const std::vector<std::pair<double, double>>& I) {
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [a, b] : I) out.emplace_back(std::fmod(0.5 * (a + b) + 4 * M_PI, 2 * M_PI), b - a);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+}  // namespace
+
+TEST(Contact, IntervalNarrowerThanTheSampleSpacingIsFound) {
+  // 32 samples (spacing 0.196 rad); contact of half-width 0.01 rad centred between
+  // samples 3 and 4: no sample is in contact, the interval must still be found.
+  const int N = 32;
+  const double dt = 2 * M_PI / N, phi = 3.5 * dt, delta = 0.01;
+  const Eigen::VectorXd c = cosine_comb(1, phi, delta, 1);
+  Aft aft(1, N);
+  const Eigen::VectorXd us = aft.to_time(c);
+  ASSERT_LT(us.maxCoeff(), 0.0);   // every sample is out of contact
+  const auto I = contact_intervals(c, us);
+  ASSERT_EQ(I.size(), 1u);
+  EXPECT_NEAR(I[0].first, phi - delta, 1e-13);
+  EXPECT_NEAR(I[0].second, phi + delta, 1e-13);
+  // and the moments carry it: mean of the indicator = 2 delta / 2 pi
+  double Sc[1], Ss[1];
+  indicator_moments(I, 0, Sc, Ss);
+  EXPECT_NEAR(Sc[0], delta / M_PI, 1e-14);
+}
+
+TEST(Contact, ResultDoesNotDependOnTheNumberOfSamples) {
+  // H = 7, seven intervals of half-width 0.02 rad: any grid from 4 to 1024 samples
+  // gives the same intervals (closed form) to round-off.
+  const int m = 7, H = 7;
+  const double phi = 0.123, delta = 0.02;
+  const Eigen::VectorXd c = cosine_comb(m, phi, delta, H);
+  for (int N : {4, 8, 30, 64, 128, 1024}) {
+    Aft aft(H, std::max(N, 4 * H + 2));
+    // seed with a coarser grid of N samples (the function accepts any grid)
+    Eigen::VectorXd us(N);
+    for (int j = 0; j < N; ++j) {
+      double v = c[0];
+      for (int k = 1; k <= H; ++k) v += c[2 * k - 1] * std::cos(k * 2 * M_PI * j / N) + c[2 * k] * std::sin(k * 2 * M_PI * j / N);
+      us[j] = v;
+    }
+    const auto cw = centres_widths(contact_intervals(c, us));
+    ASSERT_EQ(cw.size(), std::size_t(m)) << "N = " << N;
+    for (int j = 0; j < m; ++j) {
+      const double centre = std::fmod(phi + 2 * M_PI * j / m, 2 * M_PI);
+      EXPECT_NEAR(cw[std::size_t(j)].first, centre, 1e-12) << "N = " << N << ", interval " << j;
+      EXPECT_NEAR(cw[std::size_t(j)].second, 2 * delta, 1e-12) << "N = " << N;
+    }
+  }
+}
+
+TEST(Contact, ManyIntervalsPerPeriod) {
+  // u = cos(20 theta) - cos(20 * 0.05): 20 intervals of width 0.1 rad on a grid of 82 samples.
+  const int m = 20, H = 20;
+  const double delta = 0.05;
+  const Eigen::VectorXd c = cosine_comb(m, 0.0, delta, H);
+  Aft aft(H);
+  const auto I = contact_intervals(c, aft.to_time(c));
+  ASSERT_EQ(I.size(), std::size_t(m));
+  for (const auto& [a, b] : I) EXPECT_NEAR(b - a, 2 * delta, 1e-12);
+  double Sc[1], Ss[1];
+  indicator_moments(I, 0, Sc, Ss);
+  EXPECT_NEAR(Sc[0], m * 2 * delta / (2 * M_PI), 1e-12);
+}
+
+TEST(Contact, TangentialGrazeHasNoMeasureAndNearGrazeHasItsClosedFormWidth) {
+  // u = cos(theta - phi) - 1 touches zero at theta = phi only: no contact measure.
+  // u = cos(theta - phi) - cos(delta) for delta = 1e-6: interval of width 2e-6.
+  const int N = 16;
+  const double phi = 0.5 * 2 * M_PI / N;   // between samples 0 and 1
+  Aft aft(1, N);
+  {
+    const Eigen::VectorXd c = cosine_comb(1, phi, 0.0, 1);
+    const auto I = contact_intervals(c, aft.to_time(c));
+    double w = 0.0;
+    for (const auto& [a, b] : I) w += b - a;
+    EXPECT_LT(w, 1e-7);   // a touch, not an interval (round-off of cos at its crest: ~1e-8 rad)
+  }
+  {
+    const double delta = 1e-6;
+    const Eigen::VectorXd c = cosine_comb(1, phi, delta, 1);
+    const auto I = contact_intervals(c, aft.to_time(c));
+    ASSERT_EQ(I.size(), 1u);
+    // u'(theta) ~ delta near the roots, so the root error is ~ eps / delta ~ 1e-10
+    EXPECT_NEAR(I[0].second - I[0].first, 2 * delta, 1e-9);
+    EXPECT_NEAR(0.5 * (I[0].first + I[0].second), phi, 1e-9);
+  }
 }

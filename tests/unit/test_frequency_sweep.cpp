@@ -26,21 +26,49 @@ TEST(FrequencySweep, FirstGuessIsTheExactLinearSolutionWhenOneApplies) {
   }
 }
 
-TEST(FrequencySweep, IncompleteBranchIsAnErrorNamingCaseAndFrequency) {
+TEST(FrequencySweep, IncompleteBranchKeepsItsPointsAndNamesCaseAndFrequency) {
   HarmonicBalance hb = test_models::mass_wall(-0.6, 5);
   SweepOptions o;
   o.omega_min = 0.5;
   o.omega_max = 2.0;
   o.continuation.max_steps = 5;   // far too few to cross the range
+  const FrequencyCurve c = sweep_frequency(hb, o, "my_case");
+  EXPECT_FALSE(c.complete);
+  EXPECT_EQ(c.branch.points.size(), 6u);   // the first point and the five steps
+  EXPECT_EQ(c.stable.size(), c.branch.points.size());
+  for (const std::string& part : {"my_case", "step cap", "omega =", "residual", "step", "hint"})
+    EXPECT_NE(c.failure.find(part), std::string::npos) << part << " not in: " << c.failure;
+  // callers that need the whole range get an error with the same information
   try {
-    sweep_frequency(hb, o, "my_case");
+    require_complete(c, "my_case");
     FAIL() << "expected an exception";
   } catch (const std::runtime_error& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("my_case"), std::string::npos) << m;
-    EXPECT_NE(m.find("step cap"), std::string::npos) << m;
-    EXPECT_NE(m.find("omega ="), std::string::npos) << m;
+    EXPECT_EQ(std::string(e.what()), c.failure);
   }
+}
+
+TEST(FrequencySweep, DownwardSweepFindsTheSameFoldsAndReportsProgress) {
+  HarmonicBalance hb = test_models::mass_wall(-0.6, 7);
+  SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 2.0;
+  const FrequencyCurve up = sweep_frequency(hb, o, "up");
+  o.direction = SweepDirection::down;
+  std::vector<ContinuationProgress> seen;
+  o.continuation.progress = [&](const ContinuationProgress& p) { seen.push_back(p); };
+  const FrequencyCurve down = sweep_frequency(hb, o, "down");
+  ASSERT_TRUE(up.complete && down.complete);
+  EXPECT_DOUBLE_EQ(down.branch.points.front().omega, 2.0);
+  EXPECT_DOUBLE_EQ(down.branch.points.back().omega, 0.5);
+  ASSERT_EQ(up.branch.folds.size(), 2u);
+  ASSERT_EQ(down.branch.folds.size(), 2u);
+  // the same two folds, met in the opposite order (both located to round-off)
+  EXPECT_NEAR(up.branch.folds[0].omega, down.branch.folds[1].omega, 1e-8);
+  EXPECT_NEAR(up.branch.folds[1].omega, down.branch.folds[0].omega, 1e-8);
+  // one progress report per accepted point, in order (the end point is a Newton
+  // re-solve of the last accepted step and is not reported separately)
+  ASSERT_GE(seen.size(), down.branch.points.size() - 1);
+  for (std::size_t i = 0; i < seen.size(); ++i) EXPECT_EQ(seen[i].point, int(i));
 }
 
 TEST(FrequencySweep, TimeIntegrationCheckPicksStableIntermittentPointsAwayFromFolds) {

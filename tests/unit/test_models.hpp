@@ -18,3 +18,27 @@ inline gearhb::HarmonicBalance mass_wall(double gap, int H, double F0 = 0.0, dou
 }
 
 }  // namespace test_models
+
+namespace test_models {
+
+// NLvib example 03 (Krack & Gross, "Harmonic Balance for Nonlinear Vibration
+// Problems", Springer 2019, and the NLvib toolbox): two unit masses in a chain,
+// ChainOfOscillators with ki = [k1 k2 k3] = [0 1 1] (k1 ground-mass 1, k2 mass 1-mass 2,
+// k3 mass 2-ground): K = [[k1+k2, -k2], [-k2, k2+k3]] = [[1, -1], [-1, 2]], D = 0.03 K,
+// force 0.1 cos(omega t) on DOF 2, unilateral spring 100 max(x1 - 1, 0) on DOF 1.
+inline gearhb::HarmonicBalance nlvib_ex03(int H, int N = 0) {
+  using Eigen::MatrixXd;
+  using Eigen::VectorXd;
+  MatrixXd K(2, 2);
+  K << 1, -1, -1, 2;
+  gearhb::LinearSystem s{MatrixXd::Identity(2, 2), 0.03 * K, K};
+  VectorXd e1 = VectorXd::Zero(2);
+  e1[0] = 1.0;
+  gearhb::UnilateralContact c{e1, 100.0, -1.0, {}};
+  VectorXd fc = VectorXd::Zero(2);
+  fc[1] = 0.1;
+  gearhb::Excitation f{VectorXd::Zero(2), fc, VectorXd::Zero(2)};
+  return gearhb::HarmonicBalance(s, {c}, f, H, N);
+}
+
+}  // namespace test_models

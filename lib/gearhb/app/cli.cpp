@@ -40,12 +40,18 @@ void ParameterSet::group(const std::string& title, bool own_case) {
 
 void ParameterSet::add(const std::string& name, double* value, const std::string& unit,
                        const std::string& help, Range range) {
-  entries_.push_back({name, unit, help, value, nullptr, *value, range, group_, group_own_});
+  entries_.push_back({name, unit, help, value, nullptr, nullptr, *value, "", range, group_, group_own_});
 }
 
 void ParameterSet::add(const std::string& name, int* value, const std::string& unit,
                        const std::string& help, Range range) {
-  entries_.push_back({name, unit, help, nullptr, value, double(*value), range, group_, group_own_});
+  entries_.push_back({name, unit, help, nullptr, value, nullptr, double(*value), "", range, group_, group_own_});
+}
+
+void ParameterSet::add(const std::string& name, std::string* value, const std::string& unit,
+                       const std::string& help) {
+  Entry e{name, unit, help, nullptr, nullptr, value, 0.0, *value, Range::any(), group_, group_own_};
+  entries_.push_back(e);
 }
 
 std::vector<std::string> ParameterSet::overridden_own_case() const {
@@ -97,6 +103,11 @@ void ParameterSet::set(const std::string& assignment) {
     return;
   }
   if (!e) throw UsageError("unknown parameter '" + key + "' (see --help)");
+  if (e->s) {
+    *e->s = text;
+    overridden_.push_back(key);
+    return;
+  }
   const double v = parse_decimal(text, "parameter '" + key + "'");
   if (e->i) {
     if (v != std::floor(v) || std::fabs(v) > 2e9)
@@ -110,6 +121,7 @@ void ParameterSet::set(const std::string& assignment) {
 
 void ParameterSet::validate() const {
   for (const auto& e : entries_) {
+    if (e.s) continue;   // strings are checked by the chapter
     const double v = e.d ? *e.d : double(*e.i);
     const std::string why = e.range.violation(v);
     if (!why.empty()) {
@@ -136,7 +148,8 @@ std::string ParameterSet::help_text() const {
   std::vector<std::string> defaults;
   for (const auto& e : entries_) {
     std::ostringstream def;
-    def << e.default_value;
+    if (e.s) def << (e.default_text.empty() ? "\"\"" : e.default_text);
+    else def << e.default_value;
     defaults.push_back(def.str());
     wn = std::max(wn, e.name.size());
     wd = std::max(wd, defaults.back().size());
@@ -175,7 +188,8 @@ std::string ParameterSet::help_text() const {
 nlohmann::json ParameterSet::to_json() const {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& e : entries_) {
-    if (e.d) j[e.name] = {{"value", *e.d}, {"unit", e.unit}};
+    if (e.s) j[e.name] = {{"value", *e.s}, {"unit", e.unit}};
+    else if (e.d) j[e.name] = {{"value", *e.d}, {"unit", e.unit}};
     else j[e.name] = {{"value", *e.i}, {"unit", e.unit}};
   }
   return j;

@@ -46,6 +46,10 @@ class ParameterSet {
            const std::string& help, Range range = Range::any());
   void add(const std::string& name, int* value, const std::string& unit,
            const std::string& help, Range range = Range::any());
+  // Bind a string (e.g. a file path): any text is accepted by --set, empty
+  // included; checking it (does the file exist, is it valid) is the chapter's
+  // cross-parameter check.
+  void add(const std::string& name, std::string* value, const std::string& unit, const std::string& help);
 
   // Parameters added after this call are listed under `title` in --help. An
   // own-case group holds the parameters of the user's own case (--case own):
@@ -77,7 +81,9 @@ class ParameterSet {
     std::string name, unit, help;
     double* d = nullptr;
     int* i = nullptr;
+    std::string* s = nullptr;
     double default_value = 0.0;
+    std::string default_text;
     Range range;
     std::string group;
     bool own_case = false;

@@ -182,7 +182,7 @@ ModelFile read_model_file(const std::string& path,
     const std::string key = "contacts." + std::to_string(i);
     only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file"});
     UnilateralContact c;
-    c.w = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
+    c.normal = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
     c.kc = number(contacts[i].value("kc", json()), path, key + ".kc");
     if (c.kc < 0) fail(path, key + ".kc", "must be >= 0");
     c.gap = number(contacts[i].value("gap", json(0.0)), path, key + ".gap");

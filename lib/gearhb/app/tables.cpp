@@ -1,10 +1,17 @@
 #include "gearhb/app/tables.hpp"
 
+#include <cmath>
+#include <complex>
 #include <string>
 
 #include "gearhb/hb/response.hpp"
 
 namespace gearhb {
+
+namespace {
+// A number, or an empty cell ("none") when it was not computed.
+Table::Cell cell(bool computed, double v) { return computed ? Table::Cell(v) : Table::Cell(std::string()); }
+}  // namespace
 
 Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
                                const std::vector<bool>& stable, const Eigen::VectorXd& q) {
@@ -38,7 +45,25 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
     }
     t.add_row(std::move(row));
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q) {
+  ResponseEvaluator ev(hb, q);
+  Table t({"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact", "floquet_modulus",
+           "floquet_angle", "hb_orbit_error"});
+  const auto& P = c.branch.points;
+  const bool fl = c.floquet.size() == P.size();
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const auto r = ev.summarize(P[i].X);
+    t.add_row({P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+               std::string(to_string(r.contact)), cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
+               cell(fl, fl ? c.floquet[i].orbit_error : 0.0)});
   }
+  return t;
+}
+
+Table bifurcation_table(const FrequencyCurve& c) {
+  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus"});
+  for (const auto& b : c.bifurcations)
+    t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier)});
   return t;
 }
 

@@ -23,6 +23,14 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
 // x_h1, x_mean, stable, contact), then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n.
 Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
                          const Eigen::VectorXd& output);
+// The same for a whole frequency curve, with three more columns after those:
+// floquet_modulus, floquet_angle (the critical multiplier |mu|, arg mu) and
+// hb_orbit_error (max |x_HB - x_exact| over the period, floquet.hpp); NaN when the
+// curve was not computed with Floquet stability.
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
+
+// The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus.
+Table bifurcation_table(const FrequencyCurve& c);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);

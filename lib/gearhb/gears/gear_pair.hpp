@@ -16,8 +16,8 @@
 //
 // and while the teeth stay in contact the stiffness is K + Kc with
 // Kc = -T1 kc T2 = kc T2' T2 (symmetric, rank one). In the library's contact
-// convention (harmonic_balance.hpp: + w max(kc (g + w'x), 0) on the left) this
-// is UnilateralContact{w = T2', kc, gap = 0}.
+// convention (harmonic_balance.hpp: + n max(kc (g + n'x), 0) on the left) this
+// is UnilateralContact{normal = T2', kc, gap = 0}.
 #include <Eigen/Dense>
 
 #include "gearhb/hb/contact.hpp"
@@ -47,7 +47,7 @@ Eigen::MatrixXd gear_pair_support_stiffness(const GearPairParameters& p);
 Eigen::MatrixXd gear_pair_mesh_stiffness(const GearPairParameters& p);
 // {M, C, K} with K the support stiffness only (the mesh is the contact).
 LinearSystem gear_pair_system(const GearPairParameters& p);
-// The mesh as a unilateral contact: w = T2', kc, gap 0.
+// The mesh as a unilateral contact: normal = T2', kc, gap 0.
 UnilateralContact gear_pair_mesh(const GearPairParameters& p);
 // Static torque pair F0 = [0, 0, Fi, 0, 0, -Fi rb2/rb1] (power-conserving).
 Eigen::VectorXd gear_pair_static_torque(const GearPairParameters& p, double Fi);

@@ -102,26 +102,75 @@ ContactState contact_state(const Eigen::VectorXd& uc, const Eigen::VectorXd& us)
   return lo > 0.0 ? ContactState::full : ContactState::intermittent;
 }
 
+namespace {
+
+// Bounds on |u'| and |u''| over the period: sum k (|a_k| + |b_k|) and sum k^2 (|a_k| + |b_k|).
+double derivative_bound(const Eigen::VectorXd& c, int order) {
+  const int H = int(c.size() - 1) / 2;
+  double b = 0.0;
+  for (int k = 1; k <= H; ++k) b += std::pow(double(k), order) * (std::fabs(c[2 * k - 1]) + std::fabs(c[2 * k]));
+  return b;
+}
+
+// Every sign change of u on [a, b] (ua = u(a), ub = u(b); "positive" means u > 0),
+// appended to `out` as (theta, entering). Rigorous with the bound L2 >= |u''|:
+//  - same sign at both ends: u deviates from the chord by at most L2 h^2 / 8, so if
+//    the chord stays that far from zero there is no root; otherwise split;
+//  - different signs: u' differs from the chord slope by at most L2 h, so if the
+//    slope is larger than that u is monotonic and has exactly one root (Brent);
+//    otherwise split.
+// Intervals narrower than `hmin` are not split further (what is lost there has
+// measure below hmin: a contact or a gap of width < hmin, i.e. a grazing touch).
+void scan_roots(const Eigen::VectorXd& uc, double L2, double a, double ua, double b, double ub,
+                double hmin, std::vector<std::pair<double, bool>>& out) {
+  const double h = b - a;
+  const bool pa = ua > 0.0, pb = ub > 0.0;
+  const double bow = 0.125 * L2 * h * h;
+  if (pa == pb) {
+    if (pa ? std::min(ua, ub) - bow > 0.0 : std::max(ua, ub) + bow <= 0.0) return;
+  } else if (std::fabs(ub - ua) > L2 * h * h) {
+    out.emplace_back(crossing(uc, a, b), pb);
+    return;
+  }
+  if (h < hmin) {
+    if (pa != pb) out.emplace_back(crossing(uc, a, b), pb);
+    return;
+  }
+  const double m = 0.5 * (a + b), um = trig_poly(m, const_cast<Eigen::VectorXd*>(&uc));
+  scan_roots(uc, L2, a, ua, m, um, hmin, out);
+  scan_roots(uc, L2, m, um, b, ub, hmin, out);
+}
+
+}  // namespace
+
 std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
                                                          const Eigen::VectorXd& us) {
   const int N = int(us.size());
   const double dt = 2.0 * M_PI / N;
-  int j0 = -1;
-  for (int j = 0; j < N; ++j)
-    if (!(us[j] > 0.0)) { j0 = j; break; }
-  if (j0 < 0) return {{0.0, 2.0 * M_PI}};        // every sample in contact
+  const double L2 = derivative_bound(uc, 2);
+  std::vector<std::pair<double, bool>> x;   // crossings (theta in [0, 2 pi), entering)
+  for (int j = 0; j < N; ++j) scan_roots(uc, L2, j * dt, us[j], (j + 1) * dt, us[(j + 1) % N], 1e-12, x);
+  if (x.empty()) {
+    if (us[0] > 0.0) return {{0.0, 2.0 * M_PI}};   // u > 0 everywhere (proved by the scan)
+    return {};
+  }
+  // Crossings alternate in direction; start at the first entering one.
+  std::size_t first = 0;
+  while (first < x.size() && !x[first].second) ++first;
   std::vector<std::pair<double, double>> out;
-  double start = 0.0;
-  bool in = false;
-  for (int i = 0; i < N; ++i) {
-    const int j = j0 + i;                         // unwrapped index; theta = j dt
-    const bool now = us[j % N] > 0.0, next = us[(j + 1) % N] > 0.0;
-    if (!now && next) {
-      start = crossing(uc, j * dt, (j + 1) * dt);
-      in = true;
-    } else if (now && !next && in) {
-      out.emplace_back(start, crossing(uc, j * dt, (j + 1) * dt));
-      in = false;
+  if (first == x.size()) return out;   // (cannot happen for a periodic u)
+  const std::size_t n = x.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    const auto& e = x[(first + i) % n];
+    if (!e.second) continue;
+    // the next exiting crossing after it, unwrapped past 2 pi if needed
+    for (std::size_t k = 1; k <= n; ++k) {
+      const std::size_t idx = (first + i + k) % n;
+      if (x[idx].second) continue;
+      double end = x[idx].first;
+      if (end <= e.first) end += 2.0 * M_PI;
+      out.emplace_back(e.first, end);
+      break;
     }
   }
   return out;

@@ -1,11 +1,12 @@
 #pragma once
 // Unilateral contact law (thesis §2.3, §3; SPEC §3):
 //
-//     F_c = max( k_c (g + v), 0 ),     v = w' x  (relative displacement along the normal)
+//     F_c = max( k_c (g + v), 0 ),     v = n' x  (relative displacement along the normal n)
 //
 // g > 0 is a preload (bodies pressed together at x = 0), g < 0 a gap. The force
-// F_c acts on the structure as  -w F_c  (it pushes the DOFs along -w), so the
-// equation of motion reads  M x'' + C x' + K x + w F_c = f(t).
+// F_c acts on the structure as  -n F_c  (it pushes the DOFs along -n), so the
+// equation of motion reads  M x'' + C x' + K x + n F_c = f(t)
+// (n is the member `normal`).
 // The gap may also vary periodically with the forcing phase (e.g. a
 // transmission error): g(theta) = g + sum_k (gc_k cos k theta + gs_k sin k theta).
 #include <Eigen/Dense>
@@ -13,7 +14,7 @@
 namespace gearhb {
 
 struct UnilateralContact {
-  Eigen::VectorXd w;       // contact normal over the DOFs (v = w' x)
+  Eigen::VectorXd normal;  // contact normal over the DOFs (v = normal' x)
   double kc = 0.0;         // contact stiffness [N/m]
   double gap = 0.0;        // g: > 0 preload, < 0 clearance [m]
   // Optional periodic part of the gap, real Fourier coefficients [0, a1, b1, ...]
@@ -39,8 +40,12 @@ const char* to_string(ContactState s);
 // size shrinks only slowly with N (ch. 3 sample study). Because u(theta) is a
 // trigonometric polynomial and the law is linear inside contact, the projection
 // can be done exactly instead:
-//   1. locate the crossings u(theta) = 0 (bracketed by the N samples, refined
-//      with GSL's Brent solver on the trigonometric polynomial);
+//   1. locate every crossing u(theta) = 0: the N samples are only a starting
+//      grid; with the bound |u''| <= sum k^2 (|a_k| + |b_k|) each grid interval is
+//      proved root-free, or proved to hold exactly one (monotonic) root, or split
+//      in two, so a contact interval between two samples (a narrow graze) is found
+//      too and the result does not depend on N; each root is refined with GSL's
+//      Brent solver on the trigonometric polynomial;
 //   2. the force coefficients are  F = kc P uc  and the Jacobian  dF/duc = kc P,
 //      P = product matrix (fourier.hpp) of the contact indicator, whose moments
 //      <1_I cos m theta>, <1_I sin m theta> over the contact intervals I are
@@ -53,7 +58,9 @@ namespace gearhb {
 
 // Contact intervals [a, b] (b > a, angles in radians, may extend past 2 pi) where
 // u(theta) > 0, for u with real Fourier coefficients `uc` sampled as `us` on the
-// uniform grid of `us.size()` points. Full contact gives {[0, 2 pi]}.
+// uniform grid of `us.size()` points (any N >= 1: the grid only seeds the search,
+// every interval between two samples is found, see above). Full contact gives
+// {[0, 2 pi]}; a touch narrower than 1e-12 rad (a tangential graze) counts as none.
 std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& uc,
                                                          const Eigen::VectorXd& us);
 

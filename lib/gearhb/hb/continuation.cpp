@@ -1,5 +1,6 @@
 #include "gearhb/hb/continuation.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -137,6 +138,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     return b;
   }
   b.points.push_back({X, opt.omega_start, nr.iterations, nr.residual, 0.0, t[n]});
+  if (opt.progress) opt.progress({0, opt.omega_start, 0.0});
 
   const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
   double ds = opt.ds_initial;
@@ -201,10 +203,16 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
       return b;
     }
     b.points.push_back(pt);
+    if (opt.progress) opt.progress({int(b.points.size()) - 1, w_new, ds});
+    const double turn = std::acos(std::clamp(tn.dot(t), -1.0, 1.0)) * 180.0 / M_PI;
     y = yn;
     t = tn;
-    if (iters <= 3) ds = std::min(ds * 1.5, opt.ds_max);
-    else if (iters >= 7) ds = std::max(ds * 0.7, opt.ds_min);
+    double next = ds;
+    if (iters <= 3) next = ds * 1.5;
+    else if (iters >= 7) next = ds * 0.7;
+    if (opt.target_turn_deg > 0.0)
+      next = std::min(next, ds * std::clamp(opt.target_turn_deg / std::max(turn, 1e-12), 0.5, 2.0));
+    ds = std::clamp(next, opt.ds_min, opt.ds_max);
   }
 }
 
@@ -255,6 +263,38 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
     (state(S.X(y)) == sa ? lo : hi) = mid;
   }
   return w;
+}
+
+BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
+                                const Scaling& s,
+                                const std::function<int(const Eigen::VectorXd&, double)>& state,
+                                double tol, double corrector_tolerance) {
+  const int sa = state(a.X, a.omega);
+  if (sa == state(b.X, b.omega))
+    throw std::invalid_argument("locate_state_change: no change of state between the points");
+  Scaled S(p, s);
+  const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
+  const Eigen::VectorXd normal = (yb - ya).normalized();
+  double lo = 0.0, hi = 1.0;
+  BranchPoint found = b;
+  while (hi - lo > tol) {
+    const double mid = 0.5 * (lo + hi);
+    Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
+    int iters = 0;
+    double res = 0.0;
+    if (!correct(S, y, normal, 30, corrector_tolerance, iters, res))
+      throw std::runtime_error("locate_state_change: corrector failed near omega = " +
+                               std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
+    const Eigen::VectorXd X = S.X(y);
+    const double w = S.omega(y);
+    if (state(X, w) == sa) {
+      lo = mid;
+    } else {
+      hi = mid;
+      found = {X, w, iters, res, 0.0, 0.0};
+    }
+  }
+  return found;
 }
 
 }  // namespace gearhb

@@ -29,6 +29,13 @@
 
 namespace gearhb {
 
+// Reported to ContinuationOptions::progress after every accepted point.
+struct ContinuationProgress {
+  int point = 0;        // index of the accepted point in Branch::points
+  double omega = 0.0;   // its omega
+  double ds = 0.0;      // the (scaled) arc-length step that led to it
+};
+
 struct ContinuationOptions {
   double omega_start = 0.0, omega_end = 1.0;   // sweep direction = sign(end - start)
   double ds_initial = 0.01;   // scaled arc length
@@ -39,6 +46,12 @@ struct ContinuationOptions {
   int corrector_max_iterations = 12;
   double tolerance = 1e-10;   // Newton tolerance (scaled residual and step)
   int natural_points = 400;   // natural continuation only: number of omega steps
+  // Curvature step control (off at 0): after each accepted step, ds is scaled by
+  // target_turn_deg / (angle between the two tangents), within [0.5, 2] and ds_max,
+  // so the points crowd where the curve bends and spread where it is straight.
+  double target_turn_deg = 0.0;
+  // Called after every accepted point (e.g. to show progress); the numerics never print.
+  std::function<void(const ContinuationProgress&)> progress;
 };
 
 struct BranchPoint {
@@ -88,5 +101,15 @@ Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X
 double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                          const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
                          double tol = 1e-11);
+
+// The same bisection for a state that depends on (X, omega) (e.g. the number of
+// Floquet multipliers outside the unit circle): returns the converged point on the
+// branch at the change (X, omega), the first one whose state differs from a's, to a
+// chord fraction below `tol` (scaled). `corrector_tolerance` is the Newton tolerance
+// of the corrector. Throws if a corrector fails.
+BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
+                                const Scaling& s,
+                                const std::function<int(const Eigen::VectorXd&, double)>& state,
+                                double tol = 1e-9, double corrector_tolerance = 1e-10);
 
 }  // namespace gearhb

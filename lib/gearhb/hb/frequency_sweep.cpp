@@ -1,5 +1,6 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -20,21 +21,148 @@ Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega) {
   return R.norm() < r_open ? closed : best;
 }
 
+const char* to_string(BifurcationType t) {
+  switch (t) {
+    case BifurcationType::fold: return "fold";
+    case BifurcationType::branch_point: return "branch_point";
+    case BifurcationType::period_doubling: return "period_doubling";
+    case BifurcationType::neimark_sacker: return "neimark_sacker";
+  }
+  return "?";
+}
+
+FrequencyCurve require_complete(FrequencyCurve c, const std::string& label) {
+  if (!c.complete && !c.natural)
+    throw std::runtime_error(c.failure.empty() ? "case " + label + ": incomplete branch" : c.failure);
+  return c;
+}
+
+namespace {
+
+// A multiplier is real when Eigen's real Schur form returns it with no imaginary
+// part (complex pairs of a real matrix come with |Im| well above round-off unless
+// they are about to split on the real axis).
+bool is_real(std::complex<double> m) { return std::fabs(m.imag()) <= 1e-12 * std::max(1.0, std::abs(m)); }
+
+PointFloquet point_floquet(const FloquetResult& r) {
+  PointFloquet p;
+  p.modulus = r.modulus;
+  p.angle = r.angle;
+  p.orbit_error = r.orbit_error;
+  p.corrected = r.corrected;
+  for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
+    const auto m = r.multipliers[i];
+    if (!(std::abs(m) > 1.0)) continue;
+    if (!is_real(m)) ++p.outside_complex;
+    else if (m.real() > 0) ++p.outside_real_positive;
+    else ++p.outside_real_negative;
+  }
+  return p;
+}
+
+// The multiplier of `type` nearest the unit circle.
+std::complex<double> critical_of(const FloquetResult& r, BifurcationType type) {
+  std::complex<double> best(NAN, NAN);
+  double d = INFINITY;
+  for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
+    const auto m = r.multipliers[i];
+    const bool ok = type == BifurcationType::neimark_sacker ? !is_real(m)
+                    : type == BifurcationType::period_doubling ? (is_real(m) && m.real() < 0)
+                                                               : (is_real(m) && m.real() > 0);
+    if (ok && std::fabs(std::abs(m) - 1.0) < d) {
+      d = std::fabs(std::abs(m) - 1.0);
+      best = m;
+    }
+  }
+  return best;
+}
+
+std::string failure_report(const HarmonicBalance& hb, const Branch& b) {
+  std::ostringstream os;
+  os << b.summary();
+  if (!b.failures.empty()) {
+    double kc = 0.0;
+    for (const auto& ct : hb.contacts()) kc = std::max(kc, ct.kc);
+    const auto& f = b.failures.back();
+    os << " [stopped at omega = " << f.omega << ", residual " << f.residual << ", step " << f.ds
+       << "; hint: the corrector fails where the solution is poorly resolved - H = " << hb.harmonics()
+       << " may be too small for this contact stiffness (kc = " << kc
+       << "), or lower ds_min / raise corrector_max_iterations]";
+  }
+  return os.str();
+}
+
+}  // namespace
+
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label) {
   ContinuationOptions co = opt.continuation;
-  co.omega_start = opt.omega_min;
-  co.omega_end = opt.omega_max;
+  const bool up = opt.direction == SweepDirection::up;
+  co.omega_start = up ? opt.omega_min : opt.omega_max;
+  co.omega_end = up ? opt.omega_max : opt.omega_min;
   FrequencyCurve c;
+  c.natural = opt.natural;
+  c.stability = opt.stability;
   c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
-  const Eigen::VectorXd X0 = linear_first_guess(hb, opt.omega_min);
+  const Eigen::VectorXd X0 = linear_first_guess(hb, co.omega_start);
   c.branch = opt.natural ? natural_continuation(hb, X0, c.scaling, co)
                          : arc_length_continuation(hb, X0, c.scaling, co);
-  if (!c.branch.complete && !opt.natural)
-    throw std::runtime_error("case " + label + ": " + c.branch.summary());
-  // A natural branch that stopped at a fold is returned as it is (complete = false);
-  // the caller reports it.
-  c.stable = branch_stability(hb, c.branch);
+  c.complete = c.branch.complete;
+  if (!c.complete) c.failure = "case " + label + ": " + failure_report(hb, c.branch);
+  const auto& P = c.branch.points;
+  if (opt.stability == StabilityMethod::hill || opt.hill_cross_check) c.hill_stable = branch_stability(hb, c.branch);
+  if (opt.stability == StabilityMethod::hill) c.stable = c.hill_stable;
+  if (opt.stability == StabilityMethod::none) c.stable.assign(P.size(), true);
+  if (opt.stability != StabilityMethod::floquet) return c;
+
+  const double xs = c.scaling.x[0];
+  std::vector<FloquetResult> fr;
+  fr.reserve(P.size());
+  for (const auto& p : P) {
+    fr.push_back(floquet_of_hb_orbit(hb, p.X, p.omega, xs, opt.floquet));
+    c.floquet.push_back(point_floquet(fr.back()));
+    c.stable.push_back(fr.back().stable);
+  }
+  if (!opt.locate_bifurcations || opt.natural) return c;
+  // Bifurcations between consecutive points.
+  for (std::size_t i = 1; i < P.size(); ++i) {
+    const PointFloquet &a = c.floquet[i - 1], &b = c.floquet[i];
+    struct Change { BifurcationType type; int PointFloquet::*count; };
+    const Change changes[] = {{BifurcationType::period_doubling, &PointFloquet::outside_real_negative},
+                              {BifurcationType::neimark_sacker, &PointFloquet::outside_complex},
+                              {BifurcationType::fold, &PointFloquet::outside_real_positive}};
+    for (const auto& ch : changes) {
+      if (a.*ch.count == b.*ch.count) continue;
+      BifurcationType type = ch.type;
+      if (type == BifurcationType::fold) {
+        // a fold of the branch between these points (tangent turned) or a branch point
+        // (the HB fold and the +1 crossing of the corrected orbit differ by the HB
+        // truncation error, so they may fall in neighbouring intervals)
+        bool fold = false;
+        for (const auto& f : c.branch.folds) fold = fold || std::abs(f.after_point - (int(i) - 1)) <= 2;
+        if (!fold) type = BifurcationType::branch_point;
+      }
+      const auto count = ch.count;
+      auto state = [&hb, &opt, xs, count](const Eigen::VectorXd& X, double w) {
+        return point_floquet(floquet_of_hb_orbit(hb, X, w, xs, opt.floquet)).*count;
+      };
+      Bifurcation bf;
+      bf.type = type;
+      bf.after_point = int(i) - 1;
+      try {
+        const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, co.tolerance);
+        bf.omega = at.omega;
+        bf.multiplier = critical_of(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), type);
+      } catch (const std::exception&) {
+        // corrector failure on the chord (rare): the located fold, or the nearer point
+        bf.omega = P[i].omega;
+        bf.multiplier = critical_of(fr[i], type);
+        for (const auto& f : c.branch.folds)
+          if (f.after_point == int(i) - 1) bf.omega = f.omega;
+      }
+      c.bifurcations.push_back(bf);
+    }
+  }
   return c;
 }
 

@@ -1,15 +1,22 @@
 #pragma once
 // A frequency sweep as every chapter runs it (thesis ch. 3-6, 8-9): the
 // continuation of one harmonic-balance model over [omega_min, omega_max],
-// Hill stability of every point, the frequencies where the contact state
+// the stability of every point (Floquet multipliers of the corrected orbit by
+// default, floquet.hpp; Hill's method as an option and a cross-check), the
+// bifurcations along the branch, the frequencies where the contact state
 // changes, and the independent check against direct time integration.
 //
 //  - sweep_frequency: pseudo-arc-length continuation (or natural continuation
-//    for teaching) from the better of the open- and closed-contact linear
-//    solutions at omega_min. An incomplete arc-length branch is an error that
-//    names the case, the frequency, the residual and the step (never a
-//    silently truncated curve); a natural branch stops at its first fold, as
-//    the method does, and the stop is reported.
+//    for teaching), upward from omega_min or downward from omega_max, from the
+//    better of the open- and closed-contact linear solutions there. It returns
+//    the points it has: an incomplete branch has complete = false and a
+//    `failure` that names the case, the frequency, the residual, the step and a
+//    hint; callers that need the whole range call require_complete.
+//  - bifurcations (Floquet stability): between consecutive points where the
+//    number of multipliers outside the unit circle changes, the change is
+//    located by bisection on the chord with the corrector and classified: a real
+//    multiplier through +1 (fold; branch point if the tangent does not turn),
+//    through -1 (period doubling), a complex pair (Neimark-Sacker).
 //  - first_transition: the first frequency along the branch where a contact
 //    predicate switches on, refined by bisection on the branch.
 //  - compare_with_time_integration: x_max of a coordinate q' x from harmonic
@@ -22,28 +29,68 @@
 
 #include <Eigen/Dense>
 
+#include <complex>
+
 #include "gearhb/hb/continuation.hpp"
+#include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
 
+enum class SweepDirection { up, down };
+enum class StabilityMethod { floquet, hill, none };
+
 struct SweepOptions {
-  double omega_min = 0.0, omega_max = 1.0;   // [rad/s]; the sweep runs upward
+  double omega_min = 0.0, omega_max = 1.0;   // [rad/s]
+  SweepDirection direction = SweepDirection::up;   // up: from omega_min; down: from omega_max
   bool natural = false;                      // natural continuation (stops at a fold)
+  StabilityMethod stability = StabilityMethod::floquet;
+  bool hill_cross_check = false;             // also Hill at every point (FrequencyCurve::hill_stable)
+  bool locate_bifurcations = true;           // Floquet only
+  FloquetOptions floquet;
   ContinuationOptions continuation;          // omega_start / omega_end are overwritten
+};
+
+enum class BifurcationType { fold, branch_point, period_doubling, neimark_sacker };
+const char* to_string(BifurcationType t);
+
+struct Bifurcation {
+  BifurcationType type = BifurcationType::fold;
+  double omega = 0.0;
+  std::complex<double> multiplier;   // the critical multiplier at the located point
+  int after_point = 0;               // between points after_point and after_point + 1
+};
+
+// Floquet data of one point (the stable flag is FrequencyCurve::stable).
+struct PointFloquet {
+  double modulus = 0.0, angle = 0.0;   // critical multiplier: |mu|, arg(mu)
+  double orbit_error = 0.0;            // max |x_HB - x_exact| over the period (floquet.hpp)
+  bool corrected = false;              // shooting correction converged
+  int outside_real_positive = 0, outside_real_negative = 0, outside_complex = 0;
 };
 
 struct FrequencyCurve {
   Branch branch;
-  std::vector<bool> stable;   // Hill, one flag per point
-  Scaling scaling;            // the scaling the branch was computed with
+  std::vector<bool> stable;      // one flag per point (the `stability` method; all true for none)
+  StabilityMethod stability = StabilityMethod::floquet;
+  std::vector<PointFloquet> floquet;   // per point, Floquet method only
+  std::vector<bool> hill_stable;       // per point, Hill method or hill_cross_check
+  std::vector<Bifurcation> bifurcations;   // Floquet only, in continuation order
+  Scaling scaling;               // the scaling the branch was computed with
+  bool natural = false;
+  bool complete = false;         // the branch reached the end of the range
+  std::string failure;           // why not (omega, residual, step, hint); empty if complete
 };
+
+// Throws std::runtime_error("case <label>: <failure>") for an incomplete
+// arc-length branch (a natural branch that stopped at a fold is returned as it is).
+FrequencyCurve require_complete(FrequencyCurve c, const std::string& label);
 
 // Linear first guess at omega: the open- or closed-contact solution, whichever
 // has the smaller residual.
 Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
 
-// Continue `hb` over the range; `label` names the case in error messages.
+// Continue `hb` over the range; `label` names the case in the failure report.
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label);
 

@@ -20,7 +20,7 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
   vec(f_.fc, "fc");
   vec(f_.fs, "fs");
   for (auto& c : contacts_) {
-    if (c.w.size() != n_) throw std::invalid_argument("HarmonicBalance: contact normal has wrong size");
+    if (c.normal.size() != n_) throw std::invalid_argument("HarmonicBalance: contact normal has wrong size");
     if (!(c.kc >= 0.0)) throw std::invalid_argument("HarmonicBalance: contact stiffness must be >= 0");
     if (c.gap_harmonics.size() == 0) c.gap_harmonics = Eigen::VectorXd::Zero(2 * H_ + 1);
     if (c.gap_harmonics.size() < 2 * H_ + 1) {
@@ -80,8 +80,8 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::Vector
   }
   // --- contacts by AFT ------------------------------------------------------
   for (const auto& ct : contacts_) {
-    // u(theta) = g(theta) + w' x(theta): coefficients, then samples.
-    for (int a = 0; a < m; ++a) uc_[a] = ct.w.dot(X.segment(a * n, n)) + ct.gap_harmonics[a];
+    // u(theta) = g(theta) + n' x(theta): coefficients, then samples.
+    for (int a = 0; a < m; ++a) uc_[a] = ct.normal.dot(X.segment(a * n, n)) + ct.gap_harmonics[a];
     uc_[0] += ct.gap;
     aft_.to_time(uc_.data(), us_.data());
     if (quad_ == ContactQuadrature::exact) {
@@ -97,12 +97,12 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::Vector
       aft_.to_frequency(fs_.data(), fcoef_.data());
       if (J) aft_.product_matrix(ss_.data(), G_);
     }
-    for (int a = 0; a < m; ++a) R.segment(a * n, n) += fcoef_[a] * ct.w;
+    for (int a = 0; a < m; ++a) R.segment(a * n, n) += fcoef_[a] * ct.normal;
     if (J) {
-      const Eigen::MatrixXd ww = ct.w * ct.w.transpose();
+      const Eigen::MatrixXd nn = ct.normal * ct.normal.transpose();
       for (int a = 0; a < m; ++a)
         for (int b = 0; b < m; ++b)
-          if (G_(a, b) != 0.0) J->block(a * n, b * n, n, n) += G_(a, b) * ww;
+          if (G_(a, b) != 0.0) J->block(a * n, b * n, n, n) += G_(a, b) * nn;
     }
   }
 }
@@ -118,8 +118,8 @@ Eigen::VectorXd HarmonicBalance::linear_solution(double w, bool closed) const {
   Eigen::VectorXd f0 = f_.f0;
   if (closed)
     for (const auto& ct : contacts_) {
-      K += ct.kc * ct.w * ct.w.transpose();
-      f0 -= ct.kc * ct.gap * ct.w;   // constant part of kc (g + w'x) moved to the right
+      K += ct.kc * ct.normal * ct.normal.transpose();
+      f0 -= ct.kc * ct.gap * ct.normal;   // constant part of kc (g + n'x) moved to the right
     }
   Eigen::VectorXd X = Eigen::VectorXd::Zero(size());
   X.segment(0, n_) = K.partialPivLu().solve(f0);
@@ -142,7 +142,7 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
   // nothing oscillates.
   double xref = 0.0, xstatic = 0.0;
   for (const auto& ct : contacts_) {
-    const double wn = ct.w.lpNorm<Eigen::Infinity>();
+    const double wn = ct.normal.lpNorm<Eigen::Infinity>();
     if (wn > 0) {
       xref = std::max(xref, ct.gap_harmonics.cwiseAbs().sum() / wn);
       xstatic = std::max(xstatic, std::fabs(ct.gap) / wn);
@@ -169,7 +169,7 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
   if (!(xref > 0.0)) xref = xstatic;  // no oscillating input: the static size
   if (!(xref > 0.0)) xref = 1.0;      // nothing forces the system: any unit will do
   double kref = sys_.K.diagonal().cwiseAbs().maxCoeff();
-  for (const auto& ct : contacts_) kref += ct.kc * ct.w.squaredNorm();
+  for (const auto& ct : contacts_) kref += ct.kc * ct.normal.squaredNorm();
   Scaling s;
   s.x = Eigen::VectorXd::Constant(size(), xref);
   s.omega = std::max(std::fabs(wmax), std::fabs(wmin));

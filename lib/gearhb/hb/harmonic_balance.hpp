@@ -3,7 +3,7 @@
 //
 // Equation of motion, n DOFs, forcing at frequency omega (theta = omega t):
 //
-//   M x'' + C x' + K x + sum_i w_i max(kc_i (g_i(theta) + w_i' x), 0)
+//   M x'' + C x' + K x + sum_i n_i max(kc_i (g_i(theta) + n_i' x), 0)
 //        = f0 + fc cos(theta) + fs sin(theta)
 //
 // Unknowns: the real Fourier coefficients of x, static term kept (the thesis
@@ -17,9 +17,9 @@
 // (thesis §2.2: D(n) = -(n w)^2 M + i n w C + K; the thesis prints -(n w^2) M.)
 //
 // The contact forces Fnl come from AFT (thesis §2.3): for each contact, the
-// coefficients of u = g + w'x go to N time samples (FFTW), then either
+// coefficients of u = g + n'x (n = UnilateralContact::normal) go to N time samples (FFTW), then either
 //  - sampled (the classic AFT): the law is applied sample by sample and the
-//    samples go back to coefficients; Jacobian dFnl/dX = sum_i (w_i w_i') (x) G(s_i),
+//    samples go back to coefficients; Jacobian dFnl/dX = sum_i (n_i n_i') (x) G(s_i),
 //    G the AFT product matrix of the sampled stiffness s_i = kc_i [u_i > 0];
 //  - exact (default): the samples only bracket the contact crossings, which are
 //    refined on the trigonometric polynomial, and the projection of the
@@ -72,7 +72,7 @@ class HarmonicBalance : public ParametricProblem {
   // Solution with every contact removed (open contact): static + first harmonic,
   // exact for the linear system. A natural first guess for Newton.
   Eigen::VectorXd open_contact_solution(double omega) const;
-  // The same with every contact permanently closed (springs kc_i w_i w_i' and
+  // The same with every contact permanently closed (springs kc_i n_i n_i' and
   // their constant preloads kc_i g_i added): exact while the contacts stay shut.
   Eigen::VectorXd closed_contact_solution(double omega) const;
 

@@ -25,10 +25,10 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   for (int k = 1; k <= H; ++k) ss += 0.5 * (c[2 * k - 1] * c[2 * k - 1] + c[2 * k] * c[2 * k]);
   r.x_rms_ac = std::sqrt(ss);
   r.x_h1 = std::hypot(c[1], c[2]);
-  // Contact state: penetration u = g + w'x of every contact on the fine grid.
+  // Contact state: penetration u = g + n'x of every contact on the fine grid.
   bool any_open = false, any_closed = false;
   for (const auto& ct : hb_.contacts()) {
-    Eigen::VectorXd uc = hb_.project(X, ct.w) + ct.gap_harmonics;
+    Eigen::VectorXd uc = hb_.project(X, ct.normal) + ct.gap_harmonics;
     uc[0] += ct.gap;
     const ContactState s = contact_state(uc, fine_.to_time(uc));
     any_closed = any_closed || s != ContactState::open;

@@ -39,12 +39,12 @@ int rhs(double t, const double y[], double dydt[], void* params) {
     dydt[n + i] = a[i];
   }
   if (c->variational) {
-    // d/dt Phi = A(t) Phi,  A = [0 I; -Minv (K + sum s_i w w') , -Minv C]
+    // d/dt Phi = A(t) Phi,  A = [0 I; -Minv (K + sum s_i n n') , -Minv C]
     const auto& sys = c->hb->system();
     Eigen::MatrixXd Kt = sys.K;
     const double theta = c->omega * t;
     for (const auto& ct : c->hb->contacts())
-      Kt += contact_stiffness(ct.kc, gap_at(ct, theta) + ct.w.dot(x)) * ct.w * ct.w.transpose();
+      Kt += contact_stiffness(ct.kc, gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -c->Minv * Kt;
@@ -81,7 +81,7 @@ Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
   const double theta = omega * t;
   Eigen::VectorXd rhs = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta) - sys.C * v - sys.K * x;
   for (const auto& ct : hb_.contacts())
-    rhs -= contact_force(ct.kc, gap_at(ct, theta) + ct.w.dot(x)) * ct.w;
+    rhs -= contact_force(ct.kc, gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
   return Minv_ * rhs;
 }
 

@@ -1,0 +1,151 @@
+"""Chapter 8: the gear mesh driven by its own static transmission error.
+
+fig67  k(t) = F0/e(t) over one mesh cycle, T = 100/200/300 N m, with the mean
+fig69  RMS of the oscillating part of x vs mesh frequency, H = 1
+fig70  the same with H = 5
+fig70s_time_history    x(t), e(t) and the contact force at a contact-loss point
+fig70s_H_convergence   the 300 N m curve for H = 1, 5, 10, 20
+Everything (titles, parameters) comes from the run's files.
+"""
+import json
+
+from matplotlib.lines import Line2D
+
+from style import case_rows, plot_branch, plt, read_csv, read_params, save
+
+UM = 1e6
+COLORS = {100.0: "C2", 200.0: "C0", 300.0: "C3"}
+H_COLORS = {1: "C7", 5: "C3", 10: "C1", 20: "k"}
+
+
+def key_numbers(data_dir):
+    with open(data_dir / "key_numbers.json") as f:
+        return {k: v["value"] for k, v in json.load(f).items()}
+
+
+def loss_bands(data_dir):
+    d = read_csv(data_dir / "loss_bands.csv")
+    out = {}
+    for i, lb in enumerate(d["label"]):
+        out.setdefault(lb, []).append((d["f_lo_hz"][i], d["f_hi_hz"][i]))
+    return out
+
+
+def style_legend(extra):
+    return [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
+            Line2D([], [], color="k", ls="--", label="unstable (Floquet)")] + extra
+
+
+def fig67(data_dir, fig_dir, kn):
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for T, col in COLORS.items():
+        tag = "T%d" % T
+        d = read_csv(data_dir / ("fig67_%s.csv" % tag))
+        p8 = read_csv(data_dir / ("fig67_p8_%s.csv" % tag))
+        ph = d["phase"] + [1.0]
+        k = [v / 1e6 for v in d["k"]] + [d["k"][0] / 1e6]
+        ax.plot(ph, k, color=col, lw=1.4, label="T = %d N m (load moving continuously)" % T)
+        ax.plot(p8["phase"], [v / 1e6 for v in p8["k"]], ls="none", marker="o", ms=4, mfc="none", color=col)
+        kc = kn["kc_" + tag] / 1e6
+        ax.axhline(kc, color=col, ls=":", lw=1)
+        ax.annotate("mean %.1f MN/m" % kc, (0.87, kc), xycoords=("axes fraction", "data"), ha="center",
+                    va="bottom", fontsize=8, color=col)
+    ax.plot([], [], ls="none", marker="o", mfc="none", color="k", label="ch. 7: 8 positions per base pitch")
+    ax.set_xlabel("mesh phase [mesh cycles]")
+    ax.set_ylabel("k(t) = F0 / e(t)  [MN/m]")
+    ax.set_xlim(0, 1)
+    ax.set_title("Fig. 67: mesh stiffness over one mesh cycle (thesis kc = 473.2 MN/m at 300 N m)")
+    ax.legend(loc="lower left")
+    return save(fig, fig_dir / "fig67_mesh_stiffness.png")
+
+
+def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases):
+    bands = loss_bands(data_dir)
+    fig, ax = plt.subplots(figsize=(8, 5))
+    ymax = 0.0
+    for lb in labels:
+        d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        ymax = max(ymax, max(d["x_rms_ac"]) * UM)
+    extra = []
+    for i, lb in enumerate(labels):
+        row = cases[lb]
+        col = COLORS[row["torque"]]
+        d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+                    label="T = %d N m (kc %.1f MN/m)" % (row["torque"], row["kc"] / 1e6))
+        y = ymax * (1.08 - 0.035 * i)
+        for lo, hi in bands.get(lb, []):
+            ax.plot([lo, hi], [y, y], color=col, lw=4, solid_capstyle="butt")
+    lin = read_csv(data_dir / ("linear_%s.csv" % labels[-1]))
+    ax.plot(lin["f_mesh_hz"], [v * UM for v in lin["x_rms_ac"]], color="0.35", lw=1.0, ls=":", zorder=1,
+            label="linear, contact always closed (%d N m)" % cases[labels[-1]]["torque"])
+    extra.append(Line2D([], [], color="0.4", lw=4, label="contact lost: frequency bands (bars, torque colour)"))
+    H = int(cases[labels[0]]["H"])
+    ax.set_xlabel("mesh frequency [Hz]")
+    ax.set_ylabel("RMS of the oscillating part of x  [um]")
+    ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
+    ax.set_ylim(0, ymax * 1.15)
+    ax.set_title("Fig. %s: DTE response, H = %d (STE truncated to %d harmonic%s), me = %.3f kg, zeta = %g"
+                 % (fig_no, H, H, "" if H == 1 else "s", cases[labels[0]]["me"], params["zeta"]))
+    h, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=h + style_legend(extra), loc="upper right", bbox_to_anchor=(1.0, 0.86), fontsize=7.5)
+    return save(fig, fig_dir / name)
+
+
+def time_history(data_dir, fig_dir, kn, cases):
+    d = read_csv(data_dir / "time_history.csv")
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.5, 5.5), sharex=True)
+    a1.plot(d["t_ms"], d["x_um"], color="C3", label="x (dynamic transmission error)")
+    a1.plot(d["t_ms"], d["e_um"], color="C0", ls="--", label="e (STE, 5 harmonics)")
+    a1.plot(d["t_ms"], [x + e for x, e in zip(d["x_um"], d["e_um"])], color="k", lw=0.9,
+            label="x + e (mesh deflection; contact lost where < 0)")
+    a1.axhline(0, color="0.5", lw=0.6)
+    a1.set_ylabel("[um]")
+    lo, hi = a1.get_ylim()
+    a1.set_ylim(lo, hi + 0.6 * (hi - lo))
+    a1.legend(fontsize=7.5, loc="upper center", ncol=2)
+    a2.plot(d["t_ms"], [f / 1e3 for f in d["contact_force"]], color="k")
+    F0 = cases["T300_H5"]["F0"]
+    a2.axhline(F0 / 1e3, color="C1", ls=":", label="F0 = T/r = %.0f N (the mean)" % F0)
+    a2.set_ylabel("contact force [kN]")
+    a2.set_xlabel("time [ms] (two mesh periods)")
+    a2.legend(fontsize=7.5)
+    a1.set_title("Supplement: T = 300 N m, H = 5, f_mesh = %.0f Hz (stable, contact lost)"
+                 % kn["time_history_f_hz"])
+    return save(fig, fig_dir / "fig70s_time_history.png")
+
+
+def convergence(data_dir, fig_dir, params, cases):
+    fig, ax = plt.subplots(figsize=(8, 5))
+    for lb, row in cases.items():
+        if row["torque"] != 300.0:
+            continue
+        H = int(row["H"])
+        d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, "C4"), scale=UM,
+                    label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
+    ax.set_xlabel("mesh frequency [Hz]")
+    ax.set_ylabel("RMS of the oscillating part of x  [um]")
+    ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
+    ax.set_title("Supplement: H-convergence of the 300 N m curve (STE truncated to H harmonics)")
+    h, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=h + style_legend([]), loc="upper left", fontsize=8)
+    return save(fig, fig_dir / "fig70s_H_convergence.png")
+
+
+def draw(data_dir, fig_dir):
+    params = read_params(data_dir)
+    cases = case_rows(data_dir)
+    kn = key_numbers(data_dir)
+    made = []
+    if (data_dir / "fig67_T300.csv").exists():
+        made.append(fig67(data_dir, fig_dir, kn))
+    for fig_no, H, name in (("69", 1, "fig69_response_H1.png"), ("70", 5, "fig70_response_H5.png")):
+        labels = [lb for lb, r in cases.items() if int(r["H"]) == H]
+        if labels:
+            made.append(response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases))
+    if (data_dir / "time_history.csv").exists():
+        made.append(time_history(data_dir, fig_dir, kn, cases))
+    if sum(1 for r in cases.values() if r["torque"] == 300.0) > 1:
+        made.append(convergence(data_dir, fig_dir, params, cases))
+    return made

@@ -1,0 +1,312 @@
+#include "gearhb/hb/floquet.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <unsupported/Eigen/MatrixFunctions>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_odeiv2.h>
+
+#include "gearhb/hb/time_integration.hpp"
+
+namespace gearhb {
+
+PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb)
+    : hb_(hb), n_(hb.dofs()), Minv_(hb.system().M.inverse()) {
+  harmonics_.push_back(1);
+  const int H = hb.harmonics();
+  for (int k = 2; k <= H; ++k) {
+    bool used = false;
+    for (const auto& ct : hb.contacts())
+      used = used || ct.gap_harmonics[2 * k - 1] != 0.0 || ct.gap_harmonics[2 * k] != 0.0;
+    if (used) harmonics_.push_back(k);
+  }
+  dim_ = 2 * n_ + 1 + 2 * int(harmonics_.size());
+  if (hb.contacts().size() > 30) throw std::invalid_argument("PiecewiseLinearFlow: at most 30 contacts");
+}
+
+Eigen::RowVectorXd PiecewiseLinearFlow::contact_row(std::size_t i) const {
+  const auto& ct = hb_.contacts()[i];
+  Eigen::RowVectorXd r = Eigen::RowVectorXd::Zero(dim_);
+  r.head(n_) = ct.normal.transpose();
+  r[2 * n_] = ct.gap + ct.gap_harmonics[0];
+  for (std::size_t j = 0; j < harmonics_.size(); ++j) {
+    const int k = harmonics_[j];
+    r[2 * n_ + 1 + 2 * int(j)] = ct.gap_harmonics[2 * k - 1];
+    r[2 * n_ + 2 + 2 * int(j)] = ct.gap_harmonics[2 * k];
+  }
+  return r;
+}
+
+Eigen::MatrixXd PiecewiseLinearFlow::generator(unsigned S, double w) const {
+  const int n = n_, o = 2 * n_;
+  const auto& sys = hb_.system();
+  const auto& f = hb_.excitation();
+  Eigen::MatrixXd Ks = sys.K;
+  // forcing over the oscillator states (before Minv)
+  Eigen::MatrixXd B = Eigen::MatrixXd::Zero(n, dim_ - o);
+  B.col(0) = f.f0;
+  B.col(1) = f.fc;
+  B.col(2) = f.fs;
+  for (std::size_t i = 0; i < hb_.contacts().size(); ++i) {
+    if (!(S >> i & 1u)) continue;
+    const auto& ct = hb_.contacts()[i];
+    Ks += ct.kc * ct.normal * ct.normal.transpose();
+    const Eigen::RowVectorXd r = contact_row(i);
+    B -= ct.kc * ct.normal * r.tail(dim_ - o);
+  }
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(dim_, dim_);
+  A.block(0, n, n, n).setIdentity();
+  A.block(n, 0, n, n) = -Minv_ * Ks;
+  A.block(n, n, n, n) = -Minv_ * sys.C;
+  A.block(n, o, n, dim_ - o) = Minv_ * B;
+  for (std::size_t j = 0; j < harmonics_.size(); ++j) {
+    const double kw = harmonics_[j] * w;
+    const int ic = o + 1 + 2 * int(j), is = ic + 1;
+    A(ic, is) = -kw;   // (cos k w t)' = -k w sin
+    A(is, ic) = kw;    // (sin k w t)' =  k w cos
+  }
+  return A;
+}
+
+namespace {
+
+// Root in (0, h] of f(s) = r' exp(A s) z where the sign of f leaves `inside`
+// (f > 0 == inside at s -> 0+, not at s = h): safeguarded Newton with
+// f'(s) = r' A exp(A s) z, bracket kept by the sign test.
+double switch_time(const Eigen::MatrixXd& A, const Eigen::RowVectorXd& r, const Eigen::VectorXd& z, double h,
+                   bool inside, double fh, double tol) {
+  double lo = 0.0, hi = h, s = h;
+  double fs = fh;
+  // secant-like first guess from f(0) and f(h)
+  const double f0 = r.dot(z);
+  if ((f0 > 0.0) == inside && fh != f0) s = std::clamp(h * f0 / (f0 - fh), 0.0, h);
+  else s = 0.5 * h;
+  for (int it = 0; it < 100 && hi - lo > tol; ++it) {
+    const Eigen::MatrixXd E = (A * s).exp();
+    const Eigen::VectorXd zs = E * z;
+    fs = r.dot(zs);
+    const double dfs = r.dot(A * zs);
+    ((fs > 0.0) == inside ? lo : hi) = s;
+    double next = s - fs / dfs;
+    if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
+    if (std::fabs(next - s) < 0.25 * tol) {
+      s = next;
+      break;
+    }
+    s = next;
+  }
+  return std::clamp(s, lo, hi);
+}
+
+}  // namespace
+
+void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+                                     const std::vector<double>& nodes, Eigen::VectorXd& xT,
+                                     Eigen::VectorXd& vT, Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs) const {
+  const int n = n_, m = 2 * n_;
+  const double T = 2.0 * M_PI / w;
+  const std::size_t nc = hb_.contacts().size();
+  std::vector<Eigen::RowVectorXd> rows(nc);
+  for (std::size_t i = 0; i < nc; ++i) rows[i] = contact_row(i);
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(dim_);
+  z.head(n) = x0;
+  z.segment(n, n) = v0;
+  z[m] = 1.0;
+  for (std::size_t j = 0; j < harmonics_.size(); ++j) z[m + 1 + 2 * int(j)] = 1.0;   // cos(0)
+  unsigned S = 0;
+  for (std::size_t i = 0; i < nc; ++i)
+    if (rows[i].dot(z) > 0.0) S |= 1u << i;
+  // Generators and uniform-step exponentials, cached per contact state.
+  std::vector<std::pair<unsigned, Eigen::MatrixXd>> gen, expo;
+  double h_cached = -1.0;
+  auto generator_of = [&](unsigned s) -> const Eigen::MatrixXd& {
+    for (const auto& g : gen) if (g.first == s) return g.second;
+    gen.emplace_back(s, generator(s, w));
+    return gen.back().second;
+  };
+  auto exp_of = [&](unsigned s, double h) -> Eigen::MatrixXd {
+    if (std::fabs(h - h_cached) <= 1e-15 * T) {
+      for (const auto& e : expo) if (e.first == s) return e.second;
+      expo.emplace_back(s, (generator_of(s) * h).exp());
+      return expo.back().second;
+    }
+    return (generator_of(s) * h).exp();
+  };
+  // the most common step
+  if (nodes.size() > 1) h_cached = nodes[1] - nodes[0];
+  Phi = Eigen::MatrixXd::Identity(m, m);
+  if (xs) xs->resize(n, Eigen::Index(nodes.size()));
+  const double tol = 1e-14 * T;
+  for (std::size_t k = 0; k < nodes.size(); ++k) {
+    if (xs) xs->col(Eigen::Index(k)) = z.head(n);
+    double h = (k + 1 < nodes.size() ? nodes[k + 1] : T) - nodes[k];
+    int guard = 0;
+    while (h > 0.0) {
+      if (++guard > 1000) throw std::runtime_error("PiecewiseLinearFlow: too many contact switches in one step");
+      const Eigen::MatrixXd E = exp_of(S, h);
+      const Eigen::VectorXd zb = E * z;
+      // contacts whose state at the end of the step differs from S: the earliest switch
+      double s_first = h;
+      std::size_t i_first = nc;
+      for (std::size_t i = 0; i < nc; ++i) {
+        const bool inside = S >> i & 1u;
+        const double fb = rows[i].dot(zb);
+        if ((fb > 0.0) == inside) continue;
+        const double s = switch_time(generator_of(S), rows[i], z, h, inside, fb, tol);
+        if (s < s_first || i_first == nc) { s_first = s; i_first = i; }
+      }
+      if (i_first == nc) {
+        z = zb;
+        Phi = E.topLeftCorner(m, m) * Phi;
+        break;
+      }
+      const Eigen::MatrixXd Es = (generator_of(S) * s_first).exp();
+      z = Es * z;
+      Phi = Es.topLeftCorner(m, m) * Phi;
+      S ^= 1u << i_first;
+      h -= s_first;
+      if (h <= tol) break;
+    }
+  }
+  xT = z.head(n);
+  vT = z.segment(n, n);
+}
+
+FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, double x_scale,
+                                  const FloquetOptions& opt) {
+  const int n = hb.dofs(), H = hb.harmonics(), m = 2 * n;
+  const double T = 2.0 * M_PI / w;
+  const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
+  // Nodes: a uniform grid, plus the midpoint of every HB contact interval or gap
+  // shorter than two steps (so a short touch of the true orbit near it is seen).
+  std::vector<double> nodes;
+  for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
+  {
+    Aft aft(H);
+    for (const auto& ct : hb.contacts()) {
+      Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
+      uc[0] += ct.gap;
+      const auto I = contact_intervals(uc, aft.to_time(uc));
+      for (std::size_t i = 0; i < I.size(); ++i) {
+        const double a = I[i].first, b = I[i].second;
+        if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / w);
+        const double a2 = I[(i + 1) % I.size()].first + (i + 1 == I.size() ? 2.0 * M_PI : 0.0);
+        if (a2 - b < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (b + a2), 2.0 * M_PI) / w);
+      }
+    }
+    std::sort(nodes.begin(), nodes.end());
+  }
+  // HB orbit at the uniform nodes
+  Eigen::MatrixXd xhb(n, M);
+  for (int j = 0; j < M; ++j) {
+    const double th = 2.0 * M_PI * j / M;
+    Eigen::VectorXd x = X.segment(0, n);
+    for (int k = 1; k <= H; ++k)
+      x += X.segment(hb.index(2 * k - 1, 0), n) * std::cos(k * th) + X.segment(hb.index(2 * k, 0), n) * std::sin(k * th);
+    xhb.col(j) = x;
+  }
+  PiecewiseLinearFlow flow(hb);
+  FloquetResult r;
+  Eigen::VectorXd x0, v0, xT, vT;
+  hb_initial_state(hb, X, w, x0, v0);
+  Eigen::VectorXd sc(m);
+  sc.head(n).setConstant(x_scale);
+  sc.tail(n).setConstant(w * x_scale);
+  Eigen::MatrixXd Phi, xs;
+  double best = INFINITY;
+  Eigen::VectorXd y(m), ybest;
+  y << x0, v0;
+  Eigen::MatrixXd Phi_best, xs_best;
+  for (int it = 0; it <= opt.max_newton; ++it) {
+    flow.period_map(y.head(n), y.tail(n), w, nodes, xT, vT, Phi, &xs);
+    Eigen::VectorXd F(m);
+    F << xT - y.head(n), vT - y.tail(n);
+    const double res = F.cwiseQuotient(sc).cwiseAbs().maxCoeff();
+    if (!(res < best)) break;   // no progress (or NaN): keep the best orbit
+    best = res;
+    ybest = y;
+    Phi_best = Phi;
+    xs_best = xs;
+    r.newton_steps = it;
+    if (res < opt.tolerance) {
+      r.corrected = true;
+      break;
+    }
+    if (it == opt.max_newton) break;
+    const Eigen::VectorXd dy = (Phi - Eigen::MatrixXd::Identity(m, m)).partialPivLu().solve(-F);
+    if (!dy.allFinite()) break;
+    y += dy;
+  }
+  r.shooting_residual = best;
+  r.x0 = ybest.head(n);
+  r.v0 = ybest.tail(n);
+  r.monodromy = Phi_best;
+  // orbit error over the uniform nodes (their columns in the node list)
+  {
+    double e = 0.0;
+    std::size_t col = 0;
+    for (int j = 0; j < M; ++j) {
+      const double t = T * j / M;
+      while (col < nodes.size() && nodes[col] < t - 1e-12 * T) ++col;
+      e = std::max(e, (xs_best.col(Eigen::Index(col)) - xhb.col(j)).cwiseAbs().maxCoeff());
+    }
+    r.orbit_error = e;
+  }
+  Eigen::EigenSolver<Eigen::MatrixXd> es(Phi_best, false);
+  Eigen::VectorXcd mu = es.eigenvalues();
+  std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
+  std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+  r.multipliers = Eigen::Map<Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
+  r.critical = v.front();
+  r.modulus = std::abs(r.critical);
+  r.angle = std::arg(r.critical);
+  r.stable = r.modulus < 1.0 - opt.stability_margin;
+  return r;
+}
+
+// --- variational equation of a linear periodic system (GSL) --------------------
+
+namespace {
+struct LinearContext {
+  const std::function<void(double, Eigen::MatrixXd&)>* A;
+  int dim;
+  Eigen::MatrixXd At;
+};
+int linear_rhs(double t, const double y[], double dydt[], void* params) {
+  auto* c = static_cast<LinearContext*>(params);
+  (*c->A)(t, c->At);
+  Eigen::Map<const Eigen::MatrixXd> Y(y, c->dim, c->dim);
+  Eigen::Map<Eigen::MatrixXd> dY(dydt, c->dim, c->dim);
+  dY.noalias() = c->At * Y;
+  return GSL_SUCCESS;
+}
+}  // namespace
+
+Eigen::MatrixXd monodromy_linear_periodic(const std::function<void(double, Eigen::MatrixXd&)>& A, int dim,
+                                          double T, const std::vector<double>& breakpoints, double tol) {
+  LinearContext ctx{&A, dim, Eigen::MatrixXd::Zero(dim, dim)};
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Identity(dim, dim);
+  std::vector<double> ends;
+  for (double b : breakpoints)
+    if (b > 0.0 && b < T) ends.push_back(b);
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(T);
+  gsl_odeiv2_system sys{linear_rhs, nullptr, std::size_t(dim) * std::size_t(dim), &ctx};
+  double t = 0.0;
+  for (double t1 : ends) {
+    // a fresh driver per segment: the step history must not straddle a jump of A
+    gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * (t1 - t), tol, tol);
+    const int status = gsl_odeiv2_driver_apply(d, &t, t1, Y.data());
+    gsl_odeiv2_driver_free(d);
+    if (status != GSL_SUCCESS)
+      throw std::runtime_error(std::string("monodromy_linear_periodic: GSL driver failed at t = ") +
+                               std::to_string(t) + ": " + gsl_strerror(status));
+  }
+  return Y;
+}
+
+}  // namespace gearhb

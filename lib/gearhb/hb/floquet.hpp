@@ -1,0 +1,92 @@
+#pragma once
+// Floquet multipliers of a harmonic-balance orbit on the exact flow.
+//
+// The equation (harmonic_balance.hpp) is linear between contact switches:
+// with S the set of closed contacts,
+//   M x'' + C x' + (K + sum_{i in S} kc_i n_i n_i') x
+//       = f0 + fc cos(w t) + fs sin(w t) - sum_{i in S} kc_i n_i g_i(w t).
+// Augmenting the state with the oscillators [1, cos k w t, sin k w t] of the
+// forcing (k = 1) and of the gap harmonics that are present, z = [x, v, 1, c_k, s_k],
+// gives z' = A_S z with A_S constant, so the flow over a time h is exactly
+// exp(A_S h) z (Eigen's MatrixFunctions). The switch times are the roots of
+// u_i(t) = r_i' exp(A_S t) z (u_i = g_i + n_i' x), found by a safeguarded Newton
+// iteration on that exact solution. The vector field is continuous (max(kc u, 0)
+// is continuous in x), so no saltation matrix is needed: the monodromy matrix is
+// the product of the (x, v) blocks exp(A_S^xv h) of the segments (A_S is block upper
+// triangular, so that block of the augmented exponential is the exponential of the
+// (x, v) block).
+//
+// The HB state at finite H is not the true orbit. floquet_of_hb_orbit first
+// corrects it by Newton's method on the shooting equations P(y) - y = 0 (P the
+// exact period map, dP/dy = the monodromy matrix), then takes the multipliers of
+// the corrected orbit. The largest distance between the HB and the corrected orbit
+// over the period is an a-posteriori error of the HB point.
+//
+// For a smooth time-varying stiffness (a parametric model) `monodromy_linear_periodic`
+// integrates the variational equation Phi' = A(t) Phi over one period with GSL's
+// rk8pd, segment by segment between optional breakpoints where A may jump.
+#include <complex>
+#include <functional>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/harmonic_balance.hpp"
+
+namespace gearhb {
+
+struct FloquetOptions {
+  int max_newton = 8;          // shooting Newton steps
+  double tolerance = 1e-10;    // on |P(y) - y|: displacements / x_scale, velocities / (w x_scale)
+  int steps = 0;               // uniform grid steps per period (0: max(64, 2 (2H+1)))
+  double stability_margin = 0.0;   // stable iff max |multiplier| < 1 - margin
+};
+
+struct FloquetResult {
+  Eigen::VectorXcd multipliers;      // the 2n Floquet multipliers, largest modulus first
+  std::complex<double> critical;     // the largest in modulus
+  double modulus = 0.0, angle = 0.0; // |critical|, arg(critical) in (-pi, pi]
+  bool stable = false;
+  bool corrected = false;            // the shooting Newton converged
+  int newton_steps = 0;
+  double shooting_residual = 0.0;    // scaled |P(y) - y| of the orbit whose multipliers are returned
+  double orbit_error = 0.0;          // max over the period and DOFs of |x_HB - x_exact| [units of x]
+  Eigen::VectorXd x0, v0;            // corrected state at phase 0
+  Eigen::MatrixXd monodromy;         // 2n x 2n
+};
+
+// The exact piecewise-linear flow of an HB model (see above).
+class PiecewiseLinearFlow {
+ public:
+  explicit PiecewiseLinearFlow(const HarmonicBalance& hb);
+  // Period map from (x0, v0) at phase 0 over one forcing period 2 pi / omega,
+  // with the monodromy matrix. `nodes` are the times (in [0, T), ascending, 0
+  // first) at which the flow is restarted and its contact state checked;
+  // `xs` (if not null) receives x at every node (columns).
+  void period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                  const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                  Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr) const;
+  int augmented_size() const { return dim_; }
+
+ private:
+  const HarmonicBalance& hb_;
+  int n_, dim_;
+  std::vector<int> harmonics_;       // oscillator harmonics k (k = 1 first)
+  Eigen::MatrixXd Minv_;
+  Eigen::MatrixXd generator(unsigned state, double omega) const;   // A_S
+  Eigen::RowVectorXd contact_row(std::size_t i) const;            // u_i = r_i' z
+};
+
+// Multipliers of the HB point (X, omega) after correcting the orbit by shooting.
+// x_scale: characteristic displacement (HarmonicBalance::scaling).
+FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                  double x_scale, const FloquetOptions& opt = {});
+
+// Monodromy matrix of y' = A(t) y over [0, T] (dimension dim), from the identity,
+// by GSL rk8pd (relative and absolute tolerance `tol`), restarted at every
+// breakpoint in (0, T) where A(t) may be discontinuous. A(t, out) fills out (dim x dim).
+Eigen::MatrixXd monodromy_linear_periodic(const std::function<void(double, Eigen::MatrixXd&)>& A, int dim,
+                                          double T, const std::vector<double>& breakpoints = {},
+                                          double tol = 1e-12);
+
+}  // namespace gearhb

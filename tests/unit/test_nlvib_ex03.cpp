@@ -1,0 +1,123 @@
+// NLvib example 03 (test_models::nlvib_ex03): two masses, unilateral spring of
+// stiffness 100 behind a gap of 1, swept from omega = 0.8 down to 0.5.
+//  - At the default N the arc-length continuation passes the grazing fold near
+//    0.6534 for H = 5 ... 40 (an interval between two samples is no longer lost).
+//  - Along the branch Floquet finds two folds, a period-doubling regime and a
+//    Neimark-Sacker regime. Independent truth: GSL rk8pd time integration started on
+//    the orbit inside each regime does not settle on the period-1 orbit in 1000
+//    periods, and started on a Floquet-stable point it does (to the GSL tolerance).
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/app/tables.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/response.hpp"
+#include "gearhb/hb/time_integration.hpp"
+#include "test_models.hpp"
+
+using namespace gearhb;
+
+namespace {
+FrequencyCurve ex03(int H) {
+  HarmonicBalance hb = test_models::nlvib_ex03(H);
+  SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 0.8;
+  o.direction = SweepDirection::down;
+  return sweep_frequency(hb, o, "NLvib ex03 H=" + std::to_string(H));
+}
+int count(const FrequencyCurve& c, BifurcationType t) {
+  int n = 0;
+  for (const auto& b : c.bifurcations) n += b.type == t ? 1 : 0;
+  return n;
+}
+}  // namespace
+
+TEST(NlvibEx03, DefaultSamplesPassTheGrazingFoldForEveryH) {
+  for (int H : {5, 10, 21, 40}) {
+    const FrequencyCurve c = ex03(H);
+    ASSERT_TRUE(c.complete) << c.failure;
+    ASSERT_EQ(c.branch.folds.size(), 2u) << "H = " << H;
+    EXPECT_NEAR(c.branch.folds[0].omega, 0.6534, 1e-3) << "H = " << H;   // the grazing fold (met first)
+    EXPECT_EQ(count(c, BifurcationType::period_doubling), 2) << "H = " << H;
+    EXPECT_EQ(count(c, BifurcationType::neimark_sacker), 2) << "H = " << H;
+    for (const auto& b : c.bifurcations) EXPECT_NEAR(std::abs(b.multiplier), 1.0, 0.1) << to_string(b.type);
+  }
+}
+
+TEST(NlvibEx03, TimeIntegrationLeavesThePeriodOneOrbitInsideTheRegimes) {
+  HarmonicBalance hb = test_models::nlvib_ex03(21);
+  const FrequencyCurve c = ex03(21);
+  ASSERT_TRUE(c.complete) << c.failure;
+  double pd_lo = INFINITY, pd_hi = -INFINITY, ns_lo = INFINITY, ns_hi = -INFINITY;
+  for (const auto& b : c.bifurcations) {
+    if (b.type == BifurcationType::period_doubling) { pd_lo = std::min(pd_lo, b.omega); pd_hi = std::max(pd_hi, b.omega); }
+    if (b.type == BifurcationType::neimark_sacker) { ns_lo = std::min(ns_lo, b.omega); ns_hi = std::max(ns_hi, b.omega); }
+  }
+  TimeIntegrator ti(hb);
+  TimeIntegrationOptions to;
+  to.max_periods = 1000;
+  int pd = 0, ns = 0, stable = 0;
+  const auto& P = c.branch.points;
+  for (std::size_t i = 0; i < P.size(); i += 3) {
+    const auto& f = c.floquet[i];
+    const double w = P[i].omega;
+    const bool in_pd = w > pd_lo + 1e-3 && w < pd_hi - 1e-3 && !c.stable[i] && std::fabs(f.angle) > 3.14;
+    const bool in_ns = w > ns_lo + 1e-3 && w < ns_hi - 1e-3 && !c.stable[i] && std::fabs(std::sin(f.angle)) > 0.1;
+    const bool st = c.stable[i] && f.modulus < 0.97 && stable < 3;
+    if (!(in_pd && pd < 2) && !(in_ns && ns < 2) && !st) continue;
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, P[i].X, w, x0, v0);
+    const SteadyState ss = ti.steady_state(x0, v0, w, to);
+    if (st) {
+      ++stable;
+      ASSERT_TRUE(ss.converged) << "stable point omega = " << w;
+      // settles on the period-1 orbit, within the HB truncation error of the point
+      EXPECT_LT((ss.x0 - x0).cwiseAbs().maxCoeff(), 2.0 * f.orbit_error + 1e-8) << "omega = " << w;
+    } else {
+      (in_pd ? pd : ns) += 1;
+      EXPECT_FALSE(ss.converged && (ss.x0 - x0).cwiseAbs().maxCoeff() < 1e-3)
+          << (in_pd ? "period doubling" : "Neimark-Sacker") << " regime, omega = " << w;
+    }
+  }
+  EXPECT_EQ(pd, 2);
+  EXPECT_EQ(ns, 2);
+  EXPECT_EQ(stable, 3);
+}
+
+
+TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
+  HarmonicBalance hb = test_models::nlvib_ex03(10);
+  const FrequencyCurve c = ex03(10);
+  ASSERT_TRUE(c.complete) << c.failure;
+  const std::string frc = frequency_response_table(hb, c, Eigen::Vector2d(1, 0)).to_csv();
+  EXPECT_EQ(frc.substr(0, frc.find('\n')),
+            "omega,x_max,x_min,x_rms_ac,x_h1,x_mean,stable,contact,floquet_modulus,floquet_angle,hb_orbit_error");
+  const Table bt = bifurcation_table(c);
+  EXPECT_EQ(bt.rows(), c.bifurcations.size());
+  const std::string b = bt.to_csv();
+  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus");
+  EXPECT_NE(b.find("period_doubling"), std::string::npos);
+  EXPECT_NE(b.find("neimark_sacker"), std::string::npos);
+}
+
+TEST(NlvibEx03, HillOptionAndNoStability) {
+  HarmonicBalance hb = test_models::nlvib_ex03(10);
+  SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 0.8;
+  o.direction = SweepDirection::down;
+  o.stability = StabilityMethod::none;
+  const FrequencyCurve none = sweep_frequency(hb, o, "none");
+  EXPECT_TRUE(none.floquet.empty());
+  EXPECT_TRUE(none.bifurcations.empty());
+  for (bool s : none.stable) EXPECT_TRUE(s);
+  o.stability = StabilityMethod::hill;
+  const FrequencyCurve hill = sweep_frequency(hb, o, "hill");
+  EXPECT_EQ(hill.stable, hill.hill_stable);
+  EXPECT_EQ(hill.stable, branch_stability(hb, hill.branch));
+  int unstable = 0;
+  for (bool s : hill.stable) unstable += s ? 0 : 1;
+  EXPECT_GT(unstable, 10);   // the middle branch and the regimes
+}
