@@ -92,21 +92,21 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   o.omega_min = std::min(model_.omega_from, model_.omega_to);
   o.omega_max = std::max(model_.omega_from, model_.omega_to);
   o.continuation.ds_max = model_.ds_max;
-  FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
+  o.direction = model_.omega_from > model_.omega_to ? SweepDirection::down : SweepDirection::up;
+  const FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
   // The lowest frequency of the curve where a contact first closes (if any does).
   const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
-  if (model_.omega_from > model_.omega_to) {   // written in the order the file asks for
-    std::reverse(c.branch.points.begin(), c.branch.points.end());
-    std::reverse(c.stable.begin(), c.stable.end());
-  }
   run.say(model_.name + ": " + c.branch.summary());
+  if (!c.complete) run.say("INCOMPLETE branch, points so far written: " + c.failure);
   run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
+  run.write("bifurcations.csv", bifurcation_table(c));
+  run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   const ResponseEvaluator ev(hb, model_.output);
   double peak = -1e300;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
   KeyNumbers& key = run.key_numbers();
-  key.add("complete", c.branch.complete ? 1.0 : 0.0, "-");
+  key.add("complete", c.complete ? 1.0 : 0.0, "-");
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");

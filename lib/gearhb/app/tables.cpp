@@ -45,6 +45,10 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
     }
     t.add_row(std::move(row));
+  }
+  return t;
+}
+
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q) {
   ResponseEvaluator ev(hb, q);
   Table t({"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact", "floquet_modulus",
