@@ -129,5 +129,5 @@ TEST(Ste, ToothForceReadings) {
   SteModel m;
   EXPECT_NEAR(m.force(300), 4000, 1e-9);
   m.tooth_force = ToothForce::over_base_radius;
-  EXPECT_NEAR(m.force(300), 300 / (0.075 * std::cos(20 * 3.14159265358979323846 / 180)), 1e-9);
+  EXPECT_NEAR(m.force(300), 300 / (0.075 * std::cos(20 * M_PI / 180)), 1e-9);
 }

@@ -1,6 +1,7 @@
 #include "gearhb/gears/ste.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/core/gsl_errors.hpp"
 #include "gearhb/gears/hertz.hpp"
 
 namespace gearhb {
@@ -114,22 +116,34 @@ double split_residual(double FA, void* p) {
          (FB / d->kB + d->nh * palmgren_line_contact_approach(FB, d->length));
 }
 
-// Force of pair A such that both pairs close the same approach (GSL Brent).
+// Force of pair A such that both pairs close the same approach (GSL Brent on
+// [0, F]; g(0) < 0 < g(F) since both approaches grow with the force).
 double consistent_split(double kA, double kB, double F, double length, int nh) {
+  char force[32];
+  std::snprintf(force, sizeof force, "%g", F);
+  const std::string where = std::string("consistent two-pair force split (F = ") + force + " N)";
   SplitData d{kA, kB, F, length, nh};
+  if (!std::isfinite(split_residual(0.0, &d)) || !std::isfinite(split_residual(F, &d)))
+    throw std::runtime_error(where + ": the approach is not finite at the ends of [0, F]");
+  const GslErrorsReturned gsl_policy;
   gsl_function fn{&split_residual, &d};
   gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_root_fsolver_set(s, &fn, 0.0, F);
+  if (!s) throw std::runtime_error(where + ": GSL could not allocate the Brent solver");
   double root = 0.5 * F;
-  int status = GSL_CONTINUE;
-  for (int it = 0; it < 200 && status == GSL_CONTINUE; ++it) {
-    gsl_root_fsolver_iterate(s);
+  bool converged = false;
+  int status = gsl_root_fsolver_set(s, &fn, 0.0, F);
+  for (int it = 0; it < 200 && status == GSL_SUCCESS && !converged; ++it) {
+    status = gsl_root_fsolver_iterate(s);
+    if (status != GSL_SUCCESS) break;
     root = gsl_root_fsolver_root(s);
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
-                                    0.0, 1e-13);
+    const int test = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-13);
+    converged = test == GSL_SUCCESS;
+    if (!converged && test != GSL_CONTINUE) status = test;
   }
   gsl_root_fsolver_free(s);
-  if (status != GSL_SUCCESS) throw std::runtime_error("consistent_split: Brent did not converge");
+  gsl_check(status, where);
+  if (!converged)
+    throw std::runtime_error(where + ": Brent did not narrow the force of pair A to 1e-13 relative in 200 iterations");
   return root;
 }
 
@@ -150,7 +164,9 @@ TwoPairSolve solve_two_pairs(const ToothBeam& tooth, int kA1, int kA2, int kB1, 
 
 std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) {
   const int P = m.positions_per_base_pitch, ne = m.elements();
-  if (P < 2) throw std::invalid_argument("ste_over_mesh_cycle: need P >= 2 positions per base pitch");
+  if (P < 2 || P > max_positions_per_base_pitch)
+    throw std::invalid_argument("ste_over_mesh_cycle: positions per base pitch P = " + std::to_string(P) +
+                                " outside [2, " + std::to_string(max_positions_per_base_pitch) + "]");
   if (ne < P) throw std::invalid_argument("ste_over_mesh_cycle: tooth elements (" + std::to_string(ne) +
                                           ") must be >= positions per base pitch (" + std::to_string(P) + ")");
   if (ne >= 2 * P)

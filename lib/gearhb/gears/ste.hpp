@@ -26,7 +26,13 @@
 //    the line of action).
 //
 // The mean mesh stiffness is the mean over the cycle of F / STE (thesis §8.1,
-// whose printed k = (T/r) V should read (T/r) / V, SPEC §5).
+// whose printed k = (T/r) V should read (T/r) / V: chapters/ch07_ste/README.md,
+// "Thesis errors").
+//
+// Size bound. The four-beam model has 8 (n_e + 1) <= 16 P DOFs and is solved densely
+// (the assembled K, the reduced T'KT and its LDLT factor: three matrices of
+// (16 P)^2 doubles); P <= max_positions_per_base_pitch = 128 keeps that below
+// 3 x 32 MiB and one mesh cycle below a few minutes (P solves of O((16 P)^3)).
 #include <vector>
 
 #include <Eigen/Dense>
@@ -35,6 +41,8 @@
 #include "gearhb/gears/tooth_fe.hpp"
 
 namespace gearhb {
+
+constexpr int max_positions_per_base_pitch = 128;
 
 enum class ThicknessAt : int {
   element_root_node = 0,   // s at the node of the element nearer the root
