@@ -162,19 +162,16 @@ TwoPairSolve solve_two_pairs(const ToothBeam& tooth, int kA1, int kA2, int kB1, 
   return r;
 }
 
-std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) {
-  const int P = m.positions_per_base_pitch, ne = m.elements();
+std::vector<MeshPosition> mesh_positions(const SteModel& m) {
+  const int P = m.positions_per_base_pitch;
   if (P < 2 || P > max_positions_per_base_pitch)
-    throw std::invalid_argument("ste_over_mesh_cycle: positions per base pitch P = " + std::to_string(P) +
+    throw std::invalid_argument("mesh_positions: positions per base pitch P = " + std::to_string(P) +
                                 " outside [2, " + std::to_string(max_positions_per_base_pitch) + "]");
-  if (ne < P) throw std::invalid_argument("ste_over_mesh_cycle: tooth elements (" + std::to_string(ne) +
+  const int ne = m.elements();
+  if (ne < P) throw std::invalid_argument("mesh_positions: tooth elements (" + std::to_string(ne) +
                                           ") must be >= positions per base pitch (" + std::to_string(P) + ")");
   if (ne >= 2 * P)
-    throw std::invalid_argument("ste_over_mesh_cycle: tooth elements >= 2 P would put three pairs in contact");
-  const ToothBeam tooth = tooth_beam(m);
-  const double F = m.force(torque), b = m.gear.face_width;
-  const int nh = int(m.hertz);
-  auto hz = [&](double f) { return palmgren_line_contact_approach(f, b); };
+    throw std::invalid_argument("mesh_positions: tooth elements >= 2 P would put three pairs in contact");
   std::vector<MeshPosition> cycle;
   for (int j = 0; j < P; ++j) {
     MeshPosition p;
@@ -185,41 +182,63 @@ std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) 
       p.pairs = 2;
       p.kB1 = p.kA1 + P;
       p.kB2 = ne + 1 - p.kB1;
-      const TwoPairSolve s = solve_two_pairs(tooth, p.kA1, p.kA2, p.kB1, p.kB2, F);
-      p.elastic = p.elastic_linear = s.X;
-      p.force_A = s.force_A;
-      p.force_B = s.force_B;
-      const double kA = fused_pair_stiffness_closed_form(tooth, p.kA1, p.kA2);
-      const double kB = fused_pair_stiffness_closed_form(tooth, p.kB1, p.kB2);
-      p.elastic_closed_form = F / (kA + kB);
-      switch (m.two_pair_hertz) {
-        case TwoPairHertz::equal_split:
-          p.hertz = nh * hz(0.5 * F);
-          break;
-        case TwoPairHertz::fe_split_mean:
-          p.hertz = nh * 0.5 * (hz(s.force_A) + hz(s.force_B));
-          break;
-        case TwoPairHertz::consistent:
-          if (nh > 0) {
-            const double FA = consistent_split(s.stiffness_A, s.stiffness_B, F, b, nh);
-            p.force_A = FA;
-            p.force_B = F - FA;
-            p.elastic = FA / s.stiffness_A;   // each pair's own elastic part
-            p.hertz = nh * hz(FA);
-          }
-          break;
-      }
-    } else {
-      p.pairs = 1;
-      const SinglePairSolve s = solve_single_pair(tooth, p.kA1, p.kA2, F);
-      p.elastic = p.elastic_linear = s.ste_elastic;
-      p.force_A = F;
-      p.hertz = nh * hz(F);
-      p.elastic_closed_form = F * (stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA1]) +
-                                   stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA2]));
     }
-    p.ste = p.elastic + p.hertz;
     cycle.push_back(p);
+  }
+  return cycle;
+}
+
+namespace {
+
+void solve_two_pair_position(const SteModel& m, const ToothBeam& tooth, double F, MeshPosition& p) {
+  const double b = m.gear.face_width;
+  const int nh = int(m.hertz);
+  auto hz = [&](double f) { return palmgren_line_contact_approach(f, b); };
+  const TwoPairSolve s = solve_two_pairs(tooth, p.kA1, p.kA2, p.kB1, p.kB2, F);
+  p.elastic = p.elastic_linear = s.X;
+  p.force_A = s.force_A;
+  p.force_B = s.force_B;
+  const double kA = fused_pair_stiffness_closed_form(tooth, p.kA1, p.kA2);
+  const double kB = fused_pair_stiffness_closed_form(tooth, p.kB1, p.kB2);
+  p.elastic_closed_form = F / (kA + kB);
+  switch (m.two_pair_hertz) {
+    case TwoPairHertz::equal_split:
+      p.hertz = nh * hz(0.5 * F);
+      break;
+    case TwoPairHertz::fe_split_mean:
+      p.hertz = nh * 0.5 * (hz(s.force_A) + hz(s.force_B));
+      break;
+    case TwoPairHertz::consistent:
+      if (nh > 0) {
+        const double FA = consistent_split(s.stiffness_A, s.stiffness_B, F, b, nh);
+        p.force_A = FA;
+        p.force_B = F - FA;
+        p.elastic = FA / s.stiffness_A;   // each pair's own elastic part
+        p.hertz = nh * hz(FA);
+      }
+      break;
+  }
+}
+
+void solve_single_pair_position(const SteModel& m, const ToothBeam& tooth, double F, MeshPosition& p) {
+  const SinglePairSolve s = solve_single_pair(tooth, p.kA1, p.kA2, F);
+  p.elastic = p.elastic_linear = s.ste_elastic;
+  p.force_A = F;
+  p.hertz = int(m.hertz) * palmgren_line_contact_approach(F, m.gear.face_width);
+  p.elastic_closed_form = F * (stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA1]) +
+                               stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA2]));
+}
+
+}  // namespace
+
+std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) {
+  std::vector<MeshPosition> cycle = mesh_positions(m);
+  const ToothBeam tooth = tooth_beam(m);
+  const double F = m.force(torque);
+  for (MeshPosition& p : cycle) {
+    if (p.pairs == 2) solve_two_pair_position(m, tooth, F, p);
+    else solve_single_pair_position(m, tooth, F, p);
+    p.ste = p.elastic + p.hertz;
   }
   return cycle;
 }

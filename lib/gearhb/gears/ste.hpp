@@ -109,6 +109,11 @@ struct MeshPosition {
   double elastic_linear = 0.0;      // FE elastic STE with the linear force split [m]
   double elastic_closed_form = 0.0; // the same from the stepped-beam formulas [m]
 };
+// The P positions of one mesh cycle with their contact nodes and pair count
+// (phase, pairs, kA1, kA2, kB1, kB2; nothing solved yet). Throws if P is outside
+// [2, max_positions_per_base_pitch] or n_e is not in [P, 2P).
+std::vector<MeshPosition> mesh_positions(const SteModel& m);
+// The STE at every position of mesh_positions(m) for torque T [N m].
 std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque);
 
 // Mean of F / STE over the positions [N/m].
