@@ -391,17 +391,21 @@ void StaticTransmissionError::check(const Selection& s) const {
     check_torque("own_torque", own_.torque, false);
     return;
   }
-  for (const MeshModel& mesh : kMeshes) check_positions(mesh.parameter, models_.*mesh.positions);
+  for (bool set : {true, false})   // the ones the user set first
+    for (const MeshModel& mesh : kMeshes)
+      if (params_->was_set(mesh.parameter) == set) check_positions(mesh.parameter, models_.*mesh.positions);
   ParameterSet::require(models_.convergence_max_positions >= models_.positions_per_base_pitch,
                         "convergence_max_positions = " + std::to_string(models_.convergence_max_positions) +
                             ": must be >= positions_per_base_pitch = " + std::to_string(models_.positions_per_base_pitch));
-  for (std::size_t i = 0; i < kTorques.size(); ++i) {
-    check_torque(kTorques[i].name, torque(int(i)), true);
-    if (i > 0)
-      ParameterSet::require(torque(int(i - 1)) < torque(int(i)),
-                            kTorques[i].name + " = " + number(torque(int(i))) + " N m: the torques must increase (" +
-                                kTorques[i - 1].name + " = " + number(torque(int(i - 1))) + " N m)");
+  for (std::size_t i = 1; i < kTorques.size(); ++i) {   // blame the one the user set
+    const std::size_t j = params_->was_set(kTorques[i - 1].name) && !params_->was_set(kTorques[i].name) ? i - 1 : i;
+    const std::size_t other = j == i ? i - 1 : i;
+    ParameterSet::require(torque(int(i - 1)) < torque(int(i)),
+                          kTorques[j].name + " = " + number(torque(int(j))) + " N m: the torques must increase, need " +
+                              kTorques[j].name + (j < other ? " < " : " > ") + kTorques[other].name + " = " +
+                              number(torque(int(other))) + " N m");
   }
+  check_torque(kTorques.back().name, torque(int(kTorques.size()) - 1), true);   // the largest
 }
 
 // The gear must suit the involute beam model (lib involute_tooth_model_problem);
@@ -440,17 +444,29 @@ void StaticTransmissionError::check_positions(const std::string& name, int P) co
 }
 
 // The beams are linear and small-deflection: the root bending strain
-// 6 F h / (E b s^2) (cantilever of height h loaded at its tip) must stay below 1 %.
+// 6 F h / (E b s^2) (cantilever of height h loaded at its tip, s the thinner of the
+// involute root thickness and, for the chapter's cases, constant_thickness) must stay
+// below 1 % at the largest torque. The message blames the parameter the user set.
 void StaticTransmissionError::check_torque(const std::string& name, double T, bool constant_model_too) const {
   const SteModel m = model(models_.positions_per_base_pitch, false);
-  double s = tooth_thickness(gear_, gear_.root_radius());
-  if (constant_model_too) s = std::min(s, models_.constant_thickness);
+  const double s_root = tooth_thickness(gear_, gear_.root_radius());
+  const bool thin = constant_model_too && models_.constant_thickness < s_root;
+  const double s = thin ? models_.constant_thickness : s_root;
   const double h = gear_.tooth_height(), b = gear_.face_width, E = mat_.youngs_modulus;
-  const double strain = 6 * m.force(T) * h / (E * b * s * s);
-  if (strain <= kMaxRootStrain) return;
-  ParameterSet::require(false, name + " = " + number(T) + " N m: the tooth-root bending strain 6 F h/(E b s^2) would be " +
-                                   number(strain) + ", beyond the linear small-deflection beam model (1 %); need " +
-                                   name + " <= " + number(T * kMaxRootStrain / strain) + " N m");
+  const double strain = 6 * m.force(T) * h / (E * b * s * s), over = strain / kMaxRootStrain;
+  if (over <= 1) return;
+  const std::string at = " at " + name + " = " + number(T) + " N m the tooth-root bending strain 6 F h/(E b s^2) would be " +
+                         number(strain) + ", beyond the linear small-deflection beam model (1 %); need ";
+  std::string msg = name + " = " + number(T) + " N m:" + at.substr(at.find(" the tooth")) + name + " <= " + number(T / over) + " N m";
+  if (!params_->was_set(name)) {
+    if (thin && params_->was_set("constant_thickness"))
+      msg = "constant_thickness = " + number(s) + " m:" + at + "constant_thickness >= " + number(s * std::sqrt(over)) + " m";
+    else if (params_->was_set("youngs_modulus"))
+      msg = "youngs_modulus = " + number(E) + " Pa:" + at + "youngs_modulus >= " + number(E * over) + " Pa";
+    else if (params_->was_set("face_width"))
+      msg = "face_width = " + number(b) + " m:" + at + "face_width >= " + number(b * over) + " m";
+  }
+  ParameterSet::require(false, msg);
 }
 
 SteModel StaticTransmissionError::model(int P, bool constant, const Readings& r) const {
