@@ -7,13 +7,14 @@ curves of Parker, Vijayakar & Imajo in Fig. 60 (their data are not available).
 Run with Debian's /usr/bin/python3 (matplotlib, Agg backend).
 """
 import csv
-import glob
 import os
+import pathlib
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from style import read_params  # noqa: E402
 
 
 def read(path):
@@ -64,74 +65,85 @@ def deflection_figure(d, title, fig_dir, name, made, exact=None):
     save(fig, fig_dir, name, made)
 
 
+def rows(d):
+    """Columns -> list of row dicts."""
+    keys = list(d.keys())
+    return [{k: d[k][i] for k in keys} for i in range(len(d[keys[0]]))]
+
+
 def draw(data_dir, fig_dir):
-    data_dir, fig_dir = str(data_dir), str(fig_dir)
+    data_dir, fig_dir = pathlib.Path(data_dir), str(fig_dir)
     made = []
     D = lambda n: read(os.path.join(data_dir, n))  # noqa: E731
+    par = read_params(data_dir)
+    index = {int(r["figure"]): r for r in rows(D("deflection_cases.csv"))}
 
-    # Figs. 48-49: one pair, constant 6 mm thickness, 300 Nm.
-    singles = sorted(glob.glob(os.path.join(data_dir, "deflection_const_single_*.csv")))
-    for fig_no, path in zip((48, 49), singles):
-        pair = os.path.basename(path)[len("deflection_const_single_"):-4]
-        deflection_figure(read(path), "Fig. %d: one pair in contact, nodes %s, constant 6 mm "
-                          "thickness, T = 300 Nm\n(both roots clamped, force -T/r on both contact nodes)"
-                          % (fig_no, pair), fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, pair), made)
+    def thickness_text(r):
+        return "constant %g mm thickness" % r["constant_thickness_mm"] if r["thickness"] == "constant" else \
+            "involute thickness"
 
-    # Figs. 50-51: exact cantilever elastic line (force at node 7, node 6) with the FE nodes.
-    fe = read(singles[0]) if singles else None
-    for fig_no, node in ((50, 7), (51, 6)):
-        e = D("elastic_line_exact_node%d.csv" % node)
+    # Figs. 48-49: one pair, constant thickness, torque_3.
+    for fig_no in (48, 49):
+        r = index.get(fig_no)
+        if r is None:
+            continue
+        deflection_figure(D(r["file"]), "Fig. %d: one pair in contact, nodes %s, %s, T = %g Nm\n(both roots clamped, "
+                          "force -T/r on both contact nodes)" % (fig_no, r["nodes"], thickness_text(r), r["torque_N_m"]),
+                          fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made)
+
+    # Figs. 50-51: exact cantilever elastic line with the FE nodes of the loaded beam.
+    for fig_no in (50, 51):
+        r = index.get(fig_no)
+        if r is None:
+            continue
+        e = D(r["file"])
+        node = int(r["node_of_force"])
+        ex = [(x, y) for k, x, y in zip(e["kind"], e["x_mm"], e["y_um"]) if k == "exact"]
+        fe = [(x, y) for k, x, y in zip(e["kind"], e["x_mm"], e["y_um"]) if k == "fe"]
         fig, ax = plt.subplots(figsize=(7, 4))
-        ax.plot(e["x_mm"], e["y_exact_um"], "k-", label="exact: y = -F x^2 (3a - x)/(6EI), x <= a;"
+        ax.plot(*zip(*ex), "k-", label="exact: y = -F x^2 (3a - x)/(6EI), x <= a;"
                 "\n           -F a^2 (3x - a)/(6EI), x > a")
-        if fe is not None:
-            # FE nodal values of the beam loaded at this node in the 6-18 / 7-17 cases.
-            for path in singles:
-                d = read(path)
-                for b, (x, w) in beams_of(d).items():
-                    first = (b - 1) * len(x) + 1
-                    loaded = [n for n in range(first, first + len(x))
-                              if os.path.basename(path).find("%d" % n) >= 0]
-                    if node in [n - first + 1 for n in loaded]:
-                        ax.plot(x, w, "o", ms=5, mfc="none", label="FE nodes (beam %d, %s)" % (
-                            b, os.path.basename(path)[24:-4]))
-                        break
-        a = e["x_mm"][-1] * (node - 1) / 10.0
+        ax.plot(*zip(*fe), "o", ms=5, mfc="none", label="FE nodes (beam 1, pair %s)" % r["nodes"])
+        a = r["a_mm"]
+        ymin = min(y for _, y in ex)
         ax.axvline(a, color="grey", ls=":", lw=1)
-        ax.text(a, 0.5 * min(e["y_exact_um"]), " force at node %d\n a = %.3f mm" % (node, a), fontsize=8,
-                va="center")
+        ax.text(a, 0.5 * ymin, " force at node %d\n a = %.3f mm" % (node, a), fontsize=8, va="center")
         ax.set_xlabel("distance from the clamped root x [mm]")
         ax.set_ylabel("deflection y [um]")
-        ax.set_title("Fig. %d: exact elastic line of the cantilever, force 4000 N at node %d"
-                     % (fig_no, node), fontsize=10)
+        ax.set_title("Fig. %d: exact elastic line of the cantilever, force %g N at node %d"
+                     % (fig_no, r["force_N"], node), fontsize=10)
         ax.legend(fontsize=7, loc="lower left")
         ax.grid(alpha=0.3)
         save(fig, fig_dir, "fig%d_exact_cantilever_node%d.png" % (fig_no, node), made)
 
     # Figs. 52-55: two fused pairs, constant thickness.
-    twos = sorted(glob.glob(os.path.join(data_dir, "deflection_const_two_*.csv")),
-                  key=lambda p: int(os.path.basename(p).split("_")[3].split("-")[0]))
-    for fig_no, path in zip(range(52, 56), twos):
-        pairs = os.path.basename(path)[len("deflection_const_two_"):-4].replace("_", " and ")
-        deflection_figure(read(path), "Fig. %d: two pairs, nodes %s fused, constant 6 mm, T = 300 Nm\n"
-                          "(driving roots guided and moved by -X_STE, driven roots clamped)" % (fig_no, pairs),
-                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (
-                              fig_no, pairs.split(" ")[0]), made)
+    for fig_no in range(52, 56):
+        r = index.get(fig_no)
+        if r is None:
+            continue
+        pairs = r["nodes"].replace("_", " and ")
+        deflection_figure(D(r["file"]), "Fig. %d: two pairs, nodes %s fused, %s, T = %g Nm\n"
+                          "(driving roots guided and moved by -X_STE, driven roots clamped)"
+                          % (fig_no, pairs, thickness_text(r).replace(" thickness", ""), r["torque_N_m"]),
+                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made)
 
     # Fig. 56: moment along the fused beam.
-    m = D("moment_const_two_pair.csv")
+    r = index[56]
+    m = D(r["file"])
     fig, ax = plt.subplots(figsize=(7, 4))
     for tooth, col in (("driving", "C0"), ("driven", "C1")):
         xs = [s for s, t in zip(m["s_mm"], m["tooth"]) if t == tooth]
         ms = [v for v, t in zip(m["moment_N_m"], m["tooth"]) if t == tooth]
         ax.plot(xs, ms, "o-", color=col, ms=3, label="%s tooth part" % tooth)
     ax.axhline(0, color="grey", lw=0.5)
-    ax.axvline(m["s_mm"][-1] / 2, color="grey", ls=":", lw=1)
-    ax.set_xlabel("position along the fused beam from the guided root (node 1) to the clamped root (node 12) [mm]",
-                  fontsize=8)
+    L = max(m["s_mm"])
+    ax.axvline(L / 2, color="grey", ls=":", lw=1)
+    ax.set_xlabel("position along the fused beam from the guided root to the clamped root [mm]", fontsize=8)
     ax.set_ylabel("bending moment M [N m]")
-    ax.set_title("Fig. 56: bending moment along the fused pair 2-22, constant 6 mm, T = 300 Nm\n"
-                 "linear from +F L/4 to -F L/4 (F/2 = 2000 N, L = 7.425 mm), zero at mid-span", fontsize=9)
+    ax.set_title("Fig. 56: bending moment along the fused pair %s, %s, T = %g Nm\n"
+                 "linear from +F L/4 to -F L/4 (F/2 = %g N, L = %g mm), zero at mid-span"
+                 % (r["nodes"], thickness_text(r).replace(" thickness", ""), r["torque_N_m"], r["force_N"] / 2, L),
+                 fontsize=9)
     ax.legend(fontsize=8)
     ax.grid(alpha=0.3)
     save(fig, fig_dir, "fig56_moment_fused_beam.png", made)
@@ -141,11 +153,8 @@ def draw(data_dir, fig_dir):
     fig, ax = plt.subplots(figsize=(5.5, 5.5))
     ax.plot([s / 2 for s in tp["thickness_mm"]], tp["height_mm"], "k-", label="involute flank, s(r)/2")
     ax.plot([-s / 2 for s in tp["thickness_mm"]], tp["height_mm"], "k-")
-    for P, col in ((6, "C0"), (8, "C1")):
-        path = os.path.join(data_dir, "beam_thickness_P%d.csv" % P)
-        if not os.path.exists(path):
-            continue
-        b = read(path)
+    for name, col in (("first", "C0"), ("refined", "C1")):
+        b = D("beam_thickness_%s.csv" % name)
         xs, ys = [], []
         for x0, x1, s in zip(b["x_start_mm"], b["x_end_mm"], b["thickness_mm"]):
             xs += [s / 2, s / 2]
@@ -160,10 +169,13 @@ def draw(data_dir, fig_dir):
     ax.grid(alpha=0.3)
     save(fig, fig_dir, "fig57_tooth_profile.png", made)
 
-    # Figs. 58-59: deformed teeth, involute thickness, 300 Nm.
-    for fig_no, name, title in ((58, "deflection_var_single.csv", "one pair in contact (6-18)"),
-                                (59, "deflection_var_two.csv", "two pairs in contact (2-22 and 30-38)")):
-        d = D(name)
+    # Figs. 58-59: deformed teeth, involute thickness, torque_3.
+    for fig_no in (58, 59):
+        r = index.get(fig_no)
+        if r is None:
+            continue
+        d = D(r["file"])
+        title = "%s in contact (%s)" % ("one pair" if r["pairs"] == 1 else "two pairs", r["nodes"].replace("_", " and "))
         beams = {}
         for b, x, w, th in zip(d["beam"], d["x_mm"], d["w_um"], d["thickness_mm"]):
             beams.setdefault(int(b), []).append((x, w, th))
@@ -186,26 +198,30 @@ def draw(data_dir, fig_dir):
             ax.grid(alpha=0.3)
         axes[0].set_ylabel("height above the root [mm]")
         axes[0].legend(fontsize=6, loc="upper left")
-        fig.suptitle("Fig. %d: deformed teeth, involute thickness, T = 300 Nm, %s\n"
-                     "(each tooth in its own frame; deflections magnified %d times)" % (fig_no, title, scale),
+        fig.suptitle("Fig. %d: deformed teeth, involute thickness, T = %g Nm, %s\n"
+                     "(each tooth in its own frame; deflections magnified %d times)"
+                     % (fig_no, r["torque_N_m"], title, scale),
                      fontsize=9)
         save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made)
 
     # Figs. 60/63: STE over the mesh cycle; Figs. 61/64 its Fourier coefficients.
-    def ste_figures(prefix, fig_ste, fig_four, label):
-        files = sorted(glob.glob(os.path.join(data_dir, prefix + "T*.csv")),
-                       key=lambda p: float(os.path.basename(p)[len(prefix) + 1:-4]))
-        files = [f for f in files if "fourier" not in f]
+    cases = rows(D("cases.csv"))
+
+    def ste_figures(model, fig_ste, fig_four):
+        mine = sorted([c for c in cases if c["model"] == model], key=lambda c: c["torque_N_m"])
+        if not mine:
+            return
+        label = "%d elements, %d positions per base pitch" % (mine[0]["tooth_elements"],
+                                                              mine[0]["positions_per_base_pitch"])
         fig, ax = plt.subplots(figsize=(7, 4.2))
-        for f in files:
-            d = read(f)
-            T = os.path.basename(f)[len(prefix) + 1:-4]
+        for c in mine:
+            d = D(c["file"])
             ph = d["phase"] + [1.0]
             ste = d["ste_um"] + [d["ste_um"][0]]
-            ax.step(ph, ste, where="post", label="T = %s Nm" % T)
+            ax.step(ph, ste, where="post", label="T = %g Nm" % c["torque_N_m"])
             ax.plot(d["phase"], d["ste_um"], "k.", ms=4)
-        n = len(read(files[0])["phase"])
-        pairs = read(files[0])["pairs_in_contact"]
+        n = len(D(mine[0]["file"])["phase"])
+        pairs = D(mine[0]["file"])["pairs_in_contact"]
         for j, pr in enumerate(pairs):
             if pr == 1:
                 ax.axvspan(j / n, (j + 1) / n, color="grey", alpha=0.12, lw=0)
@@ -220,15 +236,12 @@ def draw(data_dir, fig_dir):
         save(fig, fig_dir, "fig%d_ste_mesh_cycle%s.png" % (fig_ste, "" if fig_ste == 60 else "_14_nodes"), made)
 
         fig, ax = plt.subplots(figsize=(7, 4.2))
-        four = sorted(glob.glob(os.path.join(data_dir, prefix + "fourier_T*.csv")),
-                      key=lambda p: float(os.path.basename(p)[len(prefix) + 9:-4]))
-        width = 0.8 / max(1, len(four))
-        for i, f in enumerate(four):
-            d = read(f)
-            T = os.path.basename(f)[len(prefix) + 9:-4]
+        width = 0.8 / len(mine)
+        for i, c in enumerate(mine):
+            d = D(c["fourier_file"])
             h = [k for k in d["harmonic"] if k > 0]
             a = [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k > 0]
-            ax.bar([k + (i - (len(four) - 1) / 2) * width for k in h], a, width, label="T = %s Nm" % T)
+            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width, label="T = %g Nm" % c["torque_N_m"])
         ax.set_xlabel("harmonic of the mesh frequency k")
         ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
         ax.set_xticks(h)
@@ -238,14 +251,12 @@ def draw(data_dir, fig_dir):
         ax.grid(alpha=0.3, axis="y")
         save(fig, fig_dir, "fig%d_ste_fourier%s.png" % (fig_four, "" if fig_four == 61 else "_14_nodes"), made)
 
-    ste_figures("ste_first_model_", 60, 61, "10 elements, 6 positions per base pitch")
-    ste_figures("ste_", 63, 64, "14 elements, 8 positions per base pitch")
+    ste_figures("first", 60, 61)
+    ste_figures("refined", 63, 64)
 
-    # Fig. 62: the 14-node model, contact nodes per position.
-    sch = glob.glob(os.path.join(data_dir, "mesh_scheme_P*.csv"))[0]
-    s = read(sch)
-    tooth = read(os.path.join(data_dir, "beam_thickness_P%s.csv" % sch.split("_P")[-1][:-4]))
-    ne = len(tooth["element"])
+    # Fig. 62: the refined model, contact nodes per position.
+    s = D("mesh_scheme.csv")
+    ne, P = int(s["tooth_elements"][0]), int(s["positions_per_base_pitch"][0])
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for j, (pr, a1, b1) in enumerate(zip(s["pairs_in_contact"], s["driving_node_A"], s["driving_node_B"])):
         ax.plot(j + 1, a1 - 1, "C0o", ms=7)
@@ -258,7 +269,7 @@ def draw(data_dir, fig_dir):
                         xytext=(6, -3), fontsize=7)
     ax.plot([], [], "C0o", label="pair entering at A (beams 1-2)")
     ax.plot([], [], "C1s", label="second pair (beams 3-4)")
-    ax.set_xlabel("position in the mesh cycle (8 per base pitch);  * = one pair in contact")
+    ax.set_xlabel("position in the mesh cycle (%d per base pitch);  * = one pair in contact" % P)
     ax.set_ylabel("contact node on the driving tooth\n(elements from its root)")
     ax.set_title("Fig. 62: %d-element tooth model: contact node pairs (global numbers,\n"
                  "beams of %d nodes) at each position of the mesh cycle" % (ne, ne + 1), fontsize=9)
@@ -270,15 +281,19 @@ def draw(data_dir, fig_dir):
 
     # Extra (not a thesis figure): convergence in the number of positions per base pitch.
     c = D("convergence.csv")
+    g = D("geometry.csv")
+    eps = g["value"][g["quantity"].index("contact_ratio")]
+    T3 = par["torque_3"]
     fig, ax1 = plt.subplots(figsize=(7, 4))
     ax1.semilogx(c["positions_per_base_pitch"], c["ste_max_T3_um"], "C0o-", base=2, label="max STE (left)")
-    ax1.set_xlabel("positions per base pitch P (tooth elements = floor(1.7547 P))")
-    ax1.set_ylabel("max STE at 300 Nm [um]", color="C0")
+    ax1.set_xlabel("positions per base pitch P (tooth elements = floor(%.4f P))" % eps)
+    ax1.set_ylabel("max STE at %g Nm [um]" % T3, color="C0")
     ax2 = ax1.twinx()
     ax2.semilogx(c["positions_per_base_pitch"], c["mean_stiffness_T3_MN_per_m"], "C1s-", base=2,
                  label="mean stiffness (right)")
     ax2.set_ylabel("mean mesh stiffness mean(F/STE) [MN/m]", color="C1")
-    ax1.set_title("STE model convergence beyond the 14-node model (T = 300 Nm)", fontsize=10)
+    ax1.set_title("STE model convergence beyond the %d-element model (T = %g Nm)"
+                  % (int(c["tooth_elements"][0]), T3), fontsize=10)
     h1, l1 = ax1.get_legend_handles_labels()
     h2, l2 = ax2.get_legend_handles_labels()
     ax1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")

@@ -20,10 +20,6 @@
 
 using namespace gearhb;
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}
-
 TEST(Geometry, BasicRadiiAndPitch) {
   const GearGeometry g;
   EXPECT_NEAR(g.pitch_radius(), 0.075, 1e-15);
@@ -35,7 +31,7 @@ TEST(Geometry, BasicRadiiAndPitch) {
 }
 
 TEST(Geometry, InvoluteFunction) {
-  EXPECT_NEAR(involute(20 * kPi / 180), 0.014904383867336446, 1e-15);   // tan - angle
+  EXPECT_NEAR(involute(20 * M_PI / 180), 0.014904383867336446, 1e-15);   // tan - angle
   EXPECT_EQ(involute(0.0), 0.0);
 }
 
@@ -66,7 +62,7 @@ TEST(Geometry, ContactRadiiAtTheEndsOfThePath) {
 
 TEST(Geometry, ToothThickness) {
   const GearGeometry g;
-  EXPECT_NEAR(tooth_thickness(g, g.pitch_radius()), kPi * 3e-3 / 2, 1e-15);
+  EXPECT_NEAR(tooth_thickness(g, g.pitch_radius()), M_PI * 3e-3 / 2, 1e-15);
   EXPECT_NEAR(tooth_thickness(g, g.base_radius()), 6.529028081764814e-3, 1e-14);
   EXPECT_NEAR(tooth_thickness(g, g.tip_radius()), 2.3262901569979304e-3, 1e-14);
   EXPECT_THROW(tooth_thickness(g, 0.9 * g.base_radius()), std::domain_error);
@@ -81,9 +77,9 @@ TEST(Geometry, ToothAxisAnglesAsThesisPrinted) {
   const ToothAxisAngles t = tooth_axis_angles(g, path_of_contact(g, g), T2CFormula::thesis_rb_sin, true);
   EXPECT_NEAR(t.T2C, 0.0241, 1e-15);
   EXPECT_NEAR(t.T2E, 0.0163, 1e-15);
-  EXPECT_NEAR(t.beta * 180 / kPi, 20.0 - std::atan(0.0163 / 0.0705) * 180 / kPi, 1e-12);
-  EXPECT_NEAR(t.beta * 180 / kPi, 6.98164, 1e-5);
-  EXPECT_NEAR(t.epsilon * 180 / kPi, 4.34591, 1e-5);
+  EXPECT_NEAR(t.beta * 180 / M_PI, 20.0 - std::atan(0.0163 / 0.0705) * 180 / M_PI, 1e-12);
+  EXPECT_NEAR(t.beta * 180 / M_PI, 6.98164, 1e-5);
+  EXPECT_NEAR(t.epsilon * 180 / M_PI, 4.34591, 1e-5);
   EXPECT_NEAR(t.force_variation, 0.0693958, 1e-6);
 }
 
@@ -94,8 +90,8 @@ TEST(Geometry, ToothAxisAnglesCorrectedT2C) {
   const GearGeometry g;
   const ToothAxisAngles t = tooth_axis_angles(g, path_of_contact(g, g), T2CFormula::rb_tan, false);
   EXPECT_NEAR(t.T2C, 25.651510749425153e-3, 1e-14);
-  EXPECT_NEAR(t.beta * 180 / kPi, 5.76328, 1e-5);
-  EXPECT_NEAR(t.epsilon * 180 / kPi, 5.37123, 1e-5);
+  EXPECT_NEAR(t.beta * 180 / M_PI, 5.76328, 1e-5);
+  EXPECT_NEAR(t.epsilon * 180 / M_PI, 5.37123, 1e-5);
 }
 
 TEST(Geometry, Iso6336MeshStiffnessHandComputed) {
@@ -110,4 +106,26 @@ TEST(Geometry, Iso6336MeshStiffnessHandComputed) {
   // Below 100 N/mm the single stiffness drops by (load/100)^0.25.
   const Iso6336Stiffness low = iso6336_mesh_stiffness(50, 50, 0, 0, 20, 1.25, 1.754673284698101, 0.02, 50);
   EXPECT_NEAR(low.c_single / s.c_single, std::pow(0.5, 0.25), 1e-14);
+}
+
+TEST(Geometry, InvoluteToothModelProblemsAndAdmissibleTeeth) {
+  GearGeometry g;
+  EXPECT_EQ(involute_tooth_model_problem(g), "");
+  // Root above the base circle: m z (1 - cos 20 deg) / 2 > hf = 3.75 mm needs
+  // z > 2.5 / (1 - cos 20 deg) = 41.45, so z >= 42 (hand computed).
+  g.teeth = 41;
+  EXPECT_NE(involute_tooth_model_problem(g).find("base circle"), std::string::npos);
+  double from = 0, to = 0;
+  ASSERT_TRUE(admissible_interval(g, [](GearGeometry& t, double v) { t.teeth = int(v); }, 3, 10000, true, &from, &to));
+  EXPECT_EQ(from, 42);
+  // The contact ratio grows with z towards 2 (rack limit 1.9 for ha = m at 20 deg) and
+  // stays below 2: the whole rest of the range admits.
+  EXPECT_EQ(to, 10000);
+  // Dedendum: hf < m z (1 - cos 20) / 2 = 3 x 50 x 0.0603074 / 2 = 4.523 mm.
+  g = GearGeometry();
+  ASSERT_TRUE(admissible_interval(g, [](GearGeometry& t, double v) { t.dedendum = v; }, 1e-6, 1, false, &from, &to));
+  EXPECT_NEAR(to, 0.075 * (1 - std::cos(20 * M_PI / 180)), 1e-12);
+  // A huge module makes the 3 mm addendum negligible: contact ratio < 1.
+  g.module = 1;
+  EXPECT_NE(involute_tooth_model_problem(g).find("contact ratio"), std::string::npos);
 }

@@ -110,15 +110,35 @@ TEST(Ste, ConsistentSplitClosesTheSameApproachOnBothPairs) {
   }
 }
 
-TEST(Ste, MeanStiffnessAndFourierMean) {
+TEST(Ste, MeanStiffnessHandComputed) {
+  // Four positions with STE 1, 2, 2, 4 um at F = 1000 N: F/STE = 1e9, 5e8, 5e8, 2.5e8 N/m,
+  // mean 5.625e8 N/m (by hand).
+  std::vector<MeshPosition> c(4);
+  const double ste[4] = {1e-6, 2e-6, 2e-6, 4e-6};
+  for (int j = 0; j < 4; ++j) c[j].ste = ste[j];
+  EXPECT_NEAR(mean_mesh_stiffness(c, 1000), 5.625e8, 1e-6);
+}
+
+TEST(Ste, MeanStiffnessOfThePiecewiseConstantSteClosedForm) {
+  // Constant 6 mm tooth, no Hertz, 10 elements of Le = 0.675 mm, EI = 74.52 N m^2: the STE
+  // is piecewise constant over the cycle, 4 two-pair positions with k = 2 x 12 EI / (11 Le)^3
+  // (two clamped-guided beams) and 2 one-pair positions (6-18, 7-17) with
+  // k = 3 EI / ((5 Le)^3 + (6 Le)^3) (two cantilevers in series), so
+  //   mean k = [4 x 24 EI / (1331 Le^3) + 2 x 3 EI / (341 Le^3)] / 6
+  //          = (EI / Le^3) (96/1331 + 6/341) / 6 = 2.4230453e11 N/m x 0.01495359 = 3623.322 MN/m
+  SteModel m = thesis_first_model(true);
+  m.hertz = HertzCount::none;
+  const double EI = 74.52, Le = 0.675e-3;
+  const double expected = EI / (Le * Le * Le) * (96.0 / 1331.0 + 6.0 / 341.0) / 6.0;
+  EXPECT_NEAR(expected / 1e6, 3623.322, 1e-3);   // the same formula evaluated by hand
+  EXPECT_NEAR(mean_mesh_stiffness(ste_over_mesh_cycle(m, 300), 4000), expected, 1e-9 * expected);
+}
+
+TEST(Ste, FourierMeanIsTheMeanSte) {
   SteModel m;
   const auto c = ste_over_mesh_cycle(m, 300);
-  double k = 0, mean = 0;
-  for (const auto& p : c) {
-    k += 4000 / p.ste;
-    mean += p.ste;
-  }
-  EXPECT_NEAR(mean_mesh_stiffness(c, 4000), k / c.size(), 1e-6);
+  double mean = 0;
+  for (const auto& p : c) mean += p.ste;
   int H = 0;
   const Eigen::VectorXd a = ste_fourier(c, &H);
   EXPECT_EQ(H, 3);   // 8 samples carry 3 harmonics
@@ -129,5 +149,5 @@ TEST(Ste, ToothForceReadings) {
   SteModel m;
   EXPECT_NEAR(m.force(300), 4000, 1e-9);
   m.tooth_force = ToothForce::over_base_radius;
-  EXPECT_NEAR(m.force(300), 300 / (0.075 * std::cos(20 * 3.14159265358979323846 / 180)), 1e-9);
+  EXPECT_NEAR(m.force(300), 300 / (0.075 * std::cos(20 * M_PI / 180)), 1e-9);
 }

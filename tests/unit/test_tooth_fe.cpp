@@ -132,6 +132,16 @@ TEST(ToothFE, UnheldBeamIsReportedAndDoubleConstraintRefused) {
   m.clamp(0);
   EXPECT_THROW(m.clamp(0), std::logic_error);
   EXPECT_NO_THROW(m.solve());
+  // A second beam held nowhere: the message names it (beam 2, global nodes 6-10).
+  m.add_beam(uniform(4, 1.0), std::vector<double>(4, 1.0));
+  try {
+    m.solve();
+    ADD_FAILURE() << "an unheld beam must throw";
+  } catch (const std::runtime_error& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("(beam 2,"), std::string::npos) << what;
+    EXPECT_NE(what.find("clamp or guide its root"), std::string::npos) << what;
+  }
 }
 
 TEST(ToothFE, ElementEndForcesGiveTheMomentLine) {

@@ -24,12 +24,14 @@
 // radius r1(P) = sqrt(rb1^2 + T1P^2) (and likewise for gear 2 with T2P): the
 // radius at which that contact point meets each tooth.
 //
-// Tooth thickness on the circle of radius r (SPEC §4, thesis §7.5; standard
+// Tooth thickness on the circle of radius r (thesis §7.5; standard
 // involute relation, e.g. Niemann & Winter, Maschinenelemente II, §21):
 //
 //     s(r) = r s0 / r0 + 2 r [inv(alpha0) - inv(a(r))],   s0 = pi m / 2.
 //
 // All lengths in metres, angles in radians unless a name says _deg.
+#include <string>
+
 namespace gearhb {
 
 struct GearGeometry {
@@ -40,7 +42,7 @@ struct GearGeometry {
   double dedendum = 3.75e-3;       // hf [m]
   double face_width = 0.02;        // b [m]
 
-  double pressure_angle() const;   // [rad]
+  double pressure_angle_rad() const;   // alpha0 [rad]
   double pitch_radius() const;     // r0 = m z / 2
   double base_radius() const;      // rb = r0 cos(alpha0)
   double tip_radius() const;       // ra = r0 + ha
@@ -83,7 +85,8 @@ ContactRadii contact_radii(const GearGeometry& g1, const GearGeometry& g2, doubl
 //     variation = [cos(alpha - beta) - cos(alpha + eps)] / cos(alpha + eps).
 //
 // The thesis prints T2C = rb sin(alpha) = 0.0241 m; the correct distance is
-// rb tan(alpha) = r sin(alpha) = 0.0257 m (SPEC §5). Both are offered.
+// rb tan(alpha) = r sin(alpha) = 0.0257 m (chapters/ch07_ste/README.md, "Thesis
+// errors"). Both are offered.
 enum class T2CFormula {
   thesis_rb_sin,   // T2C = rb sin(alpha) (as printed, wrong)
   rb_tan           // T2C = rb tan(alpha) (correct)
@@ -99,5 +102,19 @@ struct ToothAxisAngles {
 // AC = CE = 0.0078 m, T2C = 0.0241 m, T2E = 0.0163 m).
 ToothAxisAngles tooth_axis_angles(const GearGeometry& g, const PathOfContact& path,
                                   T2CFormula formula, bool round_like_thesis);
+
+// What the involute beam tooth model of thesis ch. 7 needs of a pair of identical
+// gears: the root circle outside the base circle (s(r) exists only for r >= rb),
+// a tooth that is not pointed (s(ra) > 0), and a contact ratio between 1 and 2
+// (one or two pairs in contact, never none or three). Returns "" when g meets all
+// three, otherwise the first one it misses, in words with the numbers.
+std::string involute_tooth_model_problem(const GearGeometry& g);
+
+// The values of one field of GearGeometry (the others held fixed) for which
+// involute_tooth_model_problem is "", searched in [lo, hi] (whole numbers if
+// `integer`): every condition is monotone in each field, so the admissible set is
+// one interval [*from, *to]. `set` writes the field. False if no value admits.
+bool admissible_interval(const GearGeometry& g, void (*set)(GearGeometry&, double), double lo,
+                         double hi, bool integer, double* from, double* to);
 
 }  // namespace gearhb

@@ -5,7 +5,7 @@
 
 namespace gearhb {
 
-Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, double alpha_n_deg,
+Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, double pressure_angle_deg,
                                         double hfP_over_mn, double eps_alpha, double face_width_m,
                                         double line_load_N_per_mm) {
   if (z1 <= 0 || z2 <= 0 || !(face_width_m > 0) || !(eps_alpha > 0))
@@ -18,7 +18,7 @@ Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, do
   s.q_prime = C[0] + C[1] / zn1 + C[2] / zn2 + C[3] * x1 / zn1 + C[4] * x2 / zn2 + C[5] * x1 +
               C[6] * x2 + C[7] * x1 * x1 + C[8] * x2 * x2;
   s.c_th = 1.0 / s.q_prime;
-  s.C_B = (1.0 + 0.5 * (1.2 - hfP_over_mn)) * (1.0 - 0.02 * (20.0 - alpha_n_deg));
+  s.C_B = (1.0 + 0.5 * (1.2 - hfP_over_mn)) * (1.0 - 0.02 * (20.0 - pressure_angle_deg));
   if (line_load_N_per_mm > 0.0 && line_load_N_per_mm < 100.0)
     s.load_factor = std::pow(line_load_N_per_mm / 100.0, 0.25);
   s.c_single = s.c_th * s.C_M * s.C_R * s.C_B * s.load_factor;   // cos(beta) = 1 (spur)

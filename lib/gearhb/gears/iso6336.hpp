@@ -30,10 +30,10 @@ struct Iso6336Stiffness {
   double c_gamma_alpha_total = 0;   // c_gamma_alpha b [N/m]
 };
 
-// z1, z2 teeth; x1, x2 profile shift coefficients; alpha_n [deg];
+// z1, z2 teeth; x1, x2 profile shift coefficients; pressure_angle_deg alpha_n [deg];
 // h_fP / m_n the basic-rack dedendum over module; eps_alpha the contact ratio;
 // face width b [m]; line_load F_t / b [N/mm] (<= 0: take the >= 100 N/mm branch).
-Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, double alpha_n_deg,
+Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, double pressure_angle_deg,
                                         double hfP_over_mn, double eps_alpha, double face_width_m,
                                         double line_load_N_per_mm);
 

@@ -1,6 +1,7 @@
 #include "gearhb/gears/ste.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <stdexcept>
 #include <string>
 
@@ -8,6 +9,7 @@
 #include <gsl/gsl_roots.h>
 
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/core/gsl_errors.hpp"
 #include "gearhb/gears/hertz.hpp"
 
 namespace gearhb {
@@ -114,22 +116,34 @@ double split_residual(double FA, void* p) {
          (FB / d->kB + d->nh * palmgren_line_contact_approach(FB, d->length));
 }
 
-// Force of pair A such that both pairs close the same approach (GSL Brent).
+// Force of pair A such that both pairs close the same approach (GSL Brent on
+// [0, F]; g(0) < 0 < g(F) since both approaches grow with the force).
 double consistent_split(double kA, double kB, double F, double length, int nh) {
+  char force[32];
+  std::snprintf(force, sizeof force, "%g", F);
+  const std::string where = std::string("consistent two-pair force split (F = ") + force + " N)";
   SplitData d{kA, kB, F, length, nh};
+  if (!std::isfinite(split_residual(0.0, &d)) || !std::isfinite(split_residual(F, &d)))
+    throw std::runtime_error(where + ": the approach is not finite at the ends of [0, F]");
+  const GslErrorsReturned gsl_policy;
   gsl_function fn{&split_residual, &d};
   gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  gsl_root_fsolver_set(s, &fn, 0.0, F);
+  if (!s) throw std::runtime_error(where + ": GSL could not allocate the Brent solver");
   double root = 0.5 * F;
-  int status = GSL_CONTINUE;
-  for (int it = 0; it < 200 && status == GSL_CONTINUE; ++it) {
-    gsl_root_fsolver_iterate(s);
+  bool converged = false;
+  int status = gsl_root_fsolver_set(s, &fn, 0.0, F);
+  for (int it = 0; it < 200 && status == GSL_SUCCESS && !converged; ++it) {
+    status = gsl_root_fsolver_iterate(s);
+    if (status != GSL_SUCCESS) break;
     root = gsl_root_fsolver_root(s);
-    status = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s),
-                                    0.0, 1e-13);
+    const int test = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-13);
+    converged = test == GSL_SUCCESS;
+    if (!converged && test != GSL_CONTINUE) status = test;
   }
   gsl_root_fsolver_free(s);
-  if (status != GSL_SUCCESS) throw std::runtime_error("consistent_split: Brent did not converge");
+  gsl_check(status, where);
+  if (!converged)
+    throw std::runtime_error(where + ": Brent did not narrow the force of pair A to 1e-13 relative in 200 iterations");
   return root;
 }
 
@@ -148,17 +162,16 @@ TwoPairSolve solve_two_pairs(const ToothBeam& tooth, int kA1, int kA2, int kB1, 
   return r;
 }
 
-std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) {
-  const int P = m.positions_per_base_pitch, ne = m.elements();
-  if (P < 2) throw std::invalid_argument("ste_over_mesh_cycle: need P >= 2 positions per base pitch");
-  if (ne < P) throw std::invalid_argument("ste_over_mesh_cycle: tooth elements (" + std::to_string(ne) +
+std::vector<MeshPosition> mesh_positions(const SteModel& m) {
+  const int P = m.positions_per_base_pitch;
+  if (P < 2 || P > max_positions_per_base_pitch)
+    throw std::invalid_argument("mesh_positions: positions per base pitch P = " + std::to_string(P) +
+                                " outside [2, " + std::to_string(max_positions_per_base_pitch) + "]");
+  const int ne = m.elements();
+  if (ne < P) throw std::invalid_argument("mesh_positions: tooth elements (" + std::to_string(ne) +
                                           ") must be >= positions per base pitch (" + std::to_string(P) + ")");
   if (ne >= 2 * P)
-    throw std::invalid_argument("ste_over_mesh_cycle: tooth elements >= 2 P would put three pairs in contact");
-  const ToothBeam tooth = tooth_beam(m);
-  const double F = m.force(torque), b = m.gear.face_width;
-  const int nh = int(m.hertz);
-  auto hz = [&](double f) { return palmgren_line_contact_approach(f, b); };
+    throw std::invalid_argument("mesh_positions: tooth elements >= 2 P would put three pairs in contact");
   std::vector<MeshPosition> cycle;
   for (int j = 0; j < P; ++j) {
     MeshPosition p;
@@ -169,41 +182,63 @@ std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) 
       p.pairs = 2;
       p.kB1 = p.kA1 + P;
       p.kB2 = ne + 1 - p.kB1;
-      const TwoPairSolve s = solve_two_pairs(tooth, p.kA1, p.kA2, p.kB1, p.kB2, F);
-      p.elastic = p.elastic_linear = s.X;
-      p.force_A = s.force_A;
-      p.force_B = s.force_B;
-      const double kA = fused_pair_stiffness_closed_form(tooth, p.kA1, p.kA2);
-      const double kB = fused_pair_stiffness_closed_form(tooth, p.kB1, p.kB2);
-      p.elastic_closed_form = F / (kA + kB);
-      switch (m.two_pair_hertz) {
-        case TwoPairHertz::equal_split:
-          p.hertz = nh * hz(0.5 * F);
-          break;
-        case TwoPairHertz::fe_split_mean:
-          p.hertz = nh * 0.5 * (hz(s.force_A) + hz(s.force_B));
-          break;
-        case TwoPairHertz::consistent:
-          if (nh > 0) {
-            const double FA = consistent_split(s.stiffness_A, s.stiffness_B, F, b, nh);
-            p.force_A = FA;
-            p.force_B = F - FA;
-            p.elastic = FA / s.stiffness_A;   // each pair's own elastic part
-            p.hertz = nh * hz(FA);
-          }
-          break;
-      }
-    } else {
-      p.pairs = 1;
-      const SinglePairSolve s = solve_single_pair(tooth, p.kA1, p.kA2, F);
-      p.elastic = p.elastic_linear = s.ste_elastic;
-      p.force_A = F;
-      p.hertz = nh * hz(F);
-      p.elastic_closed_form = F * (stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA1]) +
-                                   stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA2]));
     }
-    p.ste = p.elastic + p.hertz;
     cycle.push_back(p);
+  }
+  return cycle;
+}
+
+namespace {
+
+void solve_two_pair_position(const SteModel& m, const ToothBeam& tooth, double F, MeshPosition& p) {
+  const double b = m.gear.face_width;
+  const int nh = int(m.hertz);
+  auto hz = [&](double f) { return palmgren_line_contact_approach(f, b); };
+  const TwoPairSolve s = solve_two_pairs(tooth, p.kA1, p.kA2, p.kB1, p.kB2, F);
+  p.elastic = p.elastic_linear = s.X;
+  p.force_A = s.force_A;
+  p.force_B = s.force_B;
+  const double kA = fused_pair_stiffness_closed_form(tooth, p.kA1, p.kA2);
+  const double kB = fused_pair_stiffness_closed_form(tooth, p.kB1, p.kB2);
+  p.elastic_closed_form = F / (kA + kB);
+  switch (m.two_pair_hertz) {
+    case TwoPairHertz::equal_split:
+      p.hertz = nh * hz(0.5 * F);
+      break;
+    case TwoPairHertz::fe_split_mean:
+      p.hertz = nh * 0.5 * (hz(s.force_A) + hz(s.force_B));
+      break;
+    case TwoPairHertz::consistent:
+      if (nh > 0) {
+        const double FA = consistent_split(s.stiffness_A, s.stiffness_B, F, b, nh);
+        p.force_A = FA;
+        p.force_B = F - FA;
+        p.elastic = FA / s.stiffness_A;   // each pair's own elastic part
+        p.hertz = nh * hz(FA);
+      }
+      break;
+  }
+}
+
+void solve_single_pair_position(const SteModel& m, const ToothBeam& tooth, double F, MeshPosition& p) {
+  const SinglePairSolve s = solve_single_pair(tooth, p.kA1, p.kA2, F);
+  p.elastic = p.elastic_linear = s.ste_elastic;
+  p.force_A = F;
+  p.hertz = int(m.hertz) * palmgren_line_contact_approach(F, m.gear.face_width);
+  p.elastic_closed_form = F * (stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA1]) +
+                               stepped_cantilever_compliance(tooth.x, tooth.EI, tooth.x[p.kA2]));
+}
+
+}  // namespace
+
+std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque) {
+  std::vector<MeshPosition> cycle = mesh_positions(m);
+  const ToothBeam tooth = tooth_beam(m);
+  const double F = m.force(torque);
+  for (MeshPosition& p : cycle) {
+    if (p.pairs == 2) solve_two_pair_position(m, tooth, F, p);
+    else solve_single_pair_position(m, tooth, F, p);
+    p.ste = p.elastic + p.hertz;
   }
   return cycle;
 }

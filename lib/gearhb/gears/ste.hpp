@@ -26,7 +26,13 @@
 //    the line of action).
 //
 // The mean mesh stiffness is the mean over the cycle of F / STE (thesis §8.1,
-// whose printed k = (T/r) V should read (T/r) / V, SPEC §5).
+// whose printed k = (T/r) V should read (T/r) / V: chapters/ch07_ste/README.md,
+// "Thesis errors").
+//
+// Size bound. The four-beam model has 8 (n_e + 1) <= 16 P DOFs and is solved densely
+// (the assembled K, the reduced T'KT and its LDLT factor: three matrices of
+// (16 P)^2 doubles); P <= max_positions_per_base_pitch = 128 keeps that below
+// 3 x 32 MiB and one mesh cycle below a few minutes (P solves of O((16 P)^3)).
 #include <vector>
 
 #include <Eigen/Dense>
@@ -35,6 +41,8 @@
 #include "gearhb/gears/tooth_fe.hpp"
 
 namespace gearhb {
+
+constexpr int max_positions_per_base_pitch = 128;
 
 enum class ThicknessAt : int {
   element_root_node = 0,   // s at the node of the element nearer the root
@@ -101,6 +109,11 @@ struct MeshPosition {
   double elastic_linear = 0.0;      // FE elastic STE with the linear force split [m]
   double elastic_closed_form = 0.0; // the same from the stepped-beam formulas [m]
 };
+// The P positions of one mesh cycle with their contact nodes and pair count
+// (phase, pairs, kA1, kA2, kB1, kB2; nothing solved yet). Throws if P is outside
+// [2, max_positions_per_base_pitch] or n_e is not in [P, 2P).
+std::vector<MeshPosition> mesh_positions(const SteModel& m);
+// The STE at every position of mesh_positions(m) for torque T [N m].
 std::vector<MeshPosition> ste_over_mesh_cycle(const SteModel& m, double torque);
 
 // Mean of F / STE over the positions [N/m].

@@ -84,6 +84,34 @@ void BeamModel::fuse(int master, int slave, double w_sign, bool fuse_rotation) {
 void BeamModel::add_force(int n, double Fy) { force_.at(w_dof(n)) += Fy; }
 void BeamModel::add_moment(int n, double Mx) { force_.at(theta_dof(n)) += Mx; }
 
+// A positive definite reduced matrix means every beam is held. Each pivot is
+// compared with its own diagonal entry (translations and rotations differ in
+// scale by L^2, so a global threshold would be meaningless). The first pivot that
+// fails names the DOF, node and beam that can move freely.
+void BeamModel::check_held(const Eigen::LDLT<Eigen::MatrixXd>& ldlt, const Eigen::MatrixXd& Kr,
+                           const std::vector<int>& column) const {
+  const int n = int(Kr.rows());
+  const Eigen::VectorXd D = ldlt.vectorD();
+  const Eigen::VectorXd diag = (ldlt.transpositionsP() * Kr.diagonal()).eval();
+  Eigen::VectorXi original = Eigen::VectorXi::LinSpaced(n, 0, n - 1);
+  original = (ldlt.transpositionsP() * original).eval();
+  int bad = -1;
+  for (int i = 0; bad < 0 && i < n; ++i)
+    if (!(D[i] > 1e-10 * std::fabs(diag[i]))) bad = i;
+  if (bad < 0 && ldlt.info() != Eigen::Success) bad = 0;
+  if (bad < 0) return;
+  const int dof = int(std::find(column.begin(), column.end(), original[bad]) - column.begin());
+  const int nd = dof / 2;
+  int beam = 0;
+  while (beam + 1 < beams() && beams_[beam + 1].first_node <= nd) ++beam;
+  throw std::runtime_error(
+      "BeamModel::solve: the stiffness matrix is singular at the " + std::string(dof % 2 ? "rotation" : "deflection") +
+      " of node " + std::to_string(nd + 1) + " (beam " + std::to_string(beam + 1) + ", local node " +
+      std::to_string(nd - beams_[beam].first_node) + " from its root; 1-based global numbers): that beam can move "
+      "without straining, so clamp or guide its root or fuse it to a held beam (or its EI is about 1e10 times "
+      "smaller than its neighbours')");
+}
+
 BeamModel::Solution BeamModel::solve() const {
   const int N = dofs();
   // Column of each independent (free) DOF in u.
@@ -130,14 +158,7 @@ BeamModel::Solution BeamModel::solve() const {
         if (col[j] >= 0 && K(i, j) != 0.0) Kr(col[i], col[j]) += factor[i] * factor[j] * K(i, j);
     }
     Eigen::LDLT<Eigen::MatrixXd> ldlt(Kr);
-    // A positive definite reduced matrix means every beam is held. Each pivot
-    // is compared with its own diagonal entry (translations and rotations
-    // differ in scale by L^2, so a global threshold would be meaningless).
-    bool held = ldlt.info() == Eigen::Success && ldlt.isPositive();
-    const Eigen::VectorXd D = ldlt.vectorD();
-    const Eigen::VectorXd diag = (ldlt.transpositionsP() * Kr.diagonal()).eval();
-    for (int i = 0; held && i < n_free; ++i) held = D[i] > 1e-10 * std::fabs(diag[i]);
-    if (!held) throw std::runtime_error("BeamModel::solve: singular system (a beam is not held)");
+    check_held(ldlt, Kr, column);
     const Eigen::VectorXd u = ldlt.solve(fr);
     for (int i = 0; i < N; ++i)
       if (col[i] >= 0) sol.Q[i] += factor[i] * u[col[i]];

@@ -75,8 +75,8 @@ class BeamModel {
     Eigen::VectorXd Q;          // all nodal displacements
     Eigen::VectorXd reactions;  // R = K Q - F
   };
-  // Throws std::runtime_error if the constrained system is singular
-  // (a mechanism: a beam not held anywhere).
+  // Throws std::runtime_error if the constrained system is singular (a mechanism:
+  // a beam not held anywhere), naming the node and beam that can move freely.
   Solution solve() const;
 
   // Nodal forces a beam's elements exert, K_beam q_beam (2 per node, local order):
@@ -97,6 +97,8 @@ class BeamModel {
     double factor = 1.0;  // slave: Q_s = factor * Q_master
   };
   void prescribe(int dof, double value);
+  void check_held(const Eigen::LDLT<Eigen::MatrixXd>& ldlt, const Eigen::MatrixXd& Kr,
+                  const std::vector<int>& column) const;
   void make_slave(int dof, int master_dof, double factor);
   std::vector<Beam> beams_;
   int n_nodes_ = 0;
