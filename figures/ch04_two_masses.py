@@ -9,10 +9,7 @@ import math
 
 import matplotlib.pyplot as plt
 
-from style import legend_styles, mark_contact, plot_branch, read_csv, save
-
-XLIM = (1.6, 3.4)   # the data span 1-4 rad/s; nothing happens outside this window
-CASES = [("20", "g-0.5", -0.5), ("21", "g-0.005", -0.005), ("22", "g0.15", 0.15), ("23", "g0.6", 0.6)]
+from style import case_rows, legend_styles, mark_contact, plot_branch, read_csv, read_params, save
 
 
 def natural_frequencies(data_dir):
@@ -21,17 +18,28 @@ def natural_frequencies(data_dir):
             for st in ("open", "closed")}
 
 
-def frequency_axis(ax, wn):
+def frequency_window(p, wn):
+    """The run's frequency range (params.json) zoomed on the natural frequencies, where
+    everything happens: from 0.72 x the lowest to 1.13 x the highest, widened to a round
+    step (a tenth of the window's decade), inside the range."""
+    ws = wn["open"] + wn["closed"]
+    lo, hi = 0.72 * min(ws), 1.13 * max(ws)
+    step = 10 ** math.floor(math.log10(hi - lo)) / 10
+    lo, hi = round(math.floor(lo / step) * step, 12), round(math.ceil(hi / step) * step, 12)
+    return max(p["omega_min"], lo), min(p["omega_max"], hi)
+
+
+def frequency_axis(ax, wn, p):
     """Natural-frequency reference lines (open dash-dot grey, closed dotted green) and the zoomed w axis."""
     for w in wn["open"]:
         ax.axvline(w, color="0.5", ls="-.", lw=0.8)
     for w in wn["closed"]:
         ax.axvline(w, color="C2", ls=":", lw=0.9)
-    ax.set_xlim(*XLIM)
-    ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 1-4)")
+    ax.set_xlim(*frequency_window(p, wn))
+    ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data %g-%g)" % (p["omega_min"], p["omega_max"]))
 
 
-def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
+def draw_one(data_dir, fig_dir, fig, stem, gap, wn, p):
     d = read_csv(data_dir / ("frc_%s.csv" % stem))
     fig_, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0))
     plot_branch(a1, d, "x_max", "C0", r"$d_{max}$ (upper), $d_{min}$ (lower)")
@@ -48,7 +56,7 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
     if not visible:
         title += "\n(contact level d = -g = %g m is far %s: the masses never %s)" % (
             level, "above" if level > hi else "below", "touch" if level > hi else "separate")
-    frequency_axis(a1, wn)
+    frequency_axis(a1, wn, p)
     a1.set_ylabel(r"relative displacement $d = x_1 - x_2$ [m]")
     a1.set_title(title)
     from matplotlib.lines import Line2D
@@ -64,7 +72,7 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
     for name, c in (("x1", "C0"), ("x2", "C1")):
         e = read_csv(data_dir / ("frc_%s_%s.csv" % (stem, name)))
         plot_branch(a2, e, "x_h1", c, "mass %s" % name[1])
-    frequency_axis(a2, wn)
+    frequency_axis(a2, wn, p)
     a2.set_ylabel("first-harmonic amplitude of each mass [m]")
     a2.set_title("each mass (in-phase resonance at sqrt(k/m), contact-free)")
     a2.legend(fontsize=8, loc="upper right")
@@ -73,4 +81,6 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn):
 
 def draw(data_dir, fig_dir):
     wn = natural_frequencies(data_dir)
-    return [draw_one(data_dir, fig_dir, fig, stem, gap, wn) for fig, stem, gap in CASES]
+    p = read_params(data_dir)
+    return [draw_one(data_dir, fig_dir, "%d" % r["figure"], label, r["gap"], wn, p)
+            for label, r in case_rows(data_dir).items()]

@@ -4,24 +4,40 @@ Each figure: the relative displacement delta = x1 - x2 (x_max upper curve, x_min
 of the harmonic-balance solution for the two gaps of that thesis figure, the contact level
 delta = -g (the bodies touch when delta > -g), the open and closed natural frequencies, and
 in the title the prediction of the analytic regime classifier for each gap.
+Which cases form a figure, their loads and the plotted ranges come from the run
+(cases.csv, params.json).
 """
+import math
+
 import matplotlib.pyplot as plt
 
-from style import plot_branch, read_csv, save
-
-FIGS = [  # figure number, short name, labels of the two gaps
-    (25, "gap_m20_m15", ["fig25_g-20", "fig25_g-15"]),
-    (26, "gap_m1_p6", ["fig26_g-1", "fig26_g6"]),
-    (27, "force_gap_m20_m30", ["fig27_g-20", "fig27_g-30"]),
-    (28, "force_gap_p6_p20", ["fig28_g6", "fig28_g20"]),
-    (29, "mean_gap_m15_m8", ["fig29_g-15", "fig29_g-8"]),
-    (30, "mean_gap_p6_p10", ["fig30_g6", "fig30_g10"]),
-]
+from style import case_rows, plot_branch, read_csv, read_params, save
 
 
-def case_row(cases, label):
-    i = cases["label"].index(label)
-    return {k: v[i] for k, v in cases.items()}
+def figures(rows):
+    """The thesis figures of the run in table order: [(number, [labels of its gaps])]."""
+    out = {}
+    for label, r in rows.items():
+        out.setdefault(int(r["figure"]), []).append(label)
+    return list(out.items())
+
+
+def short_name(rows, labels, base):
+    """File name part: what the figure varies against the first figure's loading
+    (force amplitude Fp, mean force Fm), then its gaps (m = minus, p = plus)."""
+    r = rows[labels[0]]
+    topic = ("force_" if r["Fp"] != base["Fp"] else "") + ("mean_" if r["Fm"] != base["Fm"] else "")
+    gaps = "_".join(("m%g" % -rows[lb]["gap"]) if rows[lb]["gap"] < 0 else ("p%g" % rows[lb]["gap"]) for lb in labels)
+    return topic + "gap_" + gaps
+
+
+def zoom_window(r):
+    """The predicted intermittent band widened by 3.5 band widths on each side (to show the
+    folds of the overhang beside it), rounded outward to the band's decade."""
+    lo, hi = r["intermittent_from"], r["intermittent_to"]
+    lo, hi = lo - 3.5 * (hi - lo), hi + 3.5 * (hi - lo)
+    step = 10 ** math.floor(math.log10(hi - lo))
+    return round(math.floor(lo / step) * step, 12), round(math.ceil(hi / step) * step, 12)
 
 
 def mark_intermittent(ax, d, y, color, ms=3):
@@ -45,14 +61,14 @@ def style_entries():
             Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact (HB)")]
 
 
-def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_closed):
-    rows = [case_row(cases, lb) for lb in labels]
+def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_closed, p):
+    rows = [cases[lb] for lb in labels]
     has_zoom = any(r["intermittent_from"] == r["intermittent_from"] for r in rows)
     if has_zoom:
         fig, (ax, axz) = plt.subplots(1, 2, figsize=(10.5, 5.0), gridspec_kw={"width_ratios": [2, 1]})
     else:
         fig, ax = plt.subplots(figsize=(7.2, 5.0))
-    title = ["Fig. %d: $F_m$ = %g N, $F_p$ = %g N (HB, H = 10)" % (num, rows[0]["Fm"], rows[0]["Fp"])]
+    title = ["Fig. %d: $F_m$ = %g N, $F_p$ = %g N (HB, H = %d)" % (num, rows[0]["Fm"], rows[0]["Fp"], p["H"])]
     zoom = None
     for n, (lb, r) in enumerate(zip(labels, rows)):
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
@@ -60,21 +76,25 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
         g = r["gap"]
         draw_case(ax, d, c, r"g = %g m: $\delta_{max}$ (upper), $\delta_{min}$ (lower)" % g)
         ax.axhline(-g, color=c, ls=":", lw=1.2)
-        ax.annotate(r"contact level $\delta = -g$ = %g m (in contact above)" % -g, (0.52, -g), color=c,
+        x_text = p["omega_min"] + (p["omega_max"] - p["omega_min"]) / 75
+        ax.annotate(r"contact level $\delta = -g$ = %g m (in contact above)" % -g, (x_text, -g), color=c,
                     fontsize=7, xytext=(0, 3), textcoords="offset points")
         title.append("g = %g m, predicted: %s" % (g, r["prediction"].replace("W", r"$\Omega$")))
         if r["intermittent_from"] == r["intermittent_from"]:  # not NaN: zoom on the contact change
             zoom = (d, c, g, r)
     d0, d1 = (read_csv(data_dir / ("frc_%s.csv" % lb)) for lb in labels)
     if len(d0["x_max"]) == len(d1["x_max"]) and max(abs(a - b) for a, b in zip(d0["x_max"], d1["x_max"])) < 1e-9:
+        # halfway between the top of the curves and the lowest contact level: clear of both
+        y = 0.5 * (max(d0["x_max"]) + min(-r["gap"] for r in rows))
         ax.annotate("the two curves coincide: without contact (type 1) the response\n"
                     "does not depend on g (both gaps are never reached)" if rows[0]["gap"] < 0 else
-                    "the two curves differ only by a shift", (0.03, 0.40), xycoords="axes fraction", fontsize=8)
+                    "the two curves differ only by a shift", (0.03, y), xycoords=("axes fraction", "data"),
+                    va="center", fontsize=8)
     for w, name in ((omega_open, "open"), (omega_closed, "closed")):
         ax.axvline(w, color="0.5", ls="-.", lw=0.8)
         ax.annotate(r"$\omega_{%s}$ = %.3f" % (name, w), (w, 0.02), xycoords=("data", "axes fraction"),
                     fontsize=7, rotation=90, xytext=(2, 0), textcoords="offset points", color="0.35")
-    ax.set_xlim(0.5, 2.0)
+    ax.set_xlim(p["omega_min"], p["omega_max"])
     lo, hi = ax.get_ylim()
     ax.set_ylim(lo, hi + 0.18 * (hi - lo))   # room for the legend above the curves
     ax.set_xlabel(r"forcing frequency $\Omega$ [rad/s]")
@@ -89,7 +109,7 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
         axz.axvspan(r["intermittent_from"], r["intermittent_to"], color="0.85", zorder=0,
                     label="predicted intermittent\n(no linear solution valid)")
         axz.axvline(omega_closed, color="0.5", ls="-.", lw=0.8)
-        axz.set_xlim(1.39, 1.44)
+        axz.set_xlim(*zoom_window(r))
         axz.set_xlabel(r"$\Omega$ [rad/s] (zoom)")
         axz.set_ylabel(r"$\delta$ [m]")
         axz.set_title("zoom, g = %g m: outside the grey band the\nlinear full-contact solution coexists" % g,
@@ -98,26 +118,27 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
     return save(fig, fig_dir / ("fig%02d_comparin_singh_%s.png" % (num, short)))
 
 
-def validation_map(data_dir, fig_dir):
+def validation_map(data_dir, fig_dir, k):
+    """k: the spring between the masses [N/m], for the static penetration s = g + Fm/k."""
     v = read_csv(data_dir / "classifier_validation.csv")
     fig, axes = plt.subplots(2, 2, figsize=(9.5, 7.0), sharex=True)
     style = {"type1_open": ("C0", "o", "type 1 predicted (never in contact)"),
              "type2_full": ("C2", "s", "type 2 predicted (always in contact)"),
              "intermittent": ("C3", "D", "intermittent predicted")}
-    combos = [(2.1, 0.05), (2.1, 0.1), (4.1, 0.05), (4.1, 0.1)]
+    combos = sorted(set(zip(v["Fm"], v["Fp"])))   # the grid's (Fm, Fp) pairs
     for ax, (Fm, Fp) in zip(axes.flat, combos):
         idx = [i for i in range(len(v["Fm"])) if v["Fm"][i] == Fm and v["Fp"][i] == Fp]
-        levels = sorted(set(round(v["gap"][i] + Fm, 9) for i in idx))
+        levels = sorted(set(round(v["gap"][i] + Fm / k, 9) for i in idx))
         row = {lv: j for j, lv in enumerate(levels)}   # one row per static penetration s (evenly spaced rows)
         for key, (c, m, lab) in style.items():
-            pts = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["prediction"][i] == key]
+            pts = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["prediction"][i] == key]
             if pts:
                 ax.plot(*zip(*pts), ls="none", marker=m, color=c, ms=4, label=lab)
-        co = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["verdict"][i] == "agree_coexisting"]
+        co = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["verdict"][i] == "agree_coexisting"]
         if co:
             ax.plot(*zip(*co), ls="none", marker="o", mfc="none", mec="k", ms=9,
                     label="agrees, + coexisting intermittent HB solutions")
-        bad = [(v["omega"][i], row[round(v["gap"][i] + Fm, 9)]) for i in idx if v["verdict"][i] in ("disagree", "no_solution")]
+        bad = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["verdict"][i] in ("disagree", "no_solution")]
         if bad:
             ax.plot(*zip(*bad), ls="none", marker="x", color="m", ms=10, mew=2, label="disagrees")
         ax.axhline(sum(1 for lv in levels if lv < 0) - 0.5, color="0.5", lw=0.8)
@@ -149,10 +170,14 @@ def validation_map(data_dir, fig_dir):
 
 
 def draw(data_dir, fig_dir):
-    cases = read_csv(data_dir / "cases.csv")
+    cases = case_rows(data_dir)
+    p = read_params(data_dir)
     import json
     key = json.load(open(data_dir / "key_numbers.json"))
     wo, wc = key["omega_open"]["value"], key["omega_closed"]["value"]
-    out = [frc_figure(data_dir, fig_dir, num, short, labels, cases, wo, wc) for num, short, labels in FIGS]
-    out.append(validation_map(data_dir, fig_dir))
+    figs = figures(cases)
+    base = cases[figs[0][1][0]]
+    out = [frc_figure(data_dir, fig_dir, num, short_name(cases, labels, base), labels, cases, wo, wc, p)
+           for num, labels in figs]
+    out.append(validation_map(data_dir, fig_dir, p["k"]))
     return out

@@ -2,54 +2,39 @@
 // ch04_two_masses: two masses that can touch each other (thesis ch. 4, Figs. 20-23)
 // ===========================================================================
 //
-// The equations (thesis §4, SPEC §4, sign convention of contact.hpp):
+//     m x1'' + c11 x1' + k x1 + Fc = F01 + F1 cos(w t)
+//     m x2'' + c22 x2' + k x2 - Fc = F02 + F2 cos(w t)     Fc = max( kc (g + x1 - x2), 0 )
 //
-//     m x1'' + c11 x1' + k x1 + Fc = F1 cos(w t)
-//     m x2'' + c22 x2' + k x2 - Fc = F2 cos(w t)        Fc = max( kc (g + x1 - x2), 0 )
+// i.e. M x'' + C x' + K x + w Fc = f0 + f cos(w t) with the contact normal w = [1, -1]:
+// the masses touch when the relative displacement d = x1 - x2 exceeds -g (g < 0 a
+// clearance, g > 0 a preload); the contact pushes mass 1 back (-x) and mass 2 forward
+// (+x) (library sign convention, README "Conventions"). Each mass is tied to ground by
+// k; Rayleigh damping C = alpha M + beta K with K the support springs (thesis §4).
+// With equal masses and supports s = (x1 + x2)/2 never strains the contact and d obeys
+// the mass-against-wall oscillator of ch. 3 (contact 2 kc, force F1 - F2): chapter README.
 //
-// i.e. M x'' + C x' + K x + n Fc = f cos(w t) with the contact normal n = [1, -1]:
-// the masses touch when the relative displacement x1 - x2 exceeds -g (g < 0 a
-// clearance, g > 0 a preload), and the contact pushes mass 1 back (-x) and mass 2
-// forward (+x). Each mass is tied to ground by k; Rayleigh damping C = alpha M + beta K
-// (K the support springs, as the thesis writes it). Thesis defaults: m = 1 kg,
-// k = 5 N/m, kc = 2 N/m, alpha = 0, beta = 0.01 s, F1 = 0.025 N, F2 = 0.02 N.
+// The steps, in order (chapter README "Steps"): normal_modes, frequency_responses (per
+// case: its curves and what the case table says it measures: deviation_from_linear,
+// onset_and_peak, time_integration_check); own_case for --case own.
 //
-// Why it is worth a chapter: with equal masses and supports the coordinates
-// s = (x1 + x2)/2 and d = x1 - x2 decouple. The in-phase motion s never strains the
-// contact (resonance sqrt(k/m) open and closed), while d obeys
-//     d'' + (c/m) d' + (k/m) d + (2/m) max(kc (g + d), 0) = ((F1 - F2)/m) cos(w t),
-// the mass-against-wall oscillator of ch. 3 with stiffness k, contact 2 kc and force F1 - F2.
-// Hence the modes: open sqrt(k/m) twice, closed sqrt(k/m) and sqrt((k + 2 kc)/m) = 3 rad/s.
-//
-// Steps in main:
-//   1. modal analysis, open and closed, with the mass normalisation checked;
-//   2. the four frequency responses (harmonic balance + arc-length continuation + Hill);
-//   3. the checks against closed forms (linear FRF of the decoupled d, contact onset);
-//   4. harmonic balance against GSL time integration (g = -0.005, intermittent).
-//
-// What it makes (data in --out, default build/data/ch04_two_masses; figures by
-// figures/ch04_two_masses.py through `make figures`):
-//   Figs. 20-23  g = -0.5, -0.005, 0.15, 0.6     frc_<gap>.csv (d = x1 - x2),
-//                                                 frc_<gap>_x1.csv, frc_<gap>_x2.csv
-//   modes.csv (natural frequencies and mass-normalised shapes), cases.csv,
-//   check_time_integration.csv, key_numbers.json, params.json.
-//
-// Exact commands:
-//   build/bin/ch04_two_masses --out build/data/ch04_two_masses            (every figure)
-//   build/bin/ch04_two_masses --out DIR --set gap=-0.02 --set F1=0.05     (one curve: DIR/frc*.csv)
+// Sample runs:
+//   build/bin/ch04_two_masses                                  every figure's data
+//   build/bin/ch04_two_masses --case quick --out /tmp/q        the regression subset
+//   build/bin/ch04_two_masses --case own --set gap=-0.02 --set F1=0.05 --out /tmp/mine
+//   build/bin/ch04_two_masses --case g-0.005 --set H=20        one curve of the table
 // ===========================================================================
 #include <cmath>
 #include <complex>
-#include <iostream>
 #include <string>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
+#include "gearhb/app/solver_settings.hpp"
+#include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/app/cli.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
-#include "gearhb/core/linear_dynamics.hpp"
-#include "gearhb/app/output.hpp"
 #include "gearhb/hb/response.hpp"
 
 using namespace gearhb;
@@ -59,7 +44,7 @@ using Eigen::VectorXd;
 
 namespace {
 
-// --- parameters: one struct per concern, thesis defaults (§4, §4.3) --------
+// --- parameters: one struct per concern, thesis defaults (§4, §4.3) ---------
 struct TwoMasses {
   double m = 1.0;       // each mass [kg]
   double k = 5.0;       // each support spring to ground [N/m]
@@ -68,198 +53,256 @@ struct TwoMasses {
   double beta = 0.01;   // Rayleigh, stiffness-proportional [s]
 };
 struct Loading {
-  double gap = -0.005;  // g [m] (single-case runs): < 0 clearance, > 0 preload
+  double gap = -0.005;  // g [m]: < 0 clearance, > 0 preload
   double F1 = 0.025;    // harmonic force on mass 1 [N]
   double F2 = 0.02;     // harmonic force on mass 2 [N]
   double F01 = 0.0;     // static force on mass 1 [N]
   double F02 = 0.0;     // static force on mass 2 [N]
 };
-struct Solver {
-  int H = 10;                 // harmonics
-  double omega_min = 1.0;     // [rad/s]
-  double omega_max = 4.0;     // [rad/s]
-  int check_points = 8;       // HB vs time integration comparisons (step 4)
+struct Checks {
+  int check_points = 8; // HB vs time-integration comparisons
 };
 
-LinearSystem open_system(const TwoMasses& p) {
-  const MatrixXd M = p.m * MatrixXd::Identity(2, 2), K = p.k * MatrixXd::Identity(2, 2);
-  return {M, rayleigh_damping(M, K, p.alpha, p.beta), K};
+// What a case of the table measures besides its curve, its contact-state counts and folds.
+enum class Measure {
+  open_linear,       // never touches: the curve must be the open linear response
+  closed_linear,     // never separates: the curve must be the closed linear response
+  onset_and_peak,    // contact onset, peak of d_max, upper fold
+  time_integration,  // HB d_max against GSL time integration
+};
+
+struct Case {
+  std::string label;    // file stem: frc_<label>.csv
+  std::string figure;   // thesis figure
+  Loading load;
+  bool quick;           // part of the regression subset
+  std::vector<Measure> measures;
+};
+
+// The thesis' cases (Figs. 20-23): F1 = 0.025 N, F2 = 0.02 N, four gaps.
+const std::vector<Case> kCases = {
+    {"g-0.5", "20", {-0.5, 0.025, 0.02, 0.0, 0.0}, true, {Measure::open_linear}},
+    {"g-0.005", "21", {-0.005, 0.025, 0.02, 0.0, 0.0}, true, {Measure::onset_and_peak, Measure::time_integration}},
+    {"g0.15", "22", {0.15, 0.025, 0.02, 0.0, 0.0}, true, {Measure::closed_linear}},
+    {"g0.6", "23", {0.6, 0.025, 0.02, 0.0, 0.0}, true, {Measure::closed_linear}},
+};
+
+const Vector2d kNormal(1.0, -1.0);   // d = x1 - x2 = w' x, the plotted coordinate
+
+struct ContactCounts {
+  long intermittent = 0, full = 0;
+};
+
+class TwoMassesChapter {
+ public:
+  explicit TwoMassesChapter(Study& study);
+  void run(Run& run);
+
+ private:
+  TwoMasses sys_;
+  Loading own_;
+  Checks checks_;
+  SolverSettings sol_;
+
+  LinearSystem open_system() const;
+  HarmonicBalance model(const Loading& l) const;
+  void write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const std::string& stem) const;
+  void normal_modes(Run& run) const;
+  void frequency_responses(Run& run) const;
+  void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+               const ContactCounts& n) const;
+  double deviation_from_linear(const HarmonicBalance& hb, const FrequencyCurve& c, bool closed) const;
+  void onset_and_peak(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void time_integration_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void own_case(Run& run) const;
+};
+
+TwoMassesChapter::TwoMassesChapter(Study& study) {
+  ParameterSet& P = study.parameters();
+  P.group("two masses");
+  P.add("m", &sys_.m, "kg", "each mass", Range::positive());
+  P.add("k", &sys_.k, "N/m", "each support spring to ground", Range::positive());
+  P.add("kc", &sys_.kc, "N/m", "contact stiffness on x1 - x2", Range::nonnegative());
+  P.add("alpha", &sys_.alpha, "1/s", "Rayleigh damping, mass-proportional", Range::nonnegative());
+  P.add("beta", &sys_.beta, "s", "Rayleigh damping, stiffness-proportional", Range::nonnegative());
+  P.group("own case (--case own)", true);
+  P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload");
+  P.add("F1", &own_.F1, "N", "harmonic force on mass 1");
+  P.add("F2", &own_.F2, "N", "harmonic force on mass 2");
+  P.add("F01", &own_.F01, "N", "static force on mass 1");
+  P.add("F02", &own_.F02, "N", "static force on mass 2");
+  sol_.omega_min = 1.0;   // the thesis gives no range: 1-4 rad/s holds both natural frequencies
+  sol_.omega_max = 4.0;
+  add_solver_parameters(P, sol_, 2);
+  P.group("checks");
+  P.add("check_points", &checks_.check_points, "-", "HB vs time-integration comparisons", Range::between(1, 50));
+  register_cases(study, kCases);
+  study.check([this](const Selection&) { check_solver_settings(sol_); });
 }
 
-const Vector2d kNormal(1.0, -1.0);   // d = x1 - x2 = w' x
+void TwoMassesChapter::run(Run& run) {
+  if (run.own()) return own_case(run);
+  if (run.whole_chapter()) normal_modes(run);
+  frequency_responses(run);
+}
 
-HarmonicBalance make_model(const TwoMasses& p, const Loading& l, const Solver& s) {
-  UnilateralContact contact{kNormal, p.kc, l.gap, {}};
+LinearSystem TwoMassesChapter::open_system() const {
+  const MatrixXd M = sys_.m * MatrixXd::Identity(2, 2), K = sys_.k * MatrixXd::Identity(2, 2);
+  return {M, rayleigh_damping(M, K, sys_.alpha, sys_.beta), K};
+}
+
+HarmonicBalance TwoMassesChapter::model(const Loading& l) const {
+  UnilateralContact contact{kNormal, sys_.kc, l.gap, {}};
   Excitation f{Vector2d(l.F01, l.F02), Vector2d(l.F1, l.F2), VectorXd::Zero(2)};
-  return HarmonicBalance(open_system(p), {contact}, f, s.H);
+  return HarmonicBalance(open_system(), {contact}, f, sol_.H, sol_.N, contact_quadrature(sol_));
 }
 
-SweepOptions sweep_options(const Solver& s) {
-  SweepOptions o;
-  o.omega_min = s.omega_min;
-  o.omega_max = s.omega_max;
-  return o;
+// One curve as three tables: d = x1 - x2 (<stem>.csv) and each mass (<stem>_x1/_x2.csv).
+void TwoMassesChapter::write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                    const std::string& stem) const {
+  run.write(stem + ".csv", frequency_response_table(hb, c, kNormal));
+  run.write(stem + "_x1.csv", frequency_response_table(hb, c, Vector2d(1, 0)));
+  run.write(stem + "_x2.csv", frequency_response_table(hb, c, Vector2d(0, 1)));
 }
 
-// One case: the curve of d = x1 - x2 and of each mass, written as three tables.
-FrequencyCurve run_case(const HarmonicBalance& hb, const Solver& s, const std::string& stem,
-                        const std::string& out) {
-  const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s), stem), stem);
-  frequency_response_table(hb, c, kNormal).write(out + stem + ".csv");
-  frequency_response_table(hb, c, Vector2d(1, 0)).write(out + stem + "_x1.csv");
-  frequency_response_table(hb, c, Vector2d(0, 1)).write(out + stem + "_x2.csv");
-  return c;
+// Step 1 (thesis §4.1): natural frequencies and mass-normalised shapes, contact open and
+// closed; Phi' M Phi = I and Phi' K Phi = diag(w^2) are checked rather than assumed.
+void TwoMassesChapter::normal_modes(Run& run) const {
+  const LinearSystem open = open_system();
+  const MatrixXd Kc = sys_.kc * kNormal * kNormal.transpose();
+  Table t({"state", "mode", "omega", "phi_x1", "phi_x2"});
+  for (bool closed : {false, true}) {
+    const MatrixXd K = closed ? MatrixXd(open.K + Kc) : open.K;
+    const Modes md = modal_analysis(open.M, K);
+    const std::string st = closed ? "closed" : "open";
+    const MatrixXd PMP = md.Phi.transpose() * open.M * md.Phi;
+    const MatrixXd PKP = md.Phi.transpose() * K * md.Phi;
+    const MatrixXd W2 = md.omega.cwiseProduct(md.omega).asDiagonal();
+    run.key_numbers().add("mass_normalisation_error_" + st, (PMP - MatrixXd::Identity(2, 2)).cwiseAbs().maxCoeff(), "-");
+    run.key_numbers().add("stiffness_diagonalisation_error_" + st, (PKP - W2).cwiseAbs().maxCoeff() / W2.maxCoeff(), "-");
+    for (int j = 0; j < 2; ++j) {
+      run.key_numbers().add("omega_" + st + "_" + std::to_string(j + 1), md.omega[j], "rad/s");
+      t.add_row({st, long(j + 1), md.omega[j], md.Phi(0, j), md.Phi(1, j)});
+    }
+  }
+  run.write("modes.csv", t);
 }
 
-// Largest deviation of the branch's d = x1 - x2 from the linear response of the
-// system with the contact open (closed = false) or permanently closed: static part
-// (K_eff^-1 f0_eff) and first harmonic (closed-form FRF), relative to the first
-// harmonic amplitude. Exact when the contact state really is open / full.
-double deviation_from_linear(const HarmonicBalance& hb, const FrequencyCurve& c, const TwoMasses& p,
-                             bool closed) {
+// Step 2 (Figs. 20-23): one continuation per case of the table, its contact-state
+// counts, and what the case measures.
+void TwoMassesChapter::frequency_responses(Run& run) const {
+  Table index({"label", "figure", "gap", "F1", "F2", "F01", "F02", "points", "folds", "rejected_steps",
+               "intermittent_points", "full_points"});
+  for (const auto& cs : kCases) {
+    if (!run.wants(cs.label, cs.quick)) continue;
+    const HarmonicBalance hb = model(cs.load);
+    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
+    write_curves(run, hb, c, "frc_" + cs.label);
+    const ResponseEvaluator ev(hb, kNormal);
+    ContactCounts n;
+    for (const auto& pt : c.branch.points) {
+      const ContactState s = ev.summarize(pt.X).contact;
+      n.intermittent += s == ContactState::intermittent;
+      n.full += s == ContactState::full;
+    }
+    const Loading& l = cs.load;
+    index.add_row({cs.label, cs.figure, l.gap, l.F1, l.F2, l.F01, l.F02, long(c.branch.points.size()),
+                   long(c.branch.folds.size()), long(c.branch.rejected_steps), n.intermittent, n.full});
+    measure(run, cs, hb, c, n);
+  }
+  run.write("cases.csv", index);
+}
+
+// The key numbers of one case (which ones: the case table).
+void TwoMassesChapter::measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                               const ContactCounts& n) const {
+  KeyNumbers& key = run.key_numbers();
+  key.add("intermittent_points_" + cs.label, double(n.intermittent), "-");
+  key.add("folds_" + cs.label, double(c.branch.folds.size()), "-");
+  if (measures(cs, Measure::open_linear))
+    key.add("deviation_from_open_linear_" + cs.label, deviation_from_linear(hb, c, false), "-");
+  if (measures(cs, Measure::closed_linear)) {
+    key.add("deviation_from_closed_linear_" + cs.label, deviation_from_linear(hb, c, true), "-");
+    key.add("full_points_fraction_" + cs.label, double(n.full) / double(c.branch.points.size()), "-");
+  }
+  if (measures(cs, Measure::onset_and_peak)) onset_and_peak(run, cs, hb, c);
+  if (measures(cs, Measure::time_integration)) time_integration_check(run, hb, c);
+}
+
+// Largest deviation of the branch's d = x1 - x2 from the linear response of the system
+// with the contact open (closed = false) or permanently closed: static part (K^-1 f0)
+// and first harmonic (closed-form FRF) must match, every higher harmonic must vanish;
+// relative to the first-harmonic amplitude. With H = 1 the model has no higher
+// harmonics, so the deviation is measured on the static part and the first harmonic.
+double TwoMassesChapter::deviation_from_linear(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                               bool closed) const {
   LinearSystem sys = hb.system();
   VectorXd f0 = hb.excitation().f0;
   if (closed) {
-    sys.K += p.kc * kNormal * kNormal.transpose();
-    f0 -= p.kc * hb.contacts()[0].gap * kNormal;
+    sys.K += sys_.kc * kNormal * kNormal.transpose();
+    f0 -= sys_.kc * hb.contacts()[0].gap * kNormal;
   }
   const Eigen::VectorXcd F = hb.excitation().fc.cast<std::complex<double>>();
+  const double d0 = kNormal.dot(sys.K.partialPivLu().solve(f0));
   double worst = 0.0;
   for (const auto& pt : c.branch.points) {
     const std::complex<double> d1 = kNormal.cast<std::complex<double>>().dot(frequency_response(sys, F, pt.omega));
-    const double d0 = kNormal.dot(sys.K.partialPivLu().solve(f0));
     const VectorXd dc = hb.project(pt.X, kNormal);
-    // X = [a0, a1, b1, ...]: a1 = Re(Z), b1 = -Im(Z) for the response Re(Z e^{i w t}).
-    const double err = std::max({std::fabs(dc[0] - d0), std::fabs(dc[1] - d1.real()),
-                                 std::fabs(dc[2] + d1.imag()), dc.tail(dc.size() - 3).cwiseAbs().maxCoeff()});
+    // X = [a0, a1, b1, a2, b2, ...]: a1 = Re(Z), b1 = -Im(Z) for the response Re(Z e^{i w t}).
+    const double higher = dc.size() > 3 ? dc.tail(dc.size() - 3).cwiseAbs().maxCoeff() : 0.0;
+    const double err =
+        std::max({std::fabs(dc[0] - d0), std::fabs(dc[1] - d1.real()), std::fabs(dc[2] + d1.imag()), higher});
     worst = std::max(worst, err / std::abs(d1));
   }
   return worst;
 }
 
+// Contact onset on the rising branch (closed form in the reference), the peak of d_max
+// and the first fold met along the branch (the upper end of the hardening overhang).
+void TwoMassesChapter::onset_and_peak(Run& run, const Case& cs, const HarmonicBalance& hb,
+                                      const FrequencyCurve& c) const {
+  KeyNumbers& key = run.key_numbers();
+  const double onset = first_transition(hb, c, touches_somewhere(hb));
+  if (std::isfinite(onset)) key.add("onset_omega_" + cs.label, onset, "rad/s");
+  else run.say(cs.label + ": the masses never touch in the frequency range (no onset_omega)");
+  const ResponseEvaluator ev(hb, kNormal);
+  double peak = -INFINITY, w_peak = 0;
+  for (const auto& pt : c.branch.points) {
+    const double xm = ev.summarize(pt.X).x_max;
+    if (xm > peak) { peak = xm; w_peak = pt.omega; }
+  }
+  key.add("d_max_peak_" + cs.label, peak, "m");
+  key.add("d_max_peak_omega_" + cs.label, w_peak, "rad/s");
+  if (!c.branch.folds.empty()) key.add("upper_fold_omega_" + cs.label, c.branch.folds.front().omega, "rad/s");
+}
+
+// HB d_max against GSL rk8pd time integration at stable intermittent points.
+void TwoMassesChapter::time_integration_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  TimeIntegrationCheckOptions to;
+  to.points = checks_.check_points;
+  const TimeIntegrationCheck chk =
+      run.timed("time integration", [&] { return compare_with_time_integration(hb, c, kNormal, to); });
+  run.write("check_time_integration.csv", time_integration_table(chk));
+  run.key_numbers().add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
+  run.key_numbers().add("time_integration_points", double(chk.points), "-");
+}
+
+// --case own: one curve (d and each mass) with the user's loading.
+void TwoMassesChapter::own_case(Run& run) const {
+  const HarmonicBalance hb = model(own_);
+  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
+  write_curves(run, hb, c, "frc");
+  run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");
+  run.key_numbers().add("folds", double(c.branch.folds.size()), "-");
+  run.key_numbers().add("points", double(c.branch.points.size()), "-");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-  TwoMasses sys;
-  Loading load;
-  Solver sol;
-  ParameterSet P;
-  P.add("m", &sys.m, "kg", "each mass", Range::positive());
-  P.add("k", &sys.k, "N/m", "each support spring", Range::positive());
-  P.add("kc", &sys.kc, "N/m", "contact stiffness on x1 - x2", Range::nonnegative());
-  P.add("alpha", &sys.alpha, "1/s", "Rayleigh damping, mass-proportional", Range::nonnegative());
-  P.add("beta", &sys.beta, "s", "Rayleigh damping, stiffness-proportional", Range::nonnegative());
-  P.add("gap", &load.gap, "m", "g: < 0 clearance, > 0 preload (single-case run)");
-  P.add("F1", &load.F1, "N", "harmonic force on mass 1");
-  P.add("F2", &load.F2, "N", "harmonic force on mass 2");
-  P.add("F01", &load.F01, "N", "static force on mass 1");
-  P.add("F02", &load.F02, "N", "static force on mass 2");
-  P.add("H", &sol.H, "-", "number of harmonics", Range::at_least(1));
-  P.add("omega_min", &sol.omega_min, "rad/s", "start of the frequency range", Range::positive());
-  P.add("omega_max", &sol.omega_max, "rad/s", "end of the frequency range", Range::positive());
-  P.add("check_points", &sol.check_points, "-", "HB vs time-integration comparisons", Range::at_least(1));
-
-  const std::string usage =
-      "ch04_two_masses: two masses on springs that can touch, contact max(kc (g + x1 - x2), 0)\n"
-      "(thesis ch. 4). With no --set other than H/check_points: Figs. 20-23. Otherwise one curve in DIR/frc*.csv.";
-  return run_chapter("ch04_two_masses", usage, argc, argv, P, "build/data/ch04_two_masses",
-                     [&](const CommandLine& cl) {
-    ParameterSet::require(sol.omega_min < sol.omega_max, "parameter 'omega_min' must be < omega_max");
-    const std::string out = cl.out_dir + "/";
-    KeyNumbers key;
-    write_file_atomic(out + "params.json", P.to_json().dump(2) + "\n");
-
-    // ---- Single case: the user's own parameters ----------------------------
-    bool own = false;
-    for (const char* name : {"m", "k", "kc", "alpha", "beta", "gap", "F1", "F2", "F01", "F02", "omega_min", "omega_max"})
-      own = own || P.was_set(name);
-    if (own) {
-      const HarmonicBalance hb = make_model(sys, load, sol);
-      const FrequencyCurve c = run_case(hb, sol, "frc", out);
-      key.add("folds", double(c.branch.folds.size()), "-");
-      key.add("points", double(c.branch.points.size()), "-");
-      key.write(out + "key_numbers.json");
-      std::cout << "ch04_two_masses: " << c.branch.summary() << " -> " << out << "frc.csv\n";
-      return;
-    }
-
-    // ---- Step 1: modal analysis, open and closed contact (thesis §4.1) -----
-    {
-      const LinearSystem open = open_system(sys);
-      const MatrixXd Kc = sys.kc * kNormal * kNormal.transpose();
-      Table t({"state", "mode", "omega", "phi_x1", "phi_x2"});
-      for (bool closed : {false, true}) {
-        const MatrixXd K = closed ? MatrixXd(open.K + Kc) : open.K;
-        const Modes md = modal_analysis(open.M, K);
-        const std::string st = closed ? "closed" : "open";
-        // Phi' M Phi = I and Phi' K Phi = diag(w^2), checked rather than assumed.
-        const MatrixXd PMP = md.Phi.transpose() * open.M * md.Phi;
-        const MatrixXd PKP = md.Phi.transpose() * K * md.Phi;
-        const MatrixXd W2 = md.omega.cwiseProduct(md.omega).asDiagonal();
-        key.add("mass_normalisation_error_" + st, (PMP - MatrixXd::Identity(2, 2)).cwiseAbs().maxCoeff(), "-");
-        key.add("stiffness_diagonalisation_error_" + st, (PKP - W2).cwiseAbs().maxCoeff() / W2.maxCoeff(), "-");
-        for (int j = 0; j < 2; ++j) {
-          key.add("omega_" + st + "_" + std::to_string(j + 1), md.omega[j], "rad/s");
-          t.add_row({st, long(j + 1), md.omega[j], md.Phi(0, j), md.Phi(1, j)});
-        }
-      }
-      t.write(out + "modes.csv");
-    }
-
-    // ---- Step 2: frequency responses of Figs. 20-23 -------------------------
-    struct Case { const char* stem; const char* figure; double gap; };
-    const Case cases[] = {{"g-0.5", "20", -0.5}, {"g-0.005", "21", -0.005},
-                          {"g0.15", "22", 0.15}, {"g0.6", "23", 0.6}};
-    Table index({"stem", "figure", "gap", "points", "folds", "rejected_steps", "intermittent_points",
-                 "full_points"});
-    for (const auto& cs : cases) {
-      Loading l = load;
-      l.gap = cs.gap;
-      const HarmonicBalance hb = make_model(sys, l, sol);
-      const FrequencyCurve c = run_case(hb, sol, std::string("frc_") + cs.stem, out);
-      ResponseEvaluator ev(hb, kNormal);
-      long inter = 0, full = 0;
-      for (const auto& pt : c.branch.points) {
-        const ContactState s = ev.summarize(pt.X).contact;
-        inter += s == ContactState::intermittent;
-        full += s == ContactState::full;
-      }
-      index.add_row({std::string(cs.stem), std::string(cs.figure), cs.gap, long(c.branch.points.size()),
-                     long(c.branch.folds.size()), long(c.branch.rejected_steps), inter, full});
-      std::cout << "ch04_two_masses: g = " << cs.gap << ": " << c.branch.summary() << "\n";
-      const std::string s = cs.stem;
-      key.add("intermittent_points_" + s, double(inter), "-");
-      key.add("folds_" + s, double(c.branch.folds.size()), "-");
-
-      // ---- Step 3: closed-form checks of each case ------------------------
-      if (cs.gap == -0.5)   // never touches: the whole curve is the open linear response
-        key.add("deviation_from_open_linear_" + s, deviation_from_linear(hb, c, sys, false), "-");
-      if (cs.gap > 0) {     // never separates: the whole curve is the closed linear response
-        key.add("deviation_from_closed_linear_" + s, deviation_from_linear(hb, c, sys, true), "-");
-        key.add("full_points_fraction_" + s, double(full) / c.branch.points.size(), "-");
-      }
-      if (cs.gap == -0.005) {
-        key.add("onset_omega_" + s, first_transition(hb, c, touches_somewhere(hb)), "rad/s");
-        double peak = -INFINITY, w_peak = 0;
-        for (const auto& pt : c.branch.points) {
-          const double xm = ev.summarize(pt.X).x_max;
-          if (xm > peak) { peak = xm; w_peak = pt.omega; }
-        }
-        key.add("d_max_peak_" + s, peak, "m");
-        key.add("d_max_peak_omega_" + s, w_peak, "rad/s");
-        if (!c.branch.folds.empty()) key.add("upper_fold_omega_" + s, c.branch.folds.front().omega, "rad/s");
-
-        // ---- Step 4: harmonic balance against GSL time integration ----------
-        TimeIntegrationCheckOptions to;
-        to.points = sol.check_points;
-        const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, kNormal, to);
-        time_integration_table(chk).write(out + "check_time_integration.csv");
-        key.add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
-        key.add("time_integration_points", double(chk.points), "-");
-      }
-    }
-    index.write(out + "cases.csv");
-    key.write(out + "key_numbers.json");
-    std::cout << "ch04_two_masses: data in " << cl.out_dir << "\n";
-  });
+  Study study("ch04_two_masses",
+              "ch04_two_masses: two masses that can touch (thesis ch. 4, Figs. 20-23)\n"
+              "  m xi'' + C x' + k xi +- max(kc (g + x1 - x2), 0) = F0i + Fi cos(w t),  g < 0 clearance, g > 0 preload");
+  TwoMassesChapter chapter(study);
+  return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

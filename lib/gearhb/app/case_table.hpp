@@ -1,0 +1,44 @@
+#pragma once
+// Helpers for a chapter's case table (README "Running a chapter"): the cases are a
+// const table of structs, each with at least
+//   std::string label;               // --case LABEL, file stems
+//   bool quick;                      // part of the regression subset (--case quick)
+//   std::vector<Measure> measures;   // what the case measures besides its curve
+// and the chapter's steps ask the table, never compare labels or parameters.
+#include <algorithm>
+#include <string>
+#include <vector>
+
+#include "gearhb/app/solver_settings.hpp"
+#include "gearhb/app/study.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+
+namespace gearhb {
+
+// Register the table's labels, and which of them form the quick subset, with the study.
+template <class Case>
+void register_cases(Study& study, const std::vector<Case>& table) {
+  std::vector<std::string> labels, quick;
+  for (const auto& c : table) {
+    labels.push_back(c.label);
+    if (c.quick) quick.push_back(c.label);
+  }
+  study.cases(labels, quick);
+}
+
+// Whether the case measures m (m is in its list `measures`).
+template <class Case, class Measure>
+bool measures(const Case& c, Measure m) {
+  return std::find(c.measures.begin(), c.measures.end(), m) != c.measures.end();
+}
+
+// One frequency sweep with the shared solver settings, its wall time recorded in
+// timings.csv as "sweep <label>" and its summary said on stdout.
+inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, const SolverSettings& s,
+                                  const std::string& label) {
+  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, sweep_options(s), label), label); });
+  run.say(label + ": " + c.branch.summary());
+  return c;
+}
+
+}  // namespace gearhb
