@@ -56,8 +56,8 @@ def draw_case(ax, d, color, text, with_label=True, ms=3):
 
 def style_entries():
     from matplotlib.lines import Line2D
-    return [Line2D([], [], color="k", ls="-", label="stable (Hill)"),
-            Line2D([], [], color="k", ls="--", label="unstable (Hill)"),
+    return [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
+            Line2D([], [], color="k", ls="--", label="unstable (Floquet)"),
             Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact (HB)")]
 
 

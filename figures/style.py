@@ -1,7 +1,7 @@
 """Shared plotting helpers: read the chapter CSVs and draw frequency responses.
 
 Convention for every frequency-response figure: stable branches solid,
-Hill-unstable branches dashed; markers show where the contact is intermittent
+unstable branches (Floquet multipliers of the orbit) dashed; markers show where the contact is intermittent
 or full; reference levels (gap, natural frequencies) dotted and labelled.
 """
 import csv
@@ -75,8 +75,8 @@ def mark_contact(ax, d, y="x_max", color="C0", x="omega", scale=1.0):
 def legend_styles(ax):
     """Proxy legend entries explaining line styles and markers."""
     from matplotlib.lines import Line2D
-    return [Line2D([], [], color="k", ls="-", label="stable (Hill)"),
-            Line2D([], [], color="k", ls="--", label="unstable (Hill)"),
+    return [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
+            Line2D([], [], color="k", ls="--", label="unstable (Floquet)"),
             Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact"),
             Line2D([], [], color="k", ls="none", marker="s", ms=3, label="full contact")]
 
