@@ -50,6 +50,16 @@ CHAPTERS = [
         ("fig6[2-4]_*.png", "Figs. 62-64", "The refined 14-node model and its STE and coefficients."),
         ("ch07_extra_*.png", "supplement", "Convergence of the STE beyond 14 nodes."),
     ]},
+    {"program": "ch08_gear_response", "title": "Chapter 8: the gear driven by its own static transmission error", "figures": [
+        ("fig67_*.png", "Fig. 67", "Mesh stiffness k(t) = F0/e(t) over one mesh cycle for 100, 200, 300 N m with its mean kc: "
+         "the jumps are the second tooth pair entering and leaving."),
+        ("fig69_*.png", "Fig. 69", "RMS of the oscillating dynamic transmission error against mesh frequency, one harmonic, three "
+         "torques and the linear closed-contact curve: contact is lost near resonance for every torque (the overhang)."),
+        ("fig70_*.png", "Fig. 70", "The same with five harmonics: superharmonic resonances appear below the primary one."),
+        ("fig70s_time*.png", "supplement", "x(t) and the contact force over two mesh periods at a contact-loss point."),
+        ("fig70s_H*.png", "supplement", "Convergence in H of the 300 N m curve (H = 1, 5, 10, 20): 5 harmonics are not "
+         "converged at the peak (2.8 % below H = 20), see the chapter README."),
+    ]},
 ]
 
 NOT_COMPUTABLE = [
