@@ -149,7 +149,9 @@ HarmonicBalance MassAgainstWall::model(const Loading& l, const SolverSettings& s
 }
 
 FrequencyCurve MassAgainstWall::sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const {
-  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, sweep_options(sol_), label), label); });
+  SweepOptions o = sweep_options(sol_);
+  o.continuation.progress = run.progress_of(label);
+  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;
 }

@@ -92,6 +92,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   o.omega_min = std::min(model_.omega_from, model_.omega_to);
   o.omega_max = std::max(model_.omega_from, model_.omega_to);
   o.continuation.ds_max = model_.ds_max;
+  o.continuation.progress = run.progress_of(model_.name);
   o.direction = model_.omega_from > model_.omega_to ? SweepDirection::down : SweepDirection::up;
   const FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
   // The lowest frequency of the curve where a contact first closes (if any does).

@@ -36,7 +36,9 @@ bool measures(const Case& c, Measure m) {
 // timings.csv as "sweep <label>" and its summary said on stdout.
 inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, const SolverSettings& s,
                                   const std::string& label) {
-  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, sweep_options(s), label), label); });
+  SweepOptions o = sweep_options(s);
+  o.continuation.progress = run.progress_of(label);
+  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;
 }

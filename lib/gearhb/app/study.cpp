@@ -47,6 +47,10 @@ void Run::progress(const std::string& what, long point, double omega, double ste
                point, omega, step);
 }
 
+std::function<void(const ContinuationProgress&)> Run::progress_of(const std::string& what) {
+  return [this, what](const ContinuationProgress& p) { progress(what, p.point, p.omega, p.ds); };
+}
+
 // --- Study ----------------------------------------------------------------------
 
 Study::Study(std::string program, std::string banner)

@@ -29,6 +29,7 @@
 
 #include "gearhb/app/cli.hpp"
 #include "gearhb/app/output.hpp"
+#include "gearhb/hb/continuation.hpp"
 
 namespace gearhb {
 
@@ -63,6 +64,8 @@ class Run {
   // (at most one a second, none with --quiet).
   void say(const std::string& line) const;
   void progress(const std::string& what, long point, double omega, double step);
+  // A continuation progress callback that reports through progress() as `what`.
+  std::function<void(const ContinuationProgress&)> progress_of(const std::string& what);
 
   // Time one step: runs f(), records its wall-clock seconds in timings.csv.
   template <class F>
