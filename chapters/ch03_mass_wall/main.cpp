@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
@@ -75,12 +76,6 @@ const std::vector<Case> kCases = {
 // The curve checked against time integration and used for the sample study.
 const Loading kCheckedLoad{-0.6, 0.01, 0.0};
 
-bool has(const Case& c, Measure m) {
-  for (Measure x : c.measures)
-    if (x == m) return true;
-  return false;
-}
-
 const VectorXd kX = VectorXd::Constant(1, 1.0);   // the plotted coordinate: x itself
 
 class MassAgainstWall {
@@ -94,7 +89,6 @@ class MassAgainstWall {
   SolverSettings sol_;
 
   HarmonicBalance model(const Loading& l, const SolverSettings& s) const;
-  FrequencyCurve sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const;
   void natural_frequencies(Run& run) const;
   void contact_force_law(Run& run) const;
   void frequency_responses(Run& run) const;
@@ -118,12 +112,7 @@ MassAgainstWall::MassAgainstWall(Study& study) {
   P.add("F", &own_.F, "N", "harmonic force amplitude");
   P.add("F0", &own_.F0, "N", "static force");
   add_solver_parameters(P, sol_, 1);
-  std::vector<std::string> labels, quick;
-  for (const auto& c : kCases) {
-    labels.push_back(c.label);
-    if (c.quick) quick.push_back(c.label);
-  }
-  study.cases(labels, quick);
+  register_cases(study, kCases);
   study.check([this](const Selection&) { check_solver_settings(sol_); });
 }
 
@@ -146,14 +135,6 @@ HarmonicBalance MassAgainstWall::model(const Loading& l, const SolverSettings& s
   UnilateralContact wall{kX, osc_.kc, l.gap, {}};
   Excitation f{VectorXd::Constant(1, l.F0), VectorXd::Constant(1, l.F), VectorXd::Zero(1)};
   return HarmonicBalance(sys, {wall}, f, s.H, s.N, contact_quadrature(s));
-}
-
-FrequencyCurve MassAgainstWall::sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const {
-  SweepOptions o = sweep_options(sol_);
-  o.continuation.progress = run.progress_of(label);
-  FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
-  run.say(label + ": " + c.branch.summary());
-  return c;
 }
 
 // Step 1 (Fig. 7): the linear references, open (k) and full contact (k + kc).
@@ -191,12 +172,12 @@ void MassAgainstWall::frequency_responses(Run& run) const {
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.load, sol_);
-    const FrequencyCurve c = sweep(run, hb, cs.label);
+    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
     run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kX));
     index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
-    if (has(cs, Measure::time_marks)) time_histories(run, cs, hb, c, marks);
+    if (measures(cs, Measure::time_marks)) time_histories(run, cs, hb, c, marks);
   }
   run.write("cases.csv", index);
   run.write("marks.csv", marks);
@@ -208,12 +189,12 @@ void MassAgainstWall::frequency_responses(Run& run) const {
 void MassAgainstWall::measure(Run& run, const Case& cs, const HarmonicBalance& hb,
                               const FrequencyCurve& c) const {
   KeyNumbers& key = run.key_numbers();
-  if (has(cs, Measure::onset))
+  if (measures(cs, Measure::onset))
     key.add("onset_omega_" + cs.label, first_transition(hb, c, touches_somewhere(hb)), "rad/s");
-  if (has(cs, Measure::separation))
+  if (measures(cs, Measure::separation))
     key.add("separation_omega_" + cs.label, first_transition(hb, c, opens_somewhere(hb)), "rad/s");
-  if (has(cs, Measure::fold_count)) key.add("folds_" + cs.label, double(c.branch.folds.size()), "-");
-  if (has(cs, Measure::open_resonance)) {
+  if (measures(cs, Measure::fold_count)) key.add("folds_" + cs.label, double(c.branch.folds.size()), "-");
+  if (measures(cs, Measure::open_resonance)) {
     const double wn = std::sqrt(osc_.k / osc_.m);
     VectorXd X = hb.open_contact_solution(wn);
     newton_solve(hb, X, wn, c.scaling);
@@ -254,7 +235,7 @@ void MassAgainstWall::time_histories(Run& run, const Case& cs, const HarmonicBal
 // Step 4: x_max by harmonic balance against GSL time integration (g = -0.6).
 void MassAgainstWall::time_integration_check(Run& run) const {
   const HarmonicBalance hb = model(kCheckedLoad, sol_);
-  const FrequencyCurve c = sweep(run, hb, "check");
+  const FrequencyCurve c = timed_sweep(run, hb, sol_, "check");
   const TimeIntegrationCheck chk =
       run.timed("time integration", [&] { return compare_with_time_integration(hb, c, kX); });
   run.write("check_time_integration.csv", time_integration_table(chk));
@@ -296,7 +277,7 @@ void MassAgainstWall::sample_study(Run& run) const {
 // --case own: one curve with the user's parameters.
 void MassAgainstWall::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_);
-  const FrequencyCurve c = sweep(run, hb, "own");
+  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", frequency_response_table(hb, c, kX));
   const ResponseEvaluator ev(hb, kX);
   double peak = -INFINITY;
