@@ -7,6 +7,8 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "gearhb/core/gsl_errors.hpp"
+
 namespace gearhb {
 
 namespace {
@@ -28,27 +30,33 @@ struct OdeContext {
   Eigen::MatrixXd Minv;
 };
 
-// State y = [x (n), v (n)] and, with variational equations, Phi (2n x 2n, column-major).
-int rhs(double t, const double y[], double dydt[], void* params) {
+// The integration runs in the forcing phase theta = omega t, not in t: the state is
+// y = [x (n), x_theta (n)] with x_theta = dx/dtheta = v / omega, so both halves are
+// displacements and one absolute tolerance fits both, whatever the time unit of the
+// model (a gear mesh at 1e4 rad/s and a unit oscillator alike):
+//   dx/dtheta = x_theta,   dx_theta/dtheta = a(t = theta/omega, x, omega x_theta) / omega^2.
+// With variational equations Phi (2n x 2n, column-major) follows dPhi/dtheta = A_theta Phi,
+// A_theta = [0 I; -Minv Kt / omega^2, -Minv C / omega]; it is the monodromy matrix in
+// (x, x_theta), similar to the one in (x, v) by D = diag(I, omega I).
+int rhs(double theta, const double y[], double dydt[], void* params) {
   auto* c = static_cast<OdeContext*>(params);
   const int n = c->n;
-  Eigen::Map<const Eigen::VectorXd> x(y, n), v(y + n, n);
-  const Eigen::VectorXd a = c->ti->acceleration(t, x, v, c->omega);
+  const double w = c->omega;
+  Eigen::Map<const Eigen::VectorXd> x(y, n), x_theta(y + n, n);
+  const Eigen::VectorXd a = c->ti->acceleration(theta / w, x, w * x_theta, w);
   for (int i = 0; i < n; ++i) {
     dydt[i] = y[n + i];
-    dydt[n + i] = a[i];
+    dydt[n + i] = a[i] / (w * w);
   }
   if (c->variational) {
-    // d/dt Phi = A(t) Phi,  A = [0 I; -Minv (K + sum s_i n n') , -Minv C]
     const auto& sys = c->hb->system();
     Eigen::MatrixXd Kt = sys.K;
-    const double theta = c->omega * t;
     for (const auto& ct : c->hb->contacts())
       Kt += contact_stiffness(ct.kc, gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -c->Minv * Kt;
-    A.bottomRightCorner(n, n) = -c->Minv * sys.C;
+    A.bottomLeftCorner(n, n) = -c->Minv * Kt / (w * w);
+    A.bottomRightCorner(n, n) = -c->Minv * sys.C / w;
     Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
     dPhi = A * Phi;
@@ -64,11 +72,13 @@ struct Driver {
     d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, h0, abs_tol, rel_tol);
   }
   ~Driver() { gsl_odeiv2_driver_free(d); }
-  void advance(double& t, double t1, double* y) {
-    const int status = gsl_odeiv2_driver_apply(d, &t, t1, y);
+  // Advance the phase theta to theta1.
+  void advance(double& theta, double theta1, double* y, double omega) {
+    const int status = gsl_odeiv2_driver_apply(d, &theta, theta1, y);
     if (status != GSL_SUCCESS)
-      throw std::runtime_error(std::string("GSL ODE driver failed at t = ") + std::to_string(t) +
-                               ": " + gsl_strerror(status));
+      throw std::runtime_error("time integration (GSL rk8pd) failed at omega = " + std::to_string(omega) +
+                               ", period " + std::to_string(int(theta / (2.0 * M_PI)) + 1) + ": " +
+                               gsl_strerror(status));
   }
 };
 
@@ -88,26 +98,22 @@ Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
 SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                          double omega, const TimeIntegrationOptions& opt) const {
   const int n = hb_.dofs();
-  gsl_set_error_handler_off();
+  const GslErrorsReturned gsl_errors;
   OdeContext ctx{this, &hb_, omega, n, false, Minv_};
-  const double T = 2.0 * M_PI / omega;
-  Driver drv(ctx, 2 * n, T / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  const double P = 2.0 * M_PI;   // one forcing period in theta
+  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
   std::vector<double> y(2 * n);
   for (int i = 0; i < n; ++i) {
     y[i] = x0[i];
-    y[n + i] = v0[i];
+    y[n + i] = v0[i] / omega;
   }
   SteadyState ss;
-  double t = 0.0;
-  const double vscale = opt.x_scale * omega;
+  double theta = 0.0;
   for (int p = 1; p <= opt.max_periods; ++p) {
     std::vector<double> start = y;
-    drv.advance(t, p * T, y.data());
-    double mis = 0.0;
-    for (int i = 0; i < n; ++i) {
-      mis = std::max(mis, std::fabs(y[i] - start[i]) / opt.x_scale);
-      mis = std::max(mis, std::fabs(y[n + i] - start[n + i]) / vscale);
-    }
+    drv.advance(theta, p * P, y.data(), omega);
+    double mis = 0.0;   // displacements and x_theta = v / omega, both relative to x_scale
+    for (int i = 0; i < 2 * n; ++i) mis = std::max(mis, std::fabs(y[i] - start[i]) / opt.x_scale);
     ss.periods = p;
     ss.mismatch = mis;
     if (mis < opt.periodicity_tol) {
@@ -117,11 +123,11 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
   }
   // Sample the last period.
   ss.x0 = Eigen::Map<Eigen::VectorXd>(y.data(), n);
-  ss.v0 = Eigen::Map<Eigen::VectorXd>(y.data() + n, n);
+  ss.v0 = omega * Eigen::Map<Eigen::VectorXd>(y.data() + n, n);
   ss.x.resize(opt.samples_per_period, n);
-  const double t0 = t;
+  const double theta0 = theta;
   for (int j = 0; j < opt.samples_per_period; ++j) {
-    drv.advance(t, t0 + T * j / opt.samples_per_period, y.data());
+    drv.advance(theta, theta0 + P * j / opt.samples_per_period, y.data(), omega);
     for (int i = 0; i < n; ++i) ss.x(j, i) = y[i];
   }
   return ss;
@@ -130,19 +136,22 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
 Eigen::MatrixXd TimeIntegrator::monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                           double omega, const TimeIntegrationOptions& opt) const {
   const int n = hb_.dofs(), d = 2 * n;
-  gsl_set_error_handler_off();
+  const GslErrorsReturned gsl_errors;
   OdeContext ctx{this, &hb_, omega, n, true, Minv_};
-  const double T = 2.0 * M_PI / omega;
-  Driver drv(ctx, d + d * d, T / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  Driver drv(ctx, d + d * d, 2.0 * M_PI / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
   std::vector<double> y(d + d * d, 0.0);
   for (int i = 0; i < n; ++i) {
     y[i] = x0[i];
-    y[n + i] = v0[i];
+    y[n + i] = v0[i] / omega;
   }
   for (int i = 0; i < d; ++i) y[d + i * d + i] = 1.0;
-  double t = 0.0;
-  drv.advance(t, T, y.data());
-  return Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
+  double theta = 0.0;
+  drv.advance(theta, 2.0 * M_PI, y.data(), omega);
+  // Back to (x, v): Phi_v = D Phi_theta D^-1, D = diag(I, omega I).
+  Eigen::MatrixXd Phi = Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
+  Phi.bottomRows(n) *= omega;
+  Phi.rightCols(n) /= omega;
+  return Phi;
 }
 
 void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,

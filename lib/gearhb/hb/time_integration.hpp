@@ -10,6 +10,11 @@
 // period. Also computes the monodromy matrix (state-transition matrix over one
 // period, from the variational equations) whose eigenvalues, the Floquet
 // multipliers, check Hill's method independently.
+//
+// The integration runs in the forcing phase theta = omega t with the state
+// (x, dx/dtheta = v/omega): both halves are displacements, so the tolerances
+// (abs_tol x x_scale) suit any time unit, and a stiff gear model (omega ~ 1e4
+// rad/s) needs no rescaling by its caller. Inputs and outputs stay in (x, v).
 #include <vector>
 
 #include <Eigen/Dense>
@@ -22,7 +27,7 @@ struct TimeIntegrationOptions {
   double rel_tol = 1e-10, abs_tol = 1e-12;  // GSL driver tolerances (abs_tol scaled by x_scale)
   double x_scale = 1.0;                     // typical displacement, for abs_tol
   int max_periods = 20000;
-  double periodicity_tol = 1e-9;            // |state(T) - state(0)| / x_scale, per period
+  double periodicity_tol = 1e-9;            // max |x(T) - x(0)|, |v(T) - v(0)|/omega over x_scale
   int samples_per_period = 512;
 };
 
