@@ -35,7 +35,7 @@ CHAPTERS = [
     {"program": "ch06_gear_pair", "title": "Chapter 6: a 6-DOF spur-gear pair with external forcing", "figures": [
         ("fig4[0-5]_*.png", "Figs. 40-45", "Mesh deflection Delta against forcing frequency for the thesis' static and "
          "harmonic loads (kc = 5e8 N/m): dashed where unstable; where the mesh opens the curves bend and fold."),
-        ("figS4[0-5]_*.png", "supplement", "The same with the printed kc = 5e2 N/m: every curve is the linear open response "
+        ("figS4[0-5]_*.png", "supplement", "The same with the printed kc = 5e2 N/m (kc_alt): every curve is the linear open response "
          "shifted, which is why 5e8 is the default (chapter README)."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [

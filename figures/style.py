@@ -18,9 +18,11 @@ plt.rcParams.update({"figure.dpi": 110, "savefig.dpi": 130, "axes.grid": True,
 def read_csv(path):
     """CSV -> dict of columns (floats where possible; an empty field, "none", reads as NaN)."""
     with open(path) as f:
-        rows = list(csv.DictReader(f))
-    cols = {}
-    for k in rows[0].keys():
+        reader = csv.DictReader(f)
+        rows = list(reader)
+        names = reader.fieldnames or []
+    cols = {k: [] for k in names}   # a header-only table (e.g. no bifurcations) has empty columns
+    for k in (names if rows else []):
         vals = [r[k] for r in rows]
         try:
             cols[k] = [float(v) if v != "" else float("nan") for v in vals]

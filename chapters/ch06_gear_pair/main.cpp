@@ -3,60 +3,43 @@
 // (thesis ch. 6, Figs. 40-45)
 // ===========================================================================
 //
-// The equation (thesis §6.1, SPEC §4; matrices in lib/include/gearhb/gear_pair.hpp):
-//
 //     q = [x1, y1, th1, x2, y2, th2]
 //     M q'' + C q' + K q = F0 + F cos(w t) + T1 max(kc Delta, 0),   Delta = T2 q
 //     T2 = [cos a, -sin a, rb1, -cos a, sin a, -rb2],  T1 = -T2'
-//     closed mesh: K + Kc,  Kc = -T1 kc T2 = kc T2' T2
-//     C = alpha M + beta K (K = support stiffness; --set damp_mesh=1 uses K + Kc)
+//     closed mesh: K + Kc,  Kc = kc T2' T2;   C = alpha M + beta K (K: supports)
 //     F0 = [0, 0, Fi, 0, 0, -Fi rb2/rb1],  F = Fa [1, 0, 1, 1, 0, 1]
 //
 // Delta > 0: teeth pressed together (mesh force kc Delta); Delta < 0: teeth apart.
-// The plotted coordinate is the mesh deflection Delta (the thesis' "moto relativo"
-// Delta = delta1 - delta2). Harmonic balance (static term kept), exact contact
-// projection, pseudo-arc-length continuation, Hill stability (lib/).
+// The plotted coordinate is Delta (the thesis' "moto relativo"). Matrices in
+// lib/gearhb/gears/gear_pair.hpp; harmonic balance with exact contact intervals,
+// pseudo-arc-length continuation, Floquet stability of the corrected orbit and
+// the bifurcations along each curve (lib/gearhb/hb).
 //
-// What it makes (data in --out, default build/data/ch06_gear_pair; figures by
-// figures/ch06_gear_pair.py):
-//   modes.csv                        natural frequencies, open and closed mesh, both kc
-//   linear_kc<kc>.csv                linear |Delta| of the open and closed systems (F = 1e4)
-//   frc_fig<NN>_kc<kc>.csv           Figs. 40-45 for kc = kc (default 5e8) and kc_alt (5e2)
-//                                    Fig. 40 Fi = 1e5, 41 Fi = 1e7, 42 Fi = -1e8, 43 Fi = -1e6
-//                                    (Fa = 1e4); 44 Fi = 1e7, 45 Fi = -1e8 (Fa = 1e6)
-//   cases.csv                        contact summary of every curve (transitions, ranges)
-//   check_time_integration.csv       HB (H_check = 16) vs GSL rk8pd, Fig. 43, stable intermittent points
-//                                    (stable by Hill AND by the Floquet multipliers; column stable_floquet)
-//   h_study.csv                      peak Delta_max / Delta_min vs H on the Fig. 43 curve (10-20 krad/s)
-//   key_numbers.json, params.json
+// The steps, in order (chapter README "Steps"): normal_modes, linear_responses,
+// frequency_responses (per case of the table: its curve, contact summary and
+// what it measures), time_integration_check, harmonic_convergence; own_case for
+// --case own.
 //
-// Exact commands:
-//   build/bin/ch06_gear_pair --out build/data/ch06_gear_pair            (every figure)
-//   build/bin/ch06_gear_pair --out DIR --set single=1 --set Fi=1e6 --set Fa=1e5
-//                                                   (one curve with your parameters: DIR/frc.csv)
-//   build/bin/ch06_gear_pair --out DIR --set quick=1   (regression subset, a few seconds)
+// Sample runs:
+//   build/bin/ch06_gear_pair                                   every figure's data
+//   build/bin/ch06_gear_pair --case quick --out /tmp/q         the regression subset
+//   build/bin/ch06_gear_pair --case own --set Fi=1e6 --set Fa=1e5 --out /tmp/mine
+//   build/bin/ch06_gear_pair --case fig43 --set H=16           one curve of the table
 // ===========================================================================
-#include <algorithm>
-#include <chrono>
-#include <functional>
-#include <stdexcept>
 #include <cmath>
-#include <cstdio>
-#include <iostream>
-#include <sstream>
+#include <complex>
 #include <string>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
+#include "gearhb/app/solver_settings.hpp"
+#include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/app/cli.hpp"
-#include "gearhb/hb/continuation.hpp"
-#include "gearhb/hb/frequency_sweep.hpp"
-#include "gearhb/gears/gear_pair.hpp"
-#include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
-#include "gearhb/app/output.hpp"
+#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/hb/response.hpp"
-#include "gearhb/hb/time_integration.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -64,37 +47,64 @@ using Eigen::VectorXd;
 
 namespace {
 
-// --- parameters: one struct per concern, thesis defaults -------------------
-// Gear pair: GearPairParameters (gear_pair.hpp), thesis §6.2 table, except kc
-// (printed 5e2 N/m; 5e8 N/m reproduces the text, see README).
-struct Loading {
-  double Fi = -1e6;    // static torque on gear 1 [N m] (single-curve runs)
-  double Fa = 1e4;     // harmonic amplitude of every nonzero entry of F [N or N m]
+// --- parameters: one struct per concern, thesis defaults (§6.2) -------------
+// The gear pair itself: GearPairParameters (gear_pair.hpp), the thesis' table except
+// kc (printed 5e2 N/m; 5e8 N/m reproduces its text: chapter README "The kc question").
+struct MeshStudy {
+  double kc_alt = 5e2;         // the printed mesh stiffness, the other curves of the kc study [N/m]
+  double ds_max_alt = 0.02;    // arc-length step cap of the kc_alt curves (no folds there)
+  int damping_on_mesh = 0;     // 1: beta multiplies K + Kc
 };
-struct Solver {
-  int H = 10;                  // harmonics (h_study.csv: peak within 0.3 % of H = 20)
-  int N = 0;                   // AFT samples per period (0 = 4 (2H+1))
-  double omega_min = 2000.0;   // [rad/s]
-  double omega_max = 62000.0;  // [rad/s] ~1.2 x the highest closed natural frequency
-  double ds_max = 0.005;       // largest scaled arc-length step (library default 0.02 steps over
-                               // the small fold pairs near 7.5-8.4 krad/s of Figs. 40/44, README)
-  double ds_max_alt = 0.02;    // the same for the kc_alt curves (no folds: contact force < 10 N)
-  double kc_alt = 5e2;         // the other mesh stiffness of the kc study [N/m]
-  int single = 0;              // 1 = one curve with Fi, Fa (DIR/frc.csv)
-  int quick = 0;               // 1 = regression subset (key numbers only)
-  int ti_points = 8;           // HB vs time-integration comparisons
-  double tolerance = 1e-9;     // corrector tolerance (scaled; library default 1e-10 is out of
-                               // Newton's reach at some grazing points with ds_max = 0.005, README)
-  int corrector_iterations = 12;  // corrector Newton iterations (library default)
-  int H_check = 16;            // harmonics of the time-integration check (README: H = 10 gives 0.52 %)
+struct Loading {
+  double Fi = -1e6;            // static torque on gear 1 [N m] (gear 2: -Fi rb2/rb1)
+  double Fa = 1e4;             // amplitude of every nonzero entry of F [N or N m]
+};
+struct Corrector {
+  double tolerance = 1e-9;     // Newton tolerance (scaled) of the continuation and transitions
+  int iterations = 12;         // Newton iterations per step
+  double ds_min = 1e-8;        // smallest arc-length step: the branch has C1 corners at grazing (README)
+};
+struct Checks {
+  Loading load{-1e6, 1e4};          // the checked curve: Fig. 43's loading, mesh stiffness kc
+  int H_check = 16;                 // harmonics of the HB vs time-integration sweep
+  int check_points = 8;             // compared points (--case quick: 6)
+  double check_omega_min = 10000;   // its range [rad/s]: Fig. 43's intermittent band
+  double check_omega_max = 20000;
+  double check_omega_max_quick = 12600;   // --case quick: the first stable part of the band
+};
+
+enum class Mesh { kc, kc_alt };          // which mesh stiffness a case uses
+enum class Measure {
+  separation,    // first loss of full contact (a curve starting in full contact)
+  first_touch,   // first contact (a curve starting open)
 };
 
 struct Case {
-  int figure;
-  double Fi, Fa;
+  std::string label;       // --case LABEL; data file frc_<label>.csv
+  std::string figure;      // thesis figure
+  Mesh mesh;
+  Loading load;
+  bool quick;              // part of the regression subset
+  double quick_omega_max;  // end of its range in --case quick [rad/s]: just past the first change
+  std::vector<Measure> measures;
 };
-const std::vector<Case> kCases = {{40, 1e5, 1e4}, {41, 1e7, 1e4}, {42, -1e8, 1e4},
-                                  {43, -1e6, 1e4}, {44, 1e7, 1e6}, {45, -1e8, 1e6}};
+
+// Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
+// chapter README); every figure again with the printed kc (suffix _kc_alt).
+const std::vector<Case> kCases = {
+    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}},
+    {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}},
+    {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
+    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}},
+    {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}},
+    {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}},
+    {"fig40_kc_alt", "40", Mesh::kc_alt, {1e5, 1e4}, false, 0, {}},
+    {"fig41_kc_alt", "41", Mesh::kc_alt, {1e7, 1e4}, false, 0, {}},
+    {"fig42_kc_alt", "42", Mesh::kc_alt, {-1e8, 1e4}, false, 0, {}},
+    {"fig43_kc_alt", "43", Mesh::kc_alt, {-1e6, 1e4}, false, 0, {}},
+    {"fig44_kc_alt", "44", Mesh::kc_alt, {1e7, 1e6}, false, 0, {}},
+    {"fig45_kc_alt", "45", Mesh::kc_alt, {-1e8, 1e6}, false, 0, {}},
+};
 
 VectorXd harmonic_shape(double Fa) {
   VectorXd f(6);
@@ -102,362 +112,267 @@ VectorXd harmonic_shape(double Fa) {
   return f;
 }
 
-// Time unit. The GSL variational equations of the monodromy matrix mix entries of
-// order 1 and w ~ 1e4 under one absolute tolerance (and Hill's companion matrix
-// did too before stability.cpp scaled it; README). The
-// model is therefore solved in the nondimensional time tau = w0 t with w0 the
-// lowest open natural frequency (from the data, not tuned):
-//   M q'' + (C/w0) q' + (K/w0^2) q + T2' max((kc/w0^2) T2 q, 0) = (F0 + F cos(W tau))/w0^2,
-// W = omega/w0. Displacements are unchanged; every omega written is multiplied back by w0.
-HarmonicBalance make_model(const GearPairParameters& g, double Fi, double Fa, const Solver& s, double w0) {
-  LinearSystem sys = gear_pair_system(g);
-  sys.C /= w0;
-  sys.K /= w0 * w0;
-  UnilateralContact mesh = gear_pair_mesh(g);
-  mesh.kc /= w0 * w0;
-  Excitation f{gear_pair_static_torque(g, Fi) / (w0 * w0), harmonic_shape(Fa) / (w0 * w0), VectorXd::Zero(6)};
-  return HarmonicBalance(sys, {mesh}, f, s.H, s.N);
+// Every uncoupled frequency sqrt(k/m), sqrt(kth/I) must be a finite number (a
+// stiffness of 1e308 over a mass of 1e-300 is not a gear): names the pair.
+void check_finite_frequencies(const GearPairParameters& g) {
+  const struct { const char* k; double kv; const char* m; double mv; } pairs[] = {
+      {"kx1", g.kx1, "m1", g.m1}, {"ky1", g.ky1, "m1", g.m1}, {"kth1", g.kth1, "I1", g.I1},
+      {"kx2", g.kx2, "m2", g.m2}, {"ky2", g.ky2, "m2", g.m2}, {"kth2", g.kth2, "I2", g.I2}};
+  for (const auto& p : pairs)
+    ParameterSet::require(std::isfinite(p.kv / p.mv) && p.kv / p.mv > 0.0,
+                          std::string("parameters '") + p.k + "' / '" + p.m + "' give no finite natural frequency");
+  ParameterSet::require(std::isfinite(g.kc * (g.rb1 * g.rb1 + g.rb2 * g.rb2 + 1.0)),
+                        "parameter 'kc' times the base radii squared overflows");
 }
 
-// Largest Floquet multiplier modulus of the HB orbit: monodromy matrix from the GSL
-// variational equations (time_integration.hpp) started on the HB state at phase 0.
-// The independent stability check: on this problem it exposed Hill's missed period
-// doublings (fixed in stability.cpp; a few narrow windows still differ, README), so
-// every point gets both flags.
-double floquet_max(const HarmonicBalance& hb, const VectorXd& X, double omega, double x_scale) {
-  TimeIntegrator ti(hb);
-  VectorXd x0, v0;
-  hb_initial_state(hb, X, omega, x0, v0);
-  TimeIntegrationOptions o;
-  o.x_scale = x_scale;
-  return ti.monodromy(x0, v0, omega, o).eigenvalues().cwiseAbs().maxCoeff();
-}
-std::vector<bool> floquet_stability(const HarmonicBalance& hb, const FrequencyCurve& c) {
-  std::vector<bool> st;
-  for (const auto& p : c.branch.points) st.push_back(floquet_max(hb, p.X, p.omega, c.scaling.x[0]) < 1.0);
-  return st;
+class GearPairChapter {
+ public:
+  explicit GearPairChapter(Study& study);
+  void run(Run& run);
+
+ private:
+  GearPairParameters gear_;
+  MeshStudy mesh_;
+  Loading own_;
+  Corrector corrector_;
+  Checks checks_;
+  SolverSettings sol_;
+
+  GearPairParameters gear(Mesh m) const;
+  HarmonicBalance model(Mesh m, const Loading& l, int H) const;
+  SweepOptions sweep(Mesh m, double omega_min, double omega_max) const;
+  void normal_modes(Run& run) const;
+  void linear_responses(Run& run) const;
+  void frequency_responses(Run& run) const;
+  void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void time_integration_check(Run& run) const;
+  void harmonic_convergence(Run& run) const;
+  void own_case(Run& run) const;
+};
+
+GearPairChapter::GearPairChapter(Study& study) {
+  ParameterSet& P = study.parameters();
+  P.group("gear pair (thesis §6.2)");
+  P.add("pressure_angle_deg", &gear_.pressure_angle_deg, "deg", "pressure angle", Range::between(1.0, 45.0));
+  P.add("I1", &gear_.I1, "kg m^2", "gear 1 polar inertia", Range::positive());
+  P.add("m1", &gear_.m1, "kg", "gear 1 mass", Range::positive());
+  P.add("rb1", &gear_.rb1, "m", "gear 1 base radius", Range::positive());
+  P.add("I2", &gear_.I2, "kg m^2", "gear 2 polar inertia", Range::positive());
+  P.add("m2", &gear_.m2, "kg", "gear 2 mass", Range::positive());
+  P.add("rb2", &gear_.rb2, "m", "gear 2 base radius", Range::positive());
+  P.add("kx1", &gear_.kx1, "N/m", "gear 1 support stiffness along x", Range::positive());
+  P.add("ky1", &gear_.ky1, "N/m", "gear 1 support stiffness along y", Range::positive());
+  P.add("kth1", &gear_.kth1, "N m/rad", "gear 1 torsional support stiffness (thesis prints 'N')", Range::positive());
+  P.add("kx2", &gear_.kx2, "N/m", "gear 2 support stiffness along x", Range::positive());
+  P.add("ky2", &gear_.ky2, "N/m", "gear 2 support stiffness along y", Range::positive());
+  P.add("kth2", &gear_.kth2, "N m/rad", "gear 2 torsional support stiffness (thesis prints 'N')", Range::positive());
+  P.add("kc", &gear_.kc, "N/m", "mesh stiffness (thesis prints 5e2; 5e8 reproduces its text)", Range::positive());
+  P.add("ray_alpha", &gear_.rayleigh_alpha, "1/s", "C = alpha M + beta K", Range::nonnegative());
+  P.add("ray_beta", &gear_.rayleigh_beta, "s", "C = alpha M + beta K", Range::nonnegative());
+  P.group("kc study");
+  P.add("kc_alt", &mesh_.kc_alt, "N/m", "the other mesh stiffness (cases *_kc_alt)", Range::positive());
+  P.add("ds_max_alt", &mesh_.ds_max_alt, "-", "arc-length step cap of the kc_alt curves", Range::between(1e-6, 1.0));
+  P.add("damp_mesh", &mesh_.damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only", Range::between(0, 1));
+  P.group("own case (--case own)", true);
+  P.add("Fi", &own_.Fi, "N m", "static torque on gear 1; gear 2 gets -Fi rb2/rb1");
+  P.add("Fa", &own_.Fa, "N, N m", "harmonic amplitude of F = Fa [1,0,1,1,0,1]", Range::nonnegative());
+  sol_.omega_min = 2000.0;    // ~0.16 x the lowest natural frequency
+  sol_.omega_max = 62000.0;   // ~1.2 x the highest closed one
+  sol_.ds_max = 0.005;        // resolves the small fold pairs near 7.5-8.4 krad/s (README)
+  add_solver_parameters(P, sol_, 6);
+  P.group("corrector");
+  P.add("tolerance", &corrector_.tolerance, "-", "Newton tolerance (scaled residual and step)", Range::between(1e-14, 1e-3));
+  P.add("corr_iter", &corrector_.iterations, "-", "Newton iterations per continuation step", Range::between(1, 100));
+  P.add("ds_min", &corrector_.ds_min, "-", "smallest scaled arc-length step before a sweep gives up", Range::between(1e-14, 1e-3));
+  P.group("checks");
+  P.add("H_check", &checks_.H_check, "-", "harmonics of the HB vs time-integration check",
+        Range::between(1, max_harmonics(6)));
+  P.add("check_points", &checks_.check_points, "-", "HB vs time-integration comparisons", Range::between(1, 50));
+  register_cases(study, kCases);
+  study.check([this](const Selection& s) {
+    check_solver_settings(sol_);
+    check_finite_frequencies(gear_);
+    const double w_low = modal_analysis(gear_pair_mass(gear_), gear_pair_support_stiffness(gear_)).omega.minCoeff();
+    ParameterSet::require(sol_.omega_min >= 0.01 * w_low,
+                          "parameter 'omega_min' must be >= 1 % of the lowest natural frequency (" +
+                              std::to_string(0.01 * w_low) + " rad/s): below it the response is static");
+    const bool check = s.kind == Selection::Kind::all || s.kind == Selection::Kind::quick;
+    ParameterSet::require(!check || (sol_.omega_min <= checks_.check_omega_min && sol_.omega_max >= checks_.check_omega_max),
+                          "parameters 'omega_min'/'omega_max' must contain 10-20 krad/s (the time-integration check)");
+  });
 }
 
-// The standard FRC table (response.hpp columns) with omega back in rad/s, plus the
-// Floquet stability flag (stable = Hill, SPEC §2).
-Table frc_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& floquet,
-                const VectorXd& q, double w0) {
-  ResponseEvaluator ev(hb, q);
-  Table t({"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact", "stable_floquet"});
-  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    const auto r = ev.summarize(c.branch.points[i].X);
-    t.add_row({c.branch.points[i].omega * w0, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean,
-               long(c.stable[i] ? 1 : 0), std::string(to_string(r.contact)), long(floquet[i] ? 1 : 0)});
-  }
-  return t;
+void GearPairChapter::run(Run& run) {
+  if (run.own()) return own_case(run);
+  if (run.whole_chapter()) normal_modes(run), linear_responses(run);
+  frequency_responses(run);
+  if (run.whole_chapter()) time_integration_check(run);
+  if (run.whole_chapter() && !run.quick()) harmonic_convergence(run);
 }
 
-SweepOptions sweep_options(const Solver& s, double wmin, double wmax, double w0) {
-  SweepOptions o;
-  o.omega_min = wmin / w0;
-  o.omega_max = wmax / w0;
-  o.continuation.ds_max = s.ds_max;
-  o.continuation.tolerance = s.tolerance;
-  // (At grazing the contact force is only C1 in the unknowns and Newton slows down;
-  // tolerance and corrector_iterations are settable for experiments, README.)
-  o.continuation.corrector_max_iterations = s.corrector_iterations;
-  o.continuation.ds_initial = std::min(o.continuation.ds_initial, s.ds_max);
+GearPairParameters GearPairChapter::gear(Mesh m) const {
+  GearPairParameters g = gear_;
+  g.kc = m == Mesh::kc ? gear_.kc : mesh_.kc_alt;
+  g.damping_on_mesh = mesh_.damping_on_mesh != 0;
+  return g;
+}
+
+// The model in physical units (s, rad/s): the library scales the unknowns, the
+// residual and the time of its integrations itself.
+HarmonicBalance GearPairChapter::model(Mesh m, const Loading& l, int H) const {
+  const GearPairParameters g = gear(m);
+  Excitation f{gear_pair_static_torque(g, l.Fi), harmonic_shape(l.Fa), VectorXd::Zero(6)};
+  return HarmonicBalance(gear_pair_system(g), {gear_pair_mesh(g)}, f, H, H == sol_.H ? sol_.N : 0,
+                         contact_quadrature(sol_));
+}
+
+SweepOptions GearPairChapter::sweep(Mesh m, double omega_min, double omega_max) const {
+  SweepOptions o = sweep_options(sol_);
+  o.omega_min = omega_min;
+  o.omega_max = omega_max;
+  o.continuation.ds_max = m == Mesh::kc ? sol_.ds_max : mesh_.ds_max_alt;
+  o.continuation.tolerance = corrector_.tolerance;
+  o.continuation.corrector_max_iterations = corrector_.iterations;
+  o.continuation.ds_min = corrector_.ds_min;
   return o;
 }
 
-std::string kc_tag(double kc) {
-  std::ostringstream os;
-  os << kc;   // 5e+08 -> "5e+08"
-  std::string t = os.str();
-  t.erase(std::remove(t.begin(), t.end(), '+'), t.end());
-  return t;   // "5e08", "500"
-}
-
-// Contact summary of one curve along the branch (continuation order).
-struct ContactSummary {
-  int transitions = 0;          // changes of the contact state between consecutive points
-  std::string start, end;       // state at omega_min and at omega_max
-  double intermittent_lo = NAN, intermittent_hi = NAN;   // omega span of non-start states
-  double delta_max = -INFINITY, delta_min = INFINITY;    // over the whole curve [m]
-};
-ContactSummary summarize_contact(const HarmonicBalance& hb, const FrequencyCurve& c, const VectorXd& q,
-                                 double w0) {
-  ResponseEvaluator ev(hb, q);
-  ContactSummary s;
-  ContactState prev = ContactState::open;
-  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    const auto r = ev.summarize(c.branch.points[i].X);
-    const double w = c.branch.points[i].omega * w0;
-    if (i == 0) s.start = to_string(r.contact);
-    else if (r.contact != prev) ++s.transitions;
-    if (std::string(to_string(r.contact)) != s.start) {
-      s.intermittent_lo = std::isnan(s.intermittent_lo) ? w : std::min(s.intermittent_lo, w);
-      s.intermittent_hi = std::isnan(s.intermittent_hi) ? w : std::max(s.intermittent_hi, w);
+// Step 1 (thesis §6.2): natural frequencies, mesh open and closed, for both kc.
+void GearPairChapter::normal_modes(Run& run) const {
+  Table t({"mesh", "kc", "mode", "omega_open", "omega_closed"});
+  for (Mesh m : {Mesh::kc, Mesh::kc_alt}) {
+    const GearPairParameters g = gear(m);
+    const MatrixXd M = gear_pair_mass(g), K = gear_pair_support_stiffness(g);
+    const Modes open = modal_analysis(M, K), closed = modal_analysis(M, K + gear_pair_mesh_stiffness(g));
+    const std::string tag = m == Mesh::kc ? "" : "_kc_alt";
+    for (int i = 0; i < 6; ++i) {
+      t.add_row({tag.empty() ? std::string("kc") : std::string("kc_alt"), g.kc, long(i + 1), open.omega[i],
+                 closed.omega[i]});
+      if (m == Mesh::kc) run.key_numbers().add("omega_open_" + std::to_string(i + 1), open.omega[i], "rad/s");
+      run.key_numbers().add("omega_closed_" + std::to_string(i + 1) + tag, closed.omega[i], "rad/s");
     }
-    s.delta_max = std::max(s.delta_max, r.x_max);
-    s.delta_min = std::min(s.delta_min, r.x_min);
-    prev = r.contact;
   }
-  s.end = to_string(prev);
-  return s;
+  run.write("modes.csv", t);
 }
 
-// First omega (solver units) along the branch where `state` switches on; NaN if never.
-// Up to the first contact change the branch is exactly the linear solution of the
-// starting state (open, or closed for a full-contact start). The HB branch gives the
-// bracket [P[i-1], P[i]]; the point before it is checked against that linear solution
-// (relative 1e-6, else an error), and the change is located inside the bracket by
-// bisection on the linear solution. (The library's first_transition corrects with a
-// fixed 1e-12 step tolerance that this problem cannot meet at grazing; README.)
-double first_change(const HarmonicBalance& hb, const FrequencyCurve& c,
-                    const std::function<bool(const VectorXd&)>& state, bool closed_start) {
-  const auto& P = c.branch.points;
-  auto linear = [&](double w) { return closed_start ? hb.closed_contact_solution(w) : hb.open_contact_solution(w); };
-  if (P.empty() || state(P[0].X)) return P.empty() ? NAN : P[0].omega;
-  for (std::size_t i = 1; i < P.size(); ++i) {
-    if (!state(P[i].X)) continue;
-    const VectorXd L = linear(P[i - 1].omega);
-    if ((L - P[i - 1].X).norm() > 1e-6 * L.norm())
-      throw std::runtime_error("first_change: the branch before the first contact change is not the linear solution");
-    double lo = P[i - 1].omega, hi = P[i].omega;
-    if (state(linear(lo)) || !state(linear(hi))) return 0.5 * (lo + hi);   // (not expected)
-    while (hi - lo > 1e-13 * hi) {
-      const double mid = 0.5 * (lo + hi);
-      (state(linear(mid)) ? hi : lo) = mid;
+// Step 2: the linear |Delta| of the open and the closed system under F (Fa = 1e4),
+// the background of every figure.
+void GearPairChapter::linear_responses(Run& run) const {
+  for (Mesh m : {Mesh::kc, Mesh::kc_alt}) {
+    const GearPairParameters g = gear(m);
+    LinearSystem open = gear_pair_system(g), closed = open;
+    closed.K += gear_pair_mesh_stiffness(g);
+    const VectorXd T2 = gear_pair_T2(g);
+    const Eigen::VectorXcd F = harmonic_shape(1e4).cast<std::complex<double>>();
+    Table t({"omega", "delta_open", "delta_closed"});
+    for (int i = 0; i <= 3000; ++i) {
+      const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 3000.0;
+      t.add_row({w, std::abs(T2.dot(frequency_response(open, F, w))), std::abs(T2.dot(frequency_response(closed, F, w)))});
     }
-    return 0.5 * (lo + hi);
+    run.write(m == Mesh::kc ? "linear_kc.csv" : "linear_kc_alt.csv", t);
   }
-  return NAN;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+// Step 3 (Figs. 40-45): one continuation per case of the table; its curve, its
+// bifurcations, its contact summary (cases.csv) and what it measures.
+void GearPairChapter::frequency_responses(Run& run) const {
+  Table index({"label", "figure", "mesh", "kc", "Fi", "Fa", "static_delta_open", "static_delta_closed", "points",
+               "folds", "unstable_points", "bifurcations", "rejected_steps", "transitions", "start", "end",
+               "changed_lo", "changed_hi", "delta_max", "delta_min"});
+  for (const Case& cs : kCases) {
+    if (!run.wants(cs.label, cs.quick)) continue;
+    const HarmonicBalance hb = model(cs.mesh, cs.load, sol_.H);
+    const double w_end = run.quick() ? cs.quick_omega_max : sol_.omega_max;
+    const FrequencyCurve c = timed_sweep(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label);
+    const GearPairParameters g = gear(cs.mesh);
+    const VectorXd T2 = gear_pair_T2(g);
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, T2));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    const ContactHistory h = contact_history(hb, c.branch, T2);
+    const VectorXd F0 = gear_pair_static_torque(g, cs.load.Fi);
+    const MatrixXd K = gear_pair_support_stiffness(g);
+    long unstable = 0;
+    for (bool st : c.stable) unstable += st ? 0 : 1;
+    index.add_row({cs.label, cs.figure, std::string(cs.mesh == Mesh::kc ? "kc" : "kc_alt"), g.kc, cs.load.Fi,
+                   cs.load.Fa, T2.dot(K.ldlt().solve(F0)), T2.dot((K + gear_pair_mesh_stiffness(g)).ldlt().solve(F0)),
+                   long(c.branch.points.size()), long(c.branch.folds.size()), unstable, long(c.bifurcations.size()),
+                   long(c.branch.rejected_steps), long(h.transitions), std::string(to_string(h.start)),
+                   std::string(to_string(h.end)), cell(std::isfinite(h.changed_lo), h.changed_lo),
+                   cell(std::isfinite(h.changed_hi), h.changed_hi), h.x_max, h.x_min});
+    run.key_numbers().add("transitions_" + cs.label, h.transitions, "-");
+    measure(run, cs, hb, c);
+  }
+  run.write("cases.csv", index);
 }
 
-// HB x_max of Delta against GSL rk8pd integrated to a periodic steady state, at up to
-// `points` points spread evenly over the stable intermittent part of the branch:
-// Hill-stable AND Floquet-stable (where they differ the orbit may be period-2 and the
-// integration never becomes 1-periodic, README), and at least
-// 0.2 % in omega away from any fold, and not grazing (x_max >= 10 % of the amplitude);
-// lib's compare_with_time_integration with the Floquet test as its `accept` filter.
-void time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c, const VectorXd& q, double w0,
-                            int points, const std::string& out, KeyNumbers& key) {
-  const auto t0 = std::chrono::steady_clock::now();
-  long hill_only = 0;   // Hill-stable candidates that Floquet calls unstable
-  TimeIntegrationCheckOptions o;
-  o.points = points;
-  o.min_crest_fraction = 0.1;
-  o.omega_factor = w0;
-  o.accept = [&](std::size_t i) {
-    const auto& p = c.branch.points[i];
-    const bool ok = floquet_max(hb, p.X, p.omega, c.scaling.x[0]) < 1.0;
-    hill_only += !ok;
-    return ok;
-  };
-  const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, q, o);
-  time_integration_table(chk).write(out + "check_time_integration.csv");
-  key.add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
-  key.add("time_integration_points", double(chk.points), "-");
-  std::cout << "ch06_gear_pair: time-integration check (Fig. 43): " << chk.points << " points, worst "
-            << chk.worst_rel_diff << "; " << hill_only << " Hill-stable intermittent points are Floquet-unstable ("
-            << seconds_since(t0) << " s)\n";
+// The first contact change along a curve (which one: the case table), located on
+// the branch by bisection with the chapter's corrector tolerance.
+void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  TransitionOptions to;
+  to.corrector_tolerance = corrector_.tolerance;
+  for (Measure m : cs.measures) {
+    const double w = first_transition(hb, c, m == Measure::separation ? opens_somewhere(hb) : touches_somewhere(hb), to);
+    if (std::isfinite(w)) run.key_numbers().add("first_change_omega_" + cs.label, w, "rad/s");
+    else run.say(cs.label + ": the contact state never changes in the frequency range");
+  }
+}
+
+// Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the
+// periodic steady state, at stable intermittent points of Fig. 43's band whose
+// crest does not graze (Delta_max >= 10 % of the amplitude).
+void GearPairChapter::time_integration_check(Run& run) const {
+  const HarmonicBalance hb = model(Mesh::kc, checks_.load, checks_.H_check);
+  const double w_end = run.quick() ? checks_.check_omega_max_quick : checks_.check_omega_max;
+  SweepOptions o = sweep(Mesh::kc, checks_.check_omega_min, w_end);
+  o.continuation.ds_max = 0.02;   // the library default: 10-20 krad/s has no fold pair it steps over
+  const FrequencyCurve c = timed_sweep(run, hb, o, "check (Fig. 43, H = " + std::to_string(checks_.H_check) + ")");
+  TimeIntegrationCheckOptions to;
+  to.points = run.quick() ? 6 : checks_.check_points;
+  to.min_crest_fraction = 0.1;
+  const TimeIntegrationCheck chk = run.timed("time integration", [&] {
+    return compare_with_time_integration(hb, c, gear_pair_T2(gear(Mesh::kc)), to);
+  });
+  run.write("check_time_integration.csv", time_integration_table(chk));
+  run.key_numbers().add("xmax_rel_diff_hb_vs_time_integration", chk.worst_rel_diff, "-");
+  run.key_numbers().add("time_integration_points", double(chk.points), "-");
+  run.say("time-integration check (Fig. 43): " + std::to_string(chk.points) + " points, worst relative difference " +
+          std::to_string(chk.worst_rel_diff));
+}
+
+// Step 5: convergence in H of the peak Delta_max / Delta_min of Fig. 43 over 10-20 krad/s.
+void GearPairChapter::harmonic_convergence(Run& run) const {
+  Table t({"H", "points", "folds", "delta_max_peak", "delta_min_peak"});
+  for (int H : {3, 5, 8, 10, 14, 20}) {
+    const HarmonicBalance hb = model(Mesh::kc, checks_.load, H);
+    SweepOptions o = sweep(Mesh::kc, checks_.check_omega_min, checks_.check_omega_max);
+    o.stability = StabilityMethod::none;   // only the peaks are compared
+    const FrequencyCurve c = timed_sweep(run, hb, o, "H study H = " + std::to_string(H));
+    const ContactHistory h = contact_history(hb, c.branch, gear_pair_T2(gear(Mesh::kc)));
+    t.add_row({long(H), long(c.branch.points.size()), long(c.branch.folds.size()), h.x_max, h.x_min});
+  }
+  run.write("h_study.csv", t);
+}
+
+// --case own: one curve with the user's static torque and forcing (kc).
+void GearPairChapter::own_case(Run& run) const {
+  const HarmonicBalance hb = model(Mesh::kc, own_, sol_.H);
+  const FrequencyCurve c = timed_sweep(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own");
+  const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
+  run.write("frc.csv", frequency_response_table(hb, c, T2));
+  run.write("bifurcations.csv", bifurcation_table(c));
+  const ContactHistory h = contact_history(hb, c.branch, T2);
+  run.key_numbers().add("transitions", h.transitions, "-");
+  run.key_numbers().add("folds", double(c.branch.folds.size()), "-");
+  run.key_numbers().add("delta_max", h.x_max, "m");
+  run.key_numbers().add("delta_min", h.x_min, "m");
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  GearPairParameters gp;
-  Loading load;
-  Solver sol;
-  int damping_on_mesh = 0;
-  ParameterSet P;
-  P.add("alpha_deg", &gp.alpha_deg, "deg", "pressure angle", Range::between(0.0, 89.0));
-  P.add("I1", &gp.I1, "kg m^2", "gear 1 polar inertia", Range::positive());
-  P.add("m1", &gp.m1, "kg", "gear 1 mass", Range::positive());
-  P.add("rb1", &gp.rb1, "m", "gear 1 base radius", Range::positive());
-  P.add("I2", &gp.I2, "kg m^2", "gear 2 polar inertia", Range::positive());
-  P.add("m2", &gp.m2, "kg", "gear 2 mass", Range::positive());
-  P.add("rb2", &gp.rb2, "m", "gear 2 base radius", Range::positive());
-  P.add("kx1", &gp.kx1, "N/m", "gear 1 support stiffness along x", Range::positive());
-  P.add("ky1", &gp.ky1, "N/m", "gear 1 support stiffness along y", Range::positive());
-  P.add("kth1", &gp.kth1, "N m/rad", "gear 1 torsional support stiffness (thesis prints 'N')", Range::positive());
-  P.add("kx2", &gp.kx2, "N/m", "gear 2 support stiffness along x", Range::positive());
-  P.add("ky2", &gp.ky2, "N/m", "gear 2 support stiffness along y", Range::positive());
-  P.add("kth2", &gp.kth2, "N m/rad", "gear 2 torsional support stiffness (thesis prints 'N')", Range::positive());
-  P.add("kc", &gp.kc, "N/m", "mesh stiffness (thesis prints 5e2; 5e8 reproduces its text, README)", Range::positive());
-  P.add("kc_alt", &sol.kc_alt, "N/m", "the other mesh stiffness of the kc study", Range::positive());
-  P.add("ray_alpha", &gp.rayleigh_alpha, "1/s", "C = alpha M + beta K", Range::nonnegative());
-  P.add("ray_beta", &gp.rayleigh_beta, "s", "C = alpha M + beta K", Range::nonnegative());
-  P.add("damp_mesh", &damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only", Range::between(0, 1));
-  P.add("Fi", &load.Fi, "N m", "static torque on gear 1 (single=1); gear 2 gets -Fi rb2/rb1");
-  P.add("Fa", &load.Fa, "N, N m", "harmonic amplitude of F = Fa [1,0,1,1,0,1] (single=1)", Range::nonnegative());
-  P.add("H", &sol.H, "-", "number of harmonics", Range::at_least(1));
-  P.add("N", &sol.N, "-", "AFT time samples per period (0 = 4(2H+1))", Range::nonnegative());
-  P.add("omega_min", &sol.omega_min, "rad/s", "start of the frequency range (>= 1 % of the lowest natural frequency)", Range::positive());
-  P.add("omega_max", &sol.omega_max, "rad/s", "end of the frequency range", Range::positive());
-  P.add("tolerance", &sol.tolerance, "-", "corrector tolerance (scaled residual and step)", Range::positive());
-  P.add("corr_iter", &sol.corrector_iterations, "-", "corrector Newton iterations per step", Range::at_least(1));
-  P.add("ds_max", &sol.ds_max, "-", "largest scaled arc-length step", Range::positive());
-  P.add("ds_max_alt", &sol.ds_max_alt, "-", "largest scaled arc-length step of the kc_alt curves", Range::positive());
-  P.add("ti_points", &sol.ti_points, "-", "HB vs time-integration comparison points", Range::at_least(1));
-  P.add("H_check", &sol.H_check, "-", "harmonics of the HB vs time-integration check (Fig. 43)", Range::at_least(1));
-  P.add("single", &sol.single, "-", "1: one curve with Fi, Fa into DIR/frc.csv", Range::between(0, 1));
-  P.add("quick", &sol.quick, "-", "1: regression subset (key numbers, reduced sizes)", Range::between(0, 1));
-
-  const std::string usage =
-      "ch06_gear_pair: 6-DOF spur-gear pair, M q'' + C q' + K q = F0 + F cos(w t) + T1 max(kc T2 q, 0)\n"
-      "(thesis ch. 6, Figs. 40-45). Default: every figure for kc and kc_alt. single=1: one curve.";
-  return run_chapter("ch06_gear_pair", usage, argc, argv, P, "build/data/ch06_gear_pair",
-                     [&](const CommandLine& cl) {
-    gp.damping_on_mesh = damping_on_mesh != 0;
-    ParameterSet::require(sol.omega_min < sol.omega_max, "parameter 'omega_min' must be < omega_max");
-    ParameterSet::require(sol.N == 0 || sol.N >= 4 * sol.H + 2,
-                          "parameter 'N' must be 0 or >= 4H+2 (" + std::to_string(4 * sol.H + 2) + ")");
-    // Below ~1 % of the lowest natural frequency the response is quasi-static
-    // (1e-4 relative dynamic amplification) and the arc length would spend its steps there.
-    const double w_low = modal_analysis(gear_pair_mass(gp), gear_pair_support_stiffness(gp)).omega.minCoeff();
-    {
-      std::ostringstream os;
-      os << "parameter 'omega_min' must be >= 1 % of the lowest natural frequency (" << 0.01 * w_low << " rad/s)";
-      ParameterSet::require(sol.omega_min >= 0.01 * w_low, os.str());
-    }
-    const double w0 = w_low;   // time unit of the solver (make_model)
-    const std::string out = cl.out_dir + "/";
-    const VectorXd T2 = gear_pair_T2(gp);
-    KeyNumbers key;
-    write_file_atomic(out + "params.json", P.to_json().dump(2) + "\n");
-
-    // ---- Single curve: the user's own parameters ---------------------------
-    if (sol.single) {
-      HarmonicBalance hb = make_model(gp, load.Fi, load.Fa, sol, w0);
-      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol, sol.omega_min, sol.omega_max, w0), "frc"), "frc");
-      frc_table(hb, c, floquet_stability(hb, c), T2, w0).write(out + "frc.csv");
-      const ContactSummary s = summarize_contact(hb, c, T2, w0);
-      key.add("transitions", s.transitions, "-");
-      key.add("folds", double(c.branch.folds.size()), "-");
-      key.add("delta_max", s.delta_max, "m");
-      key.add("delta_min", s.delta_min, "m");
-      key.write(out + "key_numbers.json");
-      std::cout << "ch06_gear_pair: " << c.branch.summary() << " -> " << out << "frc.csv\n";
-      return;
-    }
-
-    // ---- Step 1: modal analysis, open and closed mesh, both kc -------------
-    const std::vector<double> kcs = {gp.kc, sol.kc_alt};
-    {
-      Table t({"kc", "mode", "omega_open", "omega_closed"});
-      for (std::size_t j = 0; j < kcs.size(); ++j) {
-        GearPairParameters g = gp;
-        g.kc = kcs[j];
-        const MatrixXd M = gear_pair_mass(g), K = gear_pair_support_stiffness(g);
-        const Modes open = modal_analysis(M, K), closed = modal_analysis(M, K + gear_pair_mesh_stiffness(g));
-        for (int i = 0; i < 6; ++i) {
-          t.add_row({kcs[j], long(i + 1), open.omega[i], closed.omega[i]});
-          if (j == 0) key.add("omega_open_" + std::to_string(i + 1), open.omega[i], "rad/s");
-          key.add("omega_closed_" + std::to_string(i + 1) + "_kc" + kc_tag(kcs[j]), closed.omega[i], "rad/s");
-        }
-      }
-      t.write(out + "modes.csv");
-    }
-
-    // ---- Step 2: linear |Delta| of the open and closed systems -------------
-    if (!sol.quick)
-      for (double kc : kcs) {
-        GearPairParameters g = gp;
-        g.kc = kc;
-        LinearSystem open = gear_pair_system(g), closed = open;
-        closed.K += gear_pair_mesh_stiffness(g);
-        Table t({"omega", "delta_open", "delta_closed"});
-        const Eigen::VectorXcd F = harmonic_shape(1e4).cast<std::complex<double>>();
-        for (int i = 0; i <= 3000; ++i) {
-          const double w = sol.omega_min + (sol.omega_max - sol.omega_min) * i / 3000.0;
-          t.add_row({w, std::abs(T2.dot(frequency_response(open, F, w))),
-                     std::abs(T2.dot(frequency_response(closed, F, w)))});
-        }
-        t.write(out + "linear_kc" + kc_tag(kc) + ".csv");
-      }
-
-    // ---- Step 3: the frequency responses of Figs. 40-45, both kc -----------
-    Table index({"figure", "kc", "Fi", "Fa", "static_delta_open", "static_delta_closed", "points", "folds",
-                 "unstable_points", "hill_stable_floquet_unstable", "rejected_steps", "transitions", "start", "end", "changed_lo",
-                 "changed_hi", "first_change_omega", "delta_max", "delta_min"});
-    for (double kc : kcs) {
-      if (sol.quick && kc != gp.kc) continue;
-      GearPairParameters g = gp;
-      g.kc = kc;
-      for (const Case& cs : kCases) {
-        // quick: the two curves whose first transitions are checked, Fig. 41 and 43,
-        // on the part of the range that holds them.
-        if (sol.quick && cs.figure != 41 && cs.figure != 43) continue;
-        // quick: up to just past the first contact change (Fig. 41: 13567.6 rad/s) and, for
-        // Fig. 43, over the first stable intermittent band (11.2-12.7 krad/s) for the check.
-        const double wmax = sol.quick ? std::min(sol.omega_max, cs.figure == 41 ? 13570.0 : 11000.0) : sol.omega_max;
-        const auto t0 = std::chrono::steady_clock::now();
-        // quick: the first contact change is located on the linear solution inside the
-        // HB bracket (first_change), which does not depend on H: H = 3 is enough there.
-        Solver sc = sol;
-        if (sol.quick) sc.H = std::min(sol.H, 3), sc.N = 0;
-        if (kc != gp.kc) sc.ds_max = sol.ds_max_alt;
-        HarmonicBalance hb = make_model(g, cs.Fi, cs.Fa, sc, w0);
-        const std::string label = "fig" + std::to_string(cs.figure) + " kc=" + kc_tag(kc);
-        const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sc, sol.omega_min, wmax, w0), label), label);
-        const std::string stem = "fig" + std::to_string(cs.figure) + "_kc" + kc_tag(kc);
-        const std::vector<bool> floq = sol.quick ? c.stable : floquet_stability(hb, c);
-        long hill_only = 0;   // Hill-stable points that Floquet calls unstable
-        for (std::size_t i = 0; i < floq.size(); ++i) hill_only += (c.stable[i] && !floq[i]) ? 1 : 0;
-        if (!sol.quick) frc_table(hb, c, floq, T2, w0).write(out + "frc_" + stem + ".csv");
-        const ContactSummary s = summarize_contact(hb, c, T2, w0);
-        const double first = w0 * first_change(hb, c, cs.Fi > 0 ? opens_somewhere(hb) : touches_somewhere(hb), cs.Fi > 0);
-        const VectorXd F0 = gear_pair_static_torque(g, cs.Fi);
-        const MatrixXd K = gear_pair_support_stiffness(g);
-        const double d_open = T2.dot(K.ldlt().solve(F0));
-        const double d_closed = T2.dot((K + gear_pair_mesh_stiffness(g)).ldlt().solve(F0));
-        long unstable = 0;
-        for (bool st : c.stable) unstable += st ? 0 : 1;
-        index.add_row({long(cs.figure), kc, cs.Fi, cs.Fa, d_open, d_closed, long(c.branch.points.size()),
-                       long(c.branch.folds.size()), unstable, hill_only, long(c.branch.rejected_steps), long(s.transitions),
-                       s.start, s.end, s.intermittent_lo, s.intermittent_hi, first, s.delta_max, s.delta_min});
-        key.add("transitions_" + stem, s.transitions, "-");
-        key.add("first_change_omega_" + stem, std::isnan(first) ? 0.0 : first, "rad/s");
-        std::cout << "ch06_gear_pair: " << stem << ": " << c.branch.summary() << ", " << s.transitions
-                  << " contact transitions (" << s.start << " -> " << s.end << ")\n";
-      }
-    }
-    index.write(out + "cases.csv");
-
-    // ---- Step 4: harmonic balance against GSL time integration (Fig. 43) ---
-    // Its own sweep with H_check harmonics from the open state at 10 krad/s over the
-    // intermittent band (quick: its first stable part, up to 12.6 krad/s).
-    {
-      Solver sc = sol;
-      sc.H = sol.H_check;
-      sc.N = 0;
-      sc.ds_max = 0.02;   // library default: 10-20 krad/s of Fig. 43 has no fold pair it steps over
-      const double whi = sol.quick ? 12600.0 : 20000.0;
-      ParameterSet::require(sol.omega_min <= 10000.0 && sol.omega_max >= whi,
-                            "parameter 'omega_min'/'omega_max' must contain 10-20 krad/s for the time-integration check");
-      HarmonicBalance hb = make_model(gp, -1e6, 1e4, sc, w0);
-      const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sc, 10000.0, whi, w0), "check"), "check");
-      time_integration_check(hb, c, T2, w0, sol.quick ? 6 : sol.ti_points, out, key);
-    }
-
-    // ---- Step 5: convergence in H (Fig. 43 case, intermittent band) -------
-    if (!sol.quick) {
-      Table t({"H", "points", "folds", "delta_max_peak", "delta_min_peak"});
-      for (int H : {3, 5, 8, 10, 14}) {
-        Solver s2 = sol;
-        s2.H = H;
-        s2.N = 0;
-        const auto t0 = std::chrono::steady_clock::now();
-        HarmonicBalance hb = make_model(gp, -1e6, 1e4, s2, w0);
-        const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(s2, 10000.0, 20000.0, w0), "H study"), "H study");
-        const ContactSummary s = summarize_contact(hb, c, T2, w0);
-        t.add_row({long(H), long(c.branch.points.size()), long(c.branch.folds.size()), s.delta_max,
-                   s.delta_min});
-      }
-      t.write(out + "h_study.csv");
-    }
-    key.write(out + "key_numbers.json");
-    std::cout << "ch06_gear_pair: data in " << cl.out_dir << "\n";
-  });
+  Study study("ch06_gear_pair",
+              "ch06_gear_pair: 6-DOF spur-gear pair (thesis ch. 6, Figs. 40-45)\n"
+              "  M q'' + C q' + K q = F0 + F cos(w t) + T1 max(kc T2 q, 0),  Delta = T2 q the mesh deflection");
+  GearPairChapter chapter(study);
+  return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

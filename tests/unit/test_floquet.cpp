@@ -15,6 +15,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -153,4 +154,41 @@ TEST(Floquet, MiddleBranchOfChapter3IsUnstableWithAMultiplierAboveOne) {
   }
   EXPECT_GT(middle, 5);
   EXPECT_GT(outer, 50);
+}
+
+// The monodromy matrix of chapter 6's gear pair with the printed kc = 5e2 N/m
+// (Fi = 1e7 N m, Fa = 1e4, H = 10, point of the continuation at 12417.62 rad/s),
+// hexadecimal so it is bit-exact. Gear 2's x and y supports share sqrt(k/m), so it
+// has two nearly equal complex pairs, and Eigen's real Schur iteration (EigenSolver)
+// does not converge on it (info = NoConvergence); its eigenvalues were garbage and made
+// an isolated "unstable" point (|mu| = 35.7). general_eigenvalues falls back to the
+// complex Schur iteration. Independent checks: sum = trace, product = determinant, each
+// eigenvalue makes Phi - mu I singular (smallest singular value), and all lie inside
+// the unit circle (the mesh force is < 10 N against 1e4 N of forcing: the damped
+// linear system, largest |mu| = 0.9624 at the neighbouring points).
+TEST(Floquet, EigenvaluesOfAMonodromyMatrixWithRepeatedPairs) {
+  MatrixXd Phi(12, 12);
+  Phi << 
+      -0x1.08fa9e1ceaa46p-3, 0x1.1fcd68d949bb4p-18, 0x1.b92ef1c1f9683p-27, 0x1.8289957cfe895p-18, -0x1.61f0f9d0ad9c4p-19, -0x1.7dfbe7e8ff4b6p-25, 0x1.ecba7d4137697p-15, 0x1.a875a4006ecdap-34, -0x1.5260a23c137f3p-39, -0x1.97dd483c3f3e3p-32, 0x1.7578440fcc6aep-33, 0x1.8d128e37c48b1p-38,
+      0x1.1fcd68d948d9cp-18, -0x1.08f6bc6a41828p-3, -0x1.93faa26697261p-28, -0x1.61f0f9d0ab646p-19, 0x1.44180e5c20a4p-20, 0x1.5dc599025bbeep-26, 0x1.a875a400707c5p-34, 0x1.ecbad8d9c125dp-15, 0x1.35d7b525c66e4p-40, 0x1.7578440fbac16p-33, -0x1.55f9c371730a2p-34, -0x1.6b96840eab882p-39,
+      0x1.a7a25d1db862dp-26, -0x1.83e8e807831c2p-27, 0x1.e0d91fabff0c9p-2, 0x1.cc68e037799bfp-27, -0x1.a59581b8831dcp-28, 0x1.811b509c6f9d7p-29, -0x1.71133fcc67952p-39, 0x1.51f39e2653b26p-40, 0x1.40819ee40ec6ep-18, 0x1.83637ad19b616p-42, -0x1.62b87f30773b5p-43, 0x1.9bdd9830efbbcp-44,
+      0x1.0010eeb5f6f74p-18, -0x1.d4f1e7274d30cp-20, 0x1.f690e703d5252p-27, 0x1.ebd591f6f8f3ap-1, -0x1.f2ecf28bce8ddp-21, -0x1.a31016466b767p-23, -0x1.237a6f8394adp-32, 0x1.0ae5f968ce1afp-33, 0x1.6e8fd4bbadb4dp-41, -0x1.2069c68ba5bap-18, -0x1.6c8e2edd5b925p-32, -0x1.158f34d587737p-40,
+      -0x1.d4f1e72760effp-20, 0x1.ad664613c19e1p-21, -0x1.cc2f7530dc63cp-28, -0x1.f2ecf28bc602bp-21, 0x1.ebd55c21e6528p-1, 0x1.7fb9513cbfdefp-24, 0x1.0ae5f968d6493p-33, -0x1.e8c84b27aa804p-35, -0x1.4fa675429f034p-42, -0x1.6c8e2edd593dap-32, -0x1.20739bf39564dp-18, 0x1.fc4e7424b1d8dp-42,
+      -0x1.51886ebc1e1dfp-27, 0x1.3511bd05216f2p-28, -0x1.13c0e710b1332p-31, -0x1.0b2c7a1ca3684p-26, 0x1.e94968850156bp-28, -0x1.c7bb78bca979p-6, -0x1.01b511036946cp-39, 0x1.d7f34ff89cd1ep-41, -0x1.34deb53bc1ff5p-45, 0x1.3064644e5b5bfp-38, -0x1.16b924e4fffabp-39, 0x1.11377597f6bb5p-16,
+      -0x1.cae4178258d1ap+13, 0x1.6564e4136a69bp-9, -0x1.14d626507478ep-12, 0x1.0acbda54c20f7p-3, -0x1.e89874d22d132p-5, -0x1.b9207ff0ac77bp-9, -0x1.270e462641b5ap-3, 0x1.4b8aa49fd9c2dp-18, 0x1.2bb39a50ad2a4p-25, 0x1.e0cc68fc7ca73p-18, -0x1.b840e2abff703p-19, -0x1.03beb7cc0d15cp-24,
+      0x1.6564e41243835p-9, -0x1.cae40dde5e248p+13, 0x1.fafb8d2618a65p-14, -0x1.e89874d215cacp-5, 0x1.bf649baa25117p-6, 0x1.93ed6869e18f6p-10, 0x1.4b8aa49fd7534p-18, -0x1.2709cd6f0aa8bp-3, -0x1.126d9da7a2a1p-26, -0x1.b840e2abf84bp-19, 0x1.9320a68db94e6p-20, 0x1.dbaea29c8160ep-26,
+      -0x1.9239234e7fbc4p-14, 0x1.704de776b7c28p-15, -0x1.7eaf8593e46ep+13, 0x1.7ea9fb884ce41p-10, -0x1.5e64fea5bc2c4p-11, -0x1.9b6986845f5c5p-13, -0x1.b1a82b9c5bdd3p-27, 0x1.8d1657a326f0cp-28, 0x1.d44eec4865622p-2, 0x1.ce4f045cee909p-29, -0x1.a752a701f228dp-30, 0x1.ab96f8d64dba9p-28,
+      0x1.7f576d842de63p-5, -0x1.5f03d0473f32p-6, 0x1.58ee4f682a5b8p-11, 0x1.4597a48b957e4p+9, 0x1.52f72173d8345p-5, -0x1.ccb5f93d2b935p-13, 0x1.628d49d0dfcc7p-18, -0x1.44a72fdef9c86p-19, 0x1.3498408796661p-26, 0x1.ec2a84e7aff7ep-1, 0x1.1736d149f145dp-21, -0x1.4786a3edeb78ep-25,
+      -0x1.5f03d0473ea3dp-6, 0x1.416a11cfb3e99p-7, -0x1.3bd7e879ecc98p-12, 0x1.52f72173da094p-5, 0x1.45a0c93e0e6a4p+9, 0x1.a5dc1a58c147bp-14, -0x1.44a72fdf03753p-19, 0x1.29468b6aa8fffp-20, -0x1.1a9247577cbf9p-27, 0x1.1736d14a1cc2cp-21, 0x1.ec2aa30824891p-1, 0x1.2be7fa6fa0789p-26,
+      0x1.a58483e61fff7p-10, -0x1.81f8c04a7b4c3p-11, 0x1.2ede816323772p-13, -0x1.cbd785b832e61p-11, 0x1.a5106920b7bcep-12, -0x1.a122c11b1b486p+14, -0x1.628b5567962fp-24, 0x1.44a565a8a171cp-25, 0x1.4ac33e3b75646p-31, 0x1.05dc00af9244fp-25, -0x1.df8de9c61326cp-27, -0x1.be90c46b24a44p-5;
+  const Eigen::VectorXcd mu = general_eigenvalues(Phi, "test");
+  ASSERT_EQ(mu.size(), 12);
+  ASSERT_TRUE(mu.allFinite());
+  EXPECT_NEAR(std::abs(mu.sum() - std::complex<double>(Phi.trace(), 0.0)), 0.0, 1e-12 * Phi.norm());
+  EXPECT_NEAR(std::abs(mu.prod() / Phi.determinant() - 1.0), 0.0, 1e-8);
+  for (Eigen::Index i = 0; i < mu.size(); ++i) {
+    const Eigen::MatrixXcd D = Phi.cast<std::complex<double>>() - mu[i] * Eigen::MatrixXcd::Identity(12, 12);
+    EXPECT_LT(Eigen::JacobiSVD<Eigen::MatrixXcd>(D).singularValues().minCoeff(), 1e-7 * Phi.norm()) << "mu = " << mu[i];
+    EXPECT_LT(std::abs(mu[i]), 0.97);
+  }
 }

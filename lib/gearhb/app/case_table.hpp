@@ -32,15 +32,19 @@ bool measures(const Case& c, Measure m) {
   return std::find(c.measures.begin(), c.measures.end(), m) != c.measures.end();
 }
 
-// One frequency sweep with the shared solver settings, its wall time recorded in
-// timings.csv as "sweep <label>" and its summary said on stdout.
-inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, const SolverSettings& s,
-                                  const std::string& label) {
-  SweepOptions o = sweep_options(s);
+// One frequency sweep, its wall time recorded in timings.csv as "sweep <label>",
+// its progress on stderr and its summary said on stdout. Throws if incomplete.
+inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, SweepOptions o, const std::string& label) {
   o.continuation.progress = run.progress_of(label);
   FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;
+}
+
+// The same with the shared solver settings.
+inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, const SolverSettings& s,
+                                  const std::string& label) {
+  return timed_sweep(run, hb, sweep_options(s), label);
 }
 
 }  // namespace gearhb

@@ -101,22 +101,4 @@ class ParameterSet {
 // exponent; denormals accepted). Throws UsageError naming `what` otherwise.
 double parse_decimal(const std::string& text, const std::string& what);
 
-// LEGACY (until every chapter runs on Study, study.hpp): the old per-chapter frame.
-// What a chapter's command line asked for.
-struct CommandLine {
-  std::string out_dir;   // --out DIR (default given by the chapter)
-  bool help = false;     // --help was given: print and exit 0
-};
-
-// Parse argv: applies --set to `params`, validates ranges. Throws UsageError.
-CommandLine parse_command_line(int argc, char** argv, ParameterSet& params,
-                               const std::string& default_out_dir);
-
-// The standard main() wrapper of a chapter: prints `usage` + parameter help on
-// --help, turns UsageError into one line on stderr and exit status 2, any other
-// exception (a solver failure) into one line and exit status 1.
-int run_chapter(const std::string& program, const std::string& usage, int argc, char** argv,
-                ParameterSet& params, const std::string& default_out_dir,
-                const std::function<void(const CommandLine&)>& body);
-
 }  // namespace gearhb

@@ -76,6 +76,8 @@ std::string Table::to_csv() const {
   return out;
 }
 
+Table::Cell cell(bool computed, double v) { return computed ? Table::Cell(v) : Table::Cell(std::string()); }
+
 void KeyNumbers::add(const std::string& name, double value, const std::string& unit) {
   if (!std::isfinite(value))
     throw std::runtime_error("key number '" + name + "' is not finite (" + std::to_string(value) + ")");

@@ -31,6 +31,10 @@ class Table {
   std::vector<std::vector<Cell>> rows_;
 };
 
+// A number, or an empty cell when it was not computed or does not exist (e.g. the
+// band of a contact state that never occurs); read back as NaN by figures/style.py.
+Table::Cell cell(bool computed, double v);
+
 // The numbers that reference/<chapter>.json checks: {"name": {"value", "unit"}}.
 class KeyNumbers {
  public:

@@ -8,11 +8,6 @@
 
 namespace gearhb {
 
-namespace {
-// A number, or an empty cell ("none") when it was not computed.
-Table::Cell cell(bool computed, double v) { return computed ? Table::Cell(v) : Table::Cell(std::string()); }
-}  // namespace
-
 Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
                                const std::vector<bool>& stable, const Eigen::VectorXd& q) {
   ResponseEvaluator ev(hb, q);
@@ -65,9 +60,10 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
 }
 
 Table bifurcation_table(const FrequencyCurve& c) {
-  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus"});
+  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located"});
   for (const auto& b : c.bifurcations)
-    t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier)});
+    t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier),
+               long(b.located ? 1 : 0)});
   return t;
 }
 

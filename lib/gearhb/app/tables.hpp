@@ -29,7 +29,8 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
 // curve was not computed with Floquet stability.
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
 
-// The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus.
+// The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
+// located (1: on the chord; 0: a corrector failed there, the values are the next point's).
 Table bifurcation_table(const FrequencyCurve& c);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.

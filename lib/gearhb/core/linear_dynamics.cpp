@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 namespace gearhb {
 
@@ -35,6 +36,16 @@ Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   m.omega = es.eigenvalues().cwiseMax(0.0).cwiseSqrt();
   m.Phi = es.eigenvectors();
   return m;
+}
+
+Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string& where) {
+  if (!A.allFinite()) throw std::runtime_error(where + ": eigensolver given a non-finite matrix");
+  Eigen::EigenSolver<Eigen::MatrixXd> real_schur(A, /*computeEigenvectors=*/false);
+  if (real_schur.info() == Eigen::Success) return real_schur.eigenvalues();
+  Eigen::ComplexEigenSolver<Eigen::MatrixXcd> complex_schur(A.cast<std::complex<double>>(), false);
+  if (complex_schur.info() == Eigen::Success) return complex_schur.eigenvalues();
+  throw std::runtime_error(where + ": eigensolver failed (real and complex Schur iterations did not converge, " +
+                           std::to_string(A.rows()) + " x " + std::to_string(A.cols()) + " matrix)");
 }
 
 }  // namespace gearhb

@@ -5,6 +5,7 @@
 //  - modal analysis: K phi = w^2 M phi with mass-normalised modes,
 //    Phi' M Phi = I and Phi' K Phi = diag(w^2) (thesis §4.1).
 #include <complex>
+#include <string>
 
 #include <Eigen/Dense>
 
@@ -32,5 +33,12 @@ struct Modes {
 // Generalised symmetric eigenproblem K phi = w^2 M phi (Eigen's
 // GeneralizedSelfAdjointEigenSolver, whose eigenvectors are M-normalised).
 Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
+
+// Eigenvalues of a general real square matrix: Eigen's real Schur iteration
+// (EigenSolver), and if it does not converge (it can on a matrix with repeated
+// complex pairs, e.g. the monodromy matrix of a gear pair whose two supports have
+// the same natural frequency) the complex Schur iteration (ComplexEigenSolver).
+// Throws std::runtime_error("<where>: eigensolver failed ...") if both fail.
+Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string& where);
 
 }  // namespace gearhb

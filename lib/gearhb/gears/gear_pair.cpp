@@ -6,14 +6,14 @@
 namespace gearhb {
 
 Eigen::VectorXd gear_pair_T2(const GearPairParameters& p) {
-  const double a = p.alpha_deg * M_PI / 180.0;
+  const double a = p.pressure_angle_deg * M_PI / 180.0;
   Eigen::VectorXd t(6);
   t << std::cos(a), -std::sin(a), p.rb1, -std::cos(a), std::sin(a), -p.rb2;
   return t;
 }
 
 Eigen::VectorXd gear_pair_T1(const GearPairParameters& p) {
-  const double a = p.alpha_deg * M_PI / 180.0;
+  const double a = p.pressure_angle_deg * M_PI / 180.0;
   Eigen::VectorXd t(6);   // thesis §6.1, written out (not derived from T2)
   t << -std::cos(a), std::sin(a), -p.rb1, std::cos(a), -std::sin(a), p.rb2;
   return t;

@@ -1,5 +1,5 @@
 #pragma once
-// A spur-gear pair with 6 DOFs and an external-forcing mesh (thesis ch. 6, SPEC §4).
+// A spur-gear pair with 6 DOFs and an external-forcing mesh (thesis ch. 6, §6.1-6.2).
 //
 // DOFs q = [x1, y1, th1, x2, y2, th2]: translation of each gear centre on its
 // shaft springs (kx, ky) and rotation on a torsional spring (kth). The mesh
@@ -26,7 +26,7 @@
 namespace gearhb {
 
 struct GearPairParameters {
-  double alpha_deg = 24.6;                // pressure angle [deg]
+  double pressure_angle_deg = 24.6;       // pressure angle [deg]
   double I1 = 0.39, m1 = 0.4, rb1 = 0.0774;   // gear 1: [kg m^2], [kg], base radius [m]
   double I2 = 0.61, m2 = 0.66, rb2 = 0.1003;  // gear 2
   double kx1 = 1e8, ky1 = 1e8, kth1 = 1e9;    // supports of gear 1 [N/m], [N/m], [N m/rad]

@@ -1,5 +1,5 @@
 #pragma once
-// Unilateral contact law (thesis §2.3, §3; SPEC §3):
+// Unilateral contact law (thesis §2.3, §3; lib/README.md "The method in one page"):
 //
 //     F_c = max( k_c (g + v), 0 ),     v = n' x  (relative displacement along the normal n)
 //

@@ -141,7 +141,8 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
   if (opt.progress) opt.progress({0, opt.omega_start, 0.0});
 
   const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
-  double ds = opt.ds_initial;
+  double ds = std::min(opt.ds_initial, opt.ds_max);
+  int regime = opt.regime ? opt.regime(X) : 0, new_regime = regime;
   for (int step = 0;; ++step) {
     if (step >= opt.max_steps) {
       b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
@@ -166,6 +167,9 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
         } else if (tn.dot(t) < cos_turn && ds > 4.0 * opt.ds_min) {
           converged = false;   // the branch turns too fast for this step: refine
           why = "tangent turned too sharply";
+        } else if (opt.regime && (new_regime = opt.regime(S.X(yn))) != regime && ds > opt.ds_regime_change) {
+          converged = false;   // walk up to the regime change (grazing) with short steps
+          why = "regime change";
         }
       }
       if (converged) {
@@ -207,6 +211,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     const double turn = std::acos(std::clamp(tn.dot(t), -1.0, 1.0)) * 180.0 / M_PI;
     y = yn;
     t = tn;
+    regime = new_regime;
     double next = ds;
     if (iters <= 3) next = ds * 1.5;
     else if (iters >= 7) next = ds * 0.7;
@@ -241,7 +246,7 @@ Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X
 
 double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                          const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
-                         double tol) {
+                         const TransitionOptions& opt) {
   const bool sa = state(a.X);
   if (sa == state(b.X)) throw std::invalid_argument("locate_transition: no change of state between the points");
   Scaled S(p, s);
@@ -251,14 +256,16 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
   // onto the branch in the hyperplane normal to the chord, so a fold between a and
   // b does no harm.
   double lo = 0.0, hi = 1.0, w = a.omega;
-  while ((hi - lo) * (yb - ya).norm() * s.omega > tol) {
+  while ((hi - lo) * (yb - ya).norm() * s.omega > opt.tolerance) {
     const double mid = 0.5 * (lo + hi);
     Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
     int iters = 0;
     double res = 0.0;
-    if (!correct(S, y, normal, 30, 1e-12, iters, res))
+    if (!correct(S, y, normal, opt.corrector_iterations, opt.corrector_tolerance, iters, res))
       throw std::runtime_error("locate_transition: corrector failed near omega = " +
-                               std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
+                               std::to_string(S.omega(y)) + " (scaled residual " + std::to_string(res) + " after " +
+                               std::to_string(iters) + " iterations; tolerance " +
+                               std::to_string(opt.corrector_tolerance) + ")");
     w = S.omega(y);
     (state(S.X(y)) == sa ? lo : hi) = mid;
   }

@@ -50,6 +50,14 @@ struct ContinuationOptions {
   // target_turn_deg / (angle between the two tangents), within [0.5, 2] and ds_max,
   // so the points crowd where the curve bends and spread where it is straight.
   double target_turn_deg = 0.0;
+  // Regime of a solution (e.g. its contact state; empty: not used). A step that ends
+  // in another regime than it started in is accepted only with ds <= ds_regime_change;
+  // a longer one is halved. So the branch walks up to a grazing point instead of
+  // stepping across it: there the solution is only C1, and a long step may let the
+  // corrector land on another part of the branch (a small fold pair beside a
+  // grazing point is then skipped, or traversed backwards).
+  std::function<int(const Eigen::VectorXd&)> regime;
+  double ds_regime_change = 2e-4;
   // Called after every accepted point (e.g. to show progress); the numerics never print.
   std::function<void(const ContinuationProgress&)> progress;
 };
@@ -93,14 +101,23 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
 Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                             const Scaling& s, const ContinuationOptions& opt);
 
+// How a transition is located (locate_transition, first_transition).
+struct TransitionOptions {
+  double tolerance = 1e-11;           // stop when the chord fraction x chord length (scaled) is below
+  int corrector_iterations = 30;      // Newton iterations of each trial point
+  double corrector_tolerance = 1e-12; // Newton tolerance (scaled residual and step) of each trial point
+};
+
 // Between two consecutive converged points a, b of a branch on which the
 // predicate `state(X)` differs, locate the omega where it changes: bisection
 // along the chord a -> b, each trial point corrected back onto the branch in
 // the hyperplane normal to the chord (so a fold between a and b is harmless),
-// until the chord fraction is below `tol` (scaled). Used e.g. for contact onset.
+// until the chord fraction is below `opt.tolerance` (scaled). Used e.g. for
+// contact onset. A model whose residual cannot reach 1e-12 at grazing (the
+// contact force is only C1 there) passes its own corrector tolerance.
 double locate_transition(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                          const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
-                         double tol = 1e-11);
+                         const TransitionOptions& opt = {});
 
 // The same bisection for a state that depends on (X, omega) (e.g. the number of
 // Floquet multipliers outside the unit circle): returns the converged point on the

@@ -10,6 +10,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_odeiv2.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
 namespace gearhb {
@@ -256,8 +257,9 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
     }
     r.orbit_error = e;
   }
-  Eigen::EigenSolver<Eigen::MatrixXd> es(Phi_best, false);
-  Eigen::VectorXcd mu = es.eigenvalues();
+  if (Phi_best.size() == 0)
+    throw std::runtime_error("floquet_of_hb_orbit: the exact period map is not finite at omega = " + std::to_string(w));
+  const Eigen::VectorXcd mu = general_eigenvalues(Phi_best, "floquet_of_hb_orbit at omega = " + std::to_string(w));
   std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
   std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   r.multipliers = Eigen::Map<Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));

@@ -1,5 +1,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 
+#include <memory>
+
 #include <algorithm>
 #include <cmath>
 #include <sstream>
@@ -60,21 +62,38 @@ PointFloquet point_floquet(const FloquetResult& r) {
   return p;
 }
 
-// The multiplier of `type` nearest the unit circle.
-std::complex<double> critical_of(const FloquetResult& r, BifurcationType type) {
-  std::complex<double> best(NAN, NAN);
-  double d = INFINITY;
+int outside(const PointFloquet& p) { return p.outside_real_positive + p.outside_real_negative + p.outside_complex; }
+
+// The kind of crossing: through +1 (fold or branch point), through -1 (period
+// doubling) or a complex pair (Neimark-Sacker). A pair near the real axis counts as
+// real (|arg| or |pi - arg| below 1e-3).
+BifurcationType crossing_type(std::complex<double> m) {
+  const double a = std::fabs(std::arg(m));
+  if (a < 1e-3) return BifurcationType::fold;
+  if (M_PI - a < 1e-3) return BifurcationType::period_doubling;
+  return BifurcationType::neimark_sacker;
+}
+
+// The multiplier that crossed the unit circle between two points a, b: the one
+// nearest the circle among the kinds whose count outside changed from a to b (any
+// kind if none did).
+std::complex<double> crossing_multiplier(const FloquetResult& r, const PointFloquet& a, const PointFloquet& b) {
+  auto changed = [&](BifurcationType t) {
+    switch (t) {
+      case BifurcationType::period_doubling: return a.outside_real_negative != b.outside_real_negative;
+      case BifurcationType::neimark_sacker: return a.outside_complex != b.outside_complex;
+      default: return a.outside_real_positive != b.outside_real_positive;
+    }
+  };
+  std::complex<double> best(NAN, NAN), any(NAN, NAN);
+  double d = INFINITY, d_any = INFINITY;
   for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
     const auto m = r.multipliers[i];
-    const bool ok = type == BifurcationType::neimark_sacker ? !is_real(m)
-                    : type == BifurcationType::period_doubling ? (is_real(m) && m.real() < 0)
-                                                               : (is_real(m) && m.real() > 0);
-    if (ok && std::fabs(std::abs(m) - 1.0) < d) {
-      d = std::fabs(std::abs(m) - 1.0);
-      best = m;
-    }
+    const double dist = std::fabs(std::abs(m) - 1.0);
+    if (dist < d_any) d_any = dist, any = m;
+    if (changed(crossing_type(m)) && dist < d) d = dist, best = m;
   }
-  return best;
+  return std::isfinite(d) ? best : any;
 }
 
 std::string failure_report(const HarmonicBalance& hb, const Branch& b) {
@@ -104,6 +123,11 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   c.natural = opt.natural;
   c.stability = opt.stability;
   c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
+  if (!co.regime && !hb.contacts().empty()) {
+    // Steps across a change of the contact state are kept short (continuation.hpp).
+    const auto ev = std::make_shared<ResponseEvaluator>(hb, Eigen::VectorXd::Zero(hb.dofs()), 256);
+    co.regime = [ev](const Eigen::VectorXd& X) { return static_cast<int>(ev->summarize(X).contact); };
+  }
   const Eigen::VectorXd X0 = linear_first_guess(hb, co.omega_start);
   c.branch = opt.natural ? natural_continuation(hb, X0, c.scaling, co)
                          : arc_length_continuation(hb, X0, c.scaling, co);
@@ -124,44 +148,41 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
     c.stable.push_back(fr.back().stable);
   }
   if (!opt.locate_bifurcations || opt.natural) return c;
-  // Bifurcations between consecutive points.
+  // Bifurcations: between consecutive points where the number of multipliers outside
+  // the unit circle changes (a real pair that merges into a complex pair outside the
+  // circle changes the counts per kind but not this number: no bifurcation). The
+  // change is located on the chord, and the multiplier nearest the circle there says
+  // which kind of crossing it is.
   for (std::size_t i = 1; i < P.size(); ++i) {
-    const PointFloquet &a = c.floquet[i - 1], &b = c.floquet[i];
-    struct Change { BifurcationType type; int PointFloquet::*count; };
-    const Change changes[] = {{BifurcationType::period_doubling, &PointFloquet::outside_real_negative},
-                              {BifurcationType::neimark_sacker, &PointFloquet::outside_complex},
-                              {BifurcationType::fold, &PointFloquet::outside_real_positive}};
-    for (const auto& ch : changes) {
-      if (a.*ch.count == b.*ch.count) continue;
-      BifurcationType type = ch.type;
-      if (type == BifurcationType::fold) {
-        // a fold of the branch between these points (tangent turned) or a branch point
-        // (the HB fold and the +1 crossing of the corrected orbit differ by the HB
-        // truncation error, so they may fall in neighbouring intervals)
-        bool fold = false;
-        for (const auto& f : c.branch.folds) fold = fold || std::abs(f.after_point - (int(i) - 1)) <= 2;
-        if (!fold) type = BifurcationType::branch_point;
-      }
-      const auto count = ch.count;
-      auto state = [&hb, &opt, xs, count](const Eigen::VectorXd& X, double w) {
-        return point_floquet(floquet_of_hb_orbit(hb, X, w, xs, opt.floquet)).*count;
-      };
-      Bifurcation bf;
-      bf.type = type;
-      bf.after_point = int(i) - 1;
-      try {
-        const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, co.tolerance);
-        bf.omega = at.omega;
-        bf.multiplier = critical_of(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), type);
-      } catch (const std::exception&) {
-        // corrector failure on the chord (rare): the located fold, or the nearer point
-        bf.omega = P[i].omega;
-        bf.multiplier = critical_of(fr[i], type);
-        for (const auto& f : c.branch.folds)
-          if (f.after_point == int(i) - 1) bf.omega = f.omega;
-      }
-      c.bifurcations.push_back(bf);
+    if (outside(c.floquet[i - 1]) == outside(c.floquet[i])) continue;
+    auto state = [&hb, &opt, xs](const Eigen::VectorXd& X, double w) {
+      return outside(point_floquet(floquet_of_hb_orbit(hb, X, w, xs, opt.floquet)));
+    };
+    Bifurcation bf;
+    bf.after_point = int(i) - 1;
+    try {
+      const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, co.tolerance);
+      bf.omega = at.omega;
+      bf.multiplier = crossing_multiplier(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), c.floquet[i - 1], c.floquet[i]);
+    } catch (const std::exception&) {
+      // corrector failure on the chord (rare): the second point's multiplier
+      bf.located = false;
+      bf.omega = P[i].omega;
+      bf.multiplier = crossing_multiplier(fr[i], c.floquet[i - 1], c.floquet[i]);
     }
+    bf.type = crossing_type(bf.multiplier);
+    if (bf.type == BifurcationType::fold) {
+      // a fold of the branch (the corrected orbit's +1 crossing), or a branch point if
+      // the HB branch has no fold near it: the two differ by the HB truncation error
+      // (NLvib ex. 03 at H = 5: 5 points, 6e-4 relative in omega), so "near" is within
+      // 2 points or 1e-3 relative
+      bool fold = false;
+      for (const auto& f : c.branch.folds)
+        fold = fold || std::abs(f.after_point - bf.after_point) <= 2 ||
+               std::fabs(f.omega - bf.omega) <= 1e-3 * std::fabs(f.omega);
+      if (!fold) bf.type = BifurcationType::branch_point;
+    }
+    c.bifurcations.push_back(bf);
   }
   return c;
 }
@@ -184,11 +205,12 @@ std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalanc
 }
 
 double first_transition(const HarmonicBalance& hb, const FrequencyCurve& c,
-                        const std::function<bool(const Eigen::VectorXd&)>& state) {
+                        const std::function<bool(const Eigen::VectorXd&)>& state,
+                        const TransitionOptions& opt) {
   const auto& P = c.branch.points;
   for (std::size_t i = 1; i < P.size(); ++i)
     if (!state(P[i - 1].X) && state(P[i].X))
-      return locate_transition(hb, P[i - 1], P[i], c.scaling, state);
+      return locate_transition(hb, P[i - 1], P[i], c.scaling, state, opt);
   return NAN;
 }
 
@@ -202,6 +224,8 @@ TimeIntegrationCheck compare_with_time_integration(const HarmonicBalance& hb, co
   for (std::size_t i = 0; i < P.size(); ++i) {
     const ResponseSummary r = ev.summarize(P[i].X);
     if (!c.stable[i] || r.contact != opt.state) continue;
+    if (c.floquet.size() == P.size() && c.floquet[i].modulus > opt.max_multiplier) continue;
+    if (r.grazing_distance < opt.min_grazing_distance) continue;
     if (r.x_max < opt.min_crest_fraction * 0.5 * (r.x_max - r.x_min)) continue;
     bool near = false;
     for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - P[i].omega) < opt.fold_margin * f.omega;

@@ -59,6 +59,9 @@ struct Bifurcation {
   double omega = 0.0;
   std::complex<double> multiplier;   // the critical multiplier at the located point
   int after_point = 0;               // between points after_point and after_point + 1
+  // Located on the chord between the two points; false if a corrector failed there (the
+  // multiplier is then that of point after_point + 1 and omega is that point's).
+  bool located = true;
 };
 
 // Floquet data of one point (the stable flag is FrequencyCurve::stable).
@@ -100,12 +103,21 @@ std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalanc
 
 // First omega along the branch where `state` switches from false to true; NaN if never.
 double first_transition(const HarmonicBalance& hb, const FrequencyCurve& c,
-                        const std::function<bool(const Eigen::VectorXd&)>& state);
+                        const std::function<bool(const Eigen::VectorXd&)>& state,
+                        const TransitionOptions& opt = {});
 
 struct TimeIntegrationCheckOptions {
   int points = 8;                                  // at most this many comparisons
   ContactState state = ContactState::intermittent; // compare points in this state only
   double fold_margin = 2e-3;                       // skip points within fold_margin*omega of a fold
+  // Skip points whose largest Floquet multiplier (if computed) exceeds this modulus: a
+  // perturbation decays like |mu|^periods, so |mu| = 0.999 needs ~20000 periods to settle
+  // to 1e-9 (beside a period doubling or a Neimark-Sacker point).
+  double max_multiplier = 0.99;
+  // Skip points closer to grazing than this (ResponseSummary::grazing_distance): with a
+  // contact interval that barely opens, the integrator's error at the switches (where
+  // the force has a kink) stalls the periodicity test above its tolerance.
+  double min_grazing_distance = 1e-3;
   // Skip points whose crest x_max is below this fraction of the half peak-to-peak
   // (a crest grazing 0 makes a relative error of x_max meaningless).
   double min_crest_fraction = 0.0;

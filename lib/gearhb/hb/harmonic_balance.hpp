@@ -1,5 +1,5 @@
 #pragma once
-// Harmonic balance with unilateral contacts (thesis ch. 2; SPEC §3).
+// Harmonic balance with unilateral contacts (thesis ch. 2; lib/README.md "The method in one page").
 //
 // Equation of motion, n DOFs, forcing at frequency omega (theta = omega t):
 //

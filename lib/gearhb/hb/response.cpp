@@ -1,5 +1,6 @@
 #include "gearhb/hb/response.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <tuple>
 
@@ -30,13 +31,40 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   for (const auto& ct : hb_.contacts()) {
     Eigen::VectorXd uc = hb_.project(X, ct.normal) + ct.gap_harmonics;
     uc[0] += ct.gap;
-    const ContactState s = contact_state(uc, fine_.to_time(uc));
-    any_closed = any_closed || s != ContactState::open;
-    any_open = any_open || s != ContactState::full;
+    const auto [lo, hi] = trig_extremes(uc, fine_.to_time(uc));   // contact_state's reading
+    any_closed = any_closed || hi > 0.0;
+    any_open = any_open || !(lo > 0.0);
+    const double half = 0.5 * (hi - lo);
+    if (half > 0.0) r.grazing_distance = std::min(r.grazing_distance, std::min(std::fabs(hi), std::fabs(lo)) / half);
   }
   r.contact = any_closed ? (any_open ? ContactState::intermittent : ContactState::full)
                          : ContactState::open;
   return r;
+}
+
+ContactHistory contact_history(const HarmonicBalance& hb, const Branch& b, const Eigen::VectorXd& q) {
+  const ResponseEvaluator ev(hb, q);
+  ContactHistory h;
+  for (std::size_t i = 0; i < b.points.size(); ++i) {
+    const ResponseSummary r = ev.summarize(b.points[i].X);
+    const double w = b.points[i].omega;
+    if (i == 0) {
+      h.start = r.contact;
+      h.x_max = r.x_max;
+      h.x_min = r.x_min;
+    } else if (r.contact != h.end) {
+      ++h.transitions;
+    }
+    if (r.contact != h.start) {
+      h.changed_lo = std::isnan(h.changed_lo) ? w : std::min(h.changed_lo, w);
+      h.changed_hi = std::isnan(h.changed_hi) ? w : std::max(h.changed_hi, w);
+    }
+    h.x_max = std::max(h.x_max, r.x_max);
+    h.x_min = std::min(h.x_min, r.x_min);
+    ++h.points[static_cast<int>(r.contact)];
+    h.end = r.contact;
+  }
+  return h;
 }
 
 std::vector<bool> branch_stability(const HarmonicBalance& hb, const Branch& b) {

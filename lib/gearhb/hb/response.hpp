@@ -1,5 +1,5 @@
 #pragma once
-// What a frequency-response curve shows of one periodic solution (SPEC §2):
+// What a frequency-response curve shows of one periodic solution (README "Output files"):
 // for a coordinate q' x (a DOF, or a relative displacement such as x1 - x2),
 //   x_max, x_min  over one period (extreme samples of the Fourier series on a fine
 //                 grid, refined by Brent between neighbours: contact.hpp trig_extremes),
@@ -7,6 +7,7 @@
 //   x_h1          amplitude of the first harmonic, sqrt(a_1^2 + b_1^2),
 // and the contact state over the period (open / full / intermittent), judged on
 // the refined extremes of every contact penetration.
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -20,6 +21,10 @@ namespace gearhb {
 struct ResponseSummary {
   double x_max = 0, x_min = 0, x_rms_ac = 0, x_h1 = 0, x_mean = 0;
   ContactState contact = ContactState::open;
+  // Distance from grazing: over the contacts, the smallest |max u| or |min u| of the
+  // penetration u = g + n'x over its half peak-to-peak (0 at a grazing orbit, where
+  // the contact state changes; infinite without contacts or oscillation).
+  double grazing_distance = INFINITY;
 };
 
 class ResponseEvaluator {
@@ -35,6 +40,18 @@ class ResponseEvaluator {
   Eigen::VectorXd q_;
   Aft fine_;
 };
+
+// The contact states met along a branch, in continuation order, for the
+// coordinate q' x (a chapter's contact summary of one curve).
+struct ContactHistory {
+  int transitions = 0;                         // changes of state between consecutive points
+  ContactState start = ContactState::open;     // state at the first point
+  ContactState end = ContactState::open;       // state at the last point
+  double changed_lo = NAN, changed_hi = NAN;   // omega span of the points not in the start state
+  double x_max = NAN, x_min = NAN;             // extremes of q' x over the whole branch
+  long points[3] = {0, 0, 0};                  // points per state, indexed by ContactState (open, full, intermittent)
+};
+ContactHistory contact_history(const HarmonicBalance& hb, const Branch& b, const Eigen::VectorXd& q);
 
 // Stability flag (Hill) of every point of a branch.
 std::vector<bool> branch_stability(const HarmonicBalance& hb, const Branch& b);

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/core/linear_dynamics.hpp"
+
 namespace gearhb {
 
 HillResult hill_stability(const Eigen::MatrixXd& JX, const Eigen::MatrixXd& M,
@@ -35,10 +37,7 @@ HillResult hill_stability(const Eigen::MatrixXd& JX, const Eigen::MatrixXd& M,
     A.block(N + a * n, 0, n, N) = -Minv * JX.middleRows(a * n, n) / (w * w);
     A.block(N + a * n, N, n, N) = -Minv * D1.middleRows(a * n, n) / w;
   }
-  Eigen::EigenSolver<Eigen::MatrixXd> es(A, /*computeEigenvectors=*/false);
-  if (es.info() != Eigen::Success)
-    throw std::runtime_error("hill_stability: eigensolver failed at omega = " + std::to_string(w));
-  const Eigen::VectorXcd ev = es.eigenvalues() * w;
+  const Eigen::VectorXcd ev = general_eigenvalues(A, "hill_stability at omega = " + std::to_string(w)) * w;
   std::vector<int> idx(ev.size());
   std::iota(idx.begin(), idx.end(), 0);
   std::sort(idx.begin(), idx.end(),
