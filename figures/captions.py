@@ -59,6 +59,8 @@ CHAPTERS = [
         ("fig70s_time*.png", "supplement", "x(t) and the contact force over two mesh periods at a contact-loss point."),
         ("fig70s_H*.png", "supplement", "Convergence in H of the 300 N m curve (H = 1, 5, 10, 20): 5 harmonics are not "
          "converged at the peak (2.8 % below H = 20), see the chapter README."),
+        ("fig70s_param*.png", "supplement", "The 300 N m curve of the thesis' constant-stiffness model and of the "
+         "parametric model it approximates (k(t) = F0/e(t)), see the chapter README."),
     ]},
 ]
 

@@ -5,6 +5,7 @@ fig69  RMS of the oscillating part of x vs mesh frequency, H = 1
 fig70  the same with H = 5
 fig70s_time_history    x(t), e(t) and the contact force at a contact-loss point
 fig70s_H_convergence   the 300 N m curve for H = 1, 5, 10, 20
+fig70s_parametric      the 300 N m curve of the thesis' model and of the parametric one
 Everything (titles, parameters) comes from the run's files.
 """
 import json
@@ -118,7 +119,7 @@ def time_history(data_dir, fig_dir, kn, cases):
 def convergence(data_dir, fig_dir, params, cases):
     fig, ax = plt.subplots(figsize=(8, 5))
     for lb, row in cases.items():
-        if row["torque"] != 300.0:
+        if row["torque"] != 300.0 or row["model"] != "constant":
             continue
         H = int(row["H"])
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
@@ -133,6 +134,36 @@ def convergence(data_dir, fig_dir, params, cases):
     return save(fig, fig_dir / "fig70s_H_convergence.png")
 
 
+def parametric(data_dir, fig_dir, params, cases, labels):
+    """Both models' 300 N m curves (same H, same STE), contact-loss bands as bars."""
+    bands = loss_bands(data_dir)
+    fig, ax = plt.subplots(figsize=(8, 6))
+    styles = {"constant": ("C3", "thesis model, kc constant (RMS of x)"),
+              "parametric": ("C0", "parametric, k(t) = F0/e(t) (RMS of d)")}
+    curves = [(lb, cases[lb]) for lb in labels]
+    ymax = max(max(read_csv(data_dir / ("frc_%s.csv" % lb))["x_rms_ac"]) for lb, _ in curves) * UM
+    for i, (lb, row) in enumerate(curves):
+        col, text = styles[row["model"]]
+        d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+                    label="%s (peak %.2f um at %.0f Hz)" % (text, row["peak_rms_um"], row["peak_f_hz"]))
+        y = ymax * (1.08 - 0.035 * i)
+        for lo, hi in bands.get(lb, []):
+            ax.plot([lo, hi], [y, y], color=col, lw=4, solid_capstyle="butt")
+    extra = [Line2D([], [], color="0.4", lw=4, label="contact lost: frequency bands (bars, model colour)")]
+    row = curves[0][1]
+    ax.set_xlabel("mesh frequency [Hz]")
+    ax.set_ylabel("RMS of the oscillating part of the DTE  [um]")
+    ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
+    ax.set_ylim(0, ymax * 1.15)
+    ax.set_title("Supplement: T = %d N m, H = %d, the thesis' model and the parametric one (k(t) = F0/e(t))"
+                 % (row["torque"], row["H"]), fontsize=10)
+    h, _ = ax.get_legend_handles_labels()
+    ax.legend(handles=h + style_legend(extra), loc="upper center", bbox_to_anchor=(0.5, -0.12), ncol=2, fontsize=7.5)
+    fig.subplots_adjust(bottom=0.27)
+    return save(fig, fig_dir / "fig70s_parametric.png")
+
+
 def draw(data_dir, fig_dir):
     params = read_params(data_dir)
     cases = case_rows(data_dir)
@@ -140,12 +171,21 @@ def draw(data_dir, fig_dir):
     made = []
     if (data_dir / "fig67_T300.csv").exists():
         made.append(fig67(data_dir, fig_dir, kn))
+    thesis = {lb: r for lb, r in cases.items() if r["figure"] in ("69", "70", "H-convergence")}
     for fig_no, H, name in (("69", 1, "fig69_response_H1.png"), ("70", 5, "fig70_response_H5.png")):
-        labels = [lb for lb, r in cases.items() if int(r["H"]) == H]
+        labels = [lb for lb, r in thesis.items() if int(r["H"]) == H]
         if labels:
             made.append(response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases))
     if (data_dir / "time_history.csv").exists():
         made.append(time_history(data_dir, fig_dir, kn, cases))
-    if sum(1 for r in cases.values() if r["torque"] == 300.0) > 1:
-        made.append(convergence(data_dir, fig_dir, params, cases))
+    if sum(1 for r in thesis.values() if r["torque"] == 300.0) > 1:
+        made.append(convergence(data_dir, fig_dir, params, thesis))
+    # the parametric case and the thesis-model curve with the same torque and H
+    for lb, r in cases.items():
+        if r["figure"] != "parametric model":
+            continue
+        same = [m for m, q in cases.items() if m != lb and q["model"] == "constant"
+                and q["torque"] == r["torque"] and q["H"] == r["H"]]
+        if same:
+            made.append(parametric(data_dir, fig_dir, params, cases, same[:1] + [lb]))
     return made

@@ -5,6 +5,11 @@
 //
 //     me x'' + c x' + max( kc (x + e(t)), 0 ) = F0,      F0 = T / r
 //
+// and, beyond the thesis (--set model=parametric, README "Beyond the thesis"),
+// the parametric model it approximates, d the total mesh deflection:
+//
+//     me d'' + c d' + max( k(t) d, 0 ) = F0,             k(t) = F0 / e(t)
+//
 // x is the dynamic transmission error along the line of action, e(t) the loaded
 // STE of ch. 7 (periodic with the mesh period, theta = omega t = 2 pi f_mesh t),
 // me = I1 I2 / (I1 r2^2 + I2 r1^2), kc = mean of F0 / e(t), c = 2 zeta sqrt(kc me)
@@ -12,17 +17,19 @@
 // projection of the contact law, one arc-length continuation per curve,
 // Floquet stability of every point (lib/gearhb/hb). The steps, in order (README
 // of this chapter): mesh_stiffness, gear_constants, frequency_responses (per
-// case: linear_reference, measure, time_integration_check, time_history),
-// convergence_summary; own_case for --case own.
+// case: linear_reference, measure, time_integration_check, time_history,
+// peak_check, floquet_check); own_case for --case own.
 //
 // Sample runs:
 //   build/bin/ch08_gear_response                                  every figure's data
 //   build/bin/ch08_gear_response --case quick --out /tmp/q        the regression subset
 //   build/bin/ch08_gear_response --case own --set torque=150 --set H=8 --out /tmp/mine
 //   build/bin/ch08_gear_response --case own --set ste_file=my_ste.csv --out /tmp/mine
+//   build/bin/ch08_gear_response --set model=parametric --out /tmp/par  Figs. 69-70 parametric
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -56,6 +63,10 @@ struct SteSettings {
 struct FrequencyRange {
   double f_min_hz = 300.0, f_max_hz = 5000.0;   // mesh frequency [Hz]
 };
+struct MeshModel {
+  std::string name = "constant";   // constant (thesis §8.1) | parametric (k(t) = F0 / e(t))
+  DteModel model() const { return name == "parametric" ? DteModel::parametric : DteModel::constant; }
+};
 struct OwnCase {
   double torque = 300.0;         // [N m]
   double pitch_radius = 0.075;   // r1 = r2 [m]
@@ -65,7 +76,11 @@ struct OwnCase {
 };
 
 // What a case measures besides its curve.
-enum class Measure { time_check, time_history, convergence };
+//  time_check    HB against GSL time integration at 8 stable points
+//  time_history  x(t) and the contact force at a contact-loss point
+//  peak          the near-peak point against GSL time integration of the full-STE model
+//  floquet       the multipliers against GSL's variational equation on the integrated orbit
+enum class Measure { time_check, time_history, peak, floquet };
 
 struct Case {
   std::string label;   // file stem: frc_<label>.csv
@@ -73,19 +88,22 @@ struct Case {
   double torque;       // [N m]
   int H;               // harmonics (and STE components kept, thesis §8.2)
   bool quick;          // part of the regression subset
+  bool parametric;     // always the parametric model (else the run's `model`)
   std::vector<Measure> measures;
 };
 
 const std::vector<Case> kCases = {
-    {"T100_H1", "69", 100, 1, false, {}},
-    {"T200_H1", "69", 200, 1, false, {}},
-    {"T300_H1", "69", 300, 1, false, {Measure::convergence}},
-    {"T100_H5", "70", 100, 5, true, {Measure::time_check}},
-    {"T200_H5", "70", 200, 5, true, {Measure::time_check}},
-    {"T300_H5", "70", 300, 5, true, {Measure::time_check, Measure::time_history, Measure::convergence}},
-    {"T300_H10", "H-convergence", 300, 10, false, {Measure::convergence}},
-    {"T300_H20", "H-convergence", 300, 20, false, {Measure::convergence}},
+    {"T100_H1", "69", 100, 1, false, false, {}},
+    {"T200_H1", "69", 200, 1, false, false, {}},
+    {"T300_H1", "69", 300, 1, false, false, {Measure::peak}},
+    {"T100_H5", "70", 100, 5, true, false, {Measure::time_check}},
+    {"T200_H5", "70", 200, 5, true, false, {Measure::time_check}},
+    {"T300_H5", "70", 300, 5, true, false, {Measure::time_check, Measure::time_history, Measure::peak}},
+    {"T300_H10", "H-convergence", 300, 10, false, false, {Measure::peak}},
+    {"T300_H20", "H-convergence", 300, 20, false, false, {Measure::peak}},
+    {"T300_H5_param", "parametric model", 300, 5, true, true, {Measure::time_check, Measure::floquet}},
 };
+constexpr int kFullSte = 20;   // STE harmonics of the "full" model (peak check)
 const double kTorques[] = {100, 200, 300};   // Fig. 67
 const VectorXd kX = VectorXd::Constant(1, 1.0);
 
@@ -108,6 +126,7 @@ class GearResponse {
   GearPair gear_;
   SteSettings ste_;
   FrequencyRange range_;
+  MeshModel model_;
   OwnCase own_;
   SolverSettings sol_;
   SteModel thesis_gear_;   // ch. 7's STE model, thesis defaults
@@ -121,11 +140,14 @@ class GearResponse {
   void frequency_responses(Run& run) const;
   Table response_table(const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const;
-  void measure(Run& run, const std::string& label, const DteGear& g, const HarmonicBalance& hb,
+  void measure(Run& run, const std::string& label, const DteGear& g, DteModel model, const HarmonicBalance& hb,
                const FrequencyCurve& c, Worst& worst, Table& bands) const;
   void time_integration_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                               Table& rows) const;
   void time_history(Run& run, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void peak_check(Run& run, const Case& cs, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void floquet_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  DteModel model_of(const Case& cs) const { return cs.parametric ? DteModel::parametric : model_.model(); }
   void own_case(Run& run) const;
   void check(const Selection& sel);
 };
@@ -140,6 +162,8 @@ GearResponse::GearResponse(Study& study) {
   P.add("ste_samples", &ste_.samples, "-", "phases per mesh cycle of the continuous STE", Range::between(16, 4096));
   P.add("ste_reading", &ste_.reading, "-", "0 load moving continuously, 1 ch. 7's 8 positions per base pitch",
         Range::between(0, 1));
+  P.group("mesh model");
+  P.add("model", &model_.name, "-", "constant (thesis §8.1: kc, STE as excitation) or parametric (k(t) = F0/e(t))");
   P.group("mesh frequency range");
   P.add("f_min_hz", &range_.f_min_hz, "Hz", "start of the sweep", Range::between(1.0, 1e6));
   P.add("f_max_hz", &range_.f_max_hz, "Hz", "end of the sweep", Range::between(1.0, 1e6));
@@ -173,13 +197,20 @@ void GearResponse::check(const Selection& sel) {
   sol_.omega_min = 2 * M_PI * range_.f_min_hz;
   sol_.omega_max = 2 * M_PI * range_.f_max_hz;
   ParameterSet::require(range_.f_min_hz < range_.f_max_hz, "parameter 'f_min_hz' must be < f_max_hz");
+  ParameterSet::require(model_.name == "constant" || model_.name == "parametric",
+                        "parameter 'model' must be 'constant' or 'parametric'");
   check_solver_settings(sol_);
   if (sel.kind != Selection::Kind::own) return;
   ParameterSet::require(own_.ste_file.empty() || ste_.reading == 0,
                         "ste_reading applies to ch. 7's STE, not to an ste_file");
   if (!own_.ste_file.empty()) {
+    const bool parametric = model_.model() == DteModel::parametric;
     try {
-      read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0);
+      const std::vector<double> e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0 || parametric).ste;
+      // the parametric stiffness F0 / e needs the STE cut to H harmonics positive
+      const VectorXd eh = Aft(sol_.H, 64 * (2 * sol_.H + 1)).to_time(periodic_fourier(e, sol_.H));
+      ParameterSet::require(!parametric || eh.minCoeff() > 0.0,
+                            own_.ste_file + ": model=parametric needs the STE cut to H harmonics > 0 over the cycle");
     } catch (const SteFileError& e) {
       throw UsageError(e.what());
     }
@@ -264,7 +295,7 @@ void GearResponse::gear_constants(Run& run) const {
 
 // Step 3 (Figs. 69-70, H-convergence): one continuation per case of the table.
 void GearResponse::frequency_responses(Run& run) const {
-  Table index({"label", "figure", "torque", "H", "F0", "me", "kc", "c", "points", "folds", "bifurcations",
+  Table index({"label", "figure", "model", "torque", "H", "F0", "me", "kc", "c", "points", "folds", "bifurcations",
                "peak_rms_um", "peak_f_hz"});
   Table bands({"label", "band", "f_lo_hz", "f_hi_hz"});
   Table ti({"label", "f_mesh_hz", "contact", "x_rms_ac_hb", "x_rms_ac_ti", "rel_diff", "periods"});
@@ -272,22 +303,24 @@ void GearResponse::frequency_responses(Run& run) const {
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const DteGear g = mesh(cs.torque);
-    const HarmonicBalance hb = dte_harmonic_balance(g, cs.H, sol_.N, contact_quadrature(sol_));
+    const DteModel model = model_of(cs);
+    const HarmonicBalance hb = dte_harmonic_balance(g, cs.H, sol_.N, contact_quadrature(sol_), model);
     const FrequencyCurve c = sweep(run, hb, cs.label);
     const Table frc = response_table(g, hb, c);
     run.write("frc_" + cs.label + ".csv", frc);
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
     linear_reference(run, g, cs.H, cs.label);
-    measure(run, cs.label, g, hb, c, worst, bands);
-    const ResponseEvaluator ev(hb, kX);
+    measure(run, cs.label, g, model, hb, c, worst, bands);
     std::size_t peak = 0;
     for (std::size_t i = 0; i < c.branch.points.size(); ++i)
       if (rms_ac(c.branch.points[i].X) > rms_ac(c.branch.points[peak].X)) peak = i;
-    index.add_row({cs.label, cs.figure, cs.torque, long(cs.H), g.F0, g.me, g.kc, g.c, long(c.branch.points.size()),
+    index.add_row({cs.label, cs.figure, std::string(model == DteModel::parametric ? "parametric" : "constant"), cs.torque, long(cs.H), g.F0, g.me, g.kc, g.c, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.bifurcations.size()), rms_ac(c.branch.points[peak].X) * kUm,
                    hz(c.branch.points[peak].omega)});
     if (has(cs, Measure::time_check)) time_integration_check(run, cs, hb, c, ti);
     if (has(cs, Measure::time_history)) time_history(run, g, hb, c);
+    if (has(cs, Measure::peak)) peak_check(run, cs, g, hb, c);
+    if (has(cs, Measure::floquet)) floquet_check(run, cs, hb, c);
   }
   run.write("cases.csv", index);
   run.write("loss_bands.csv", bands);
@@ -321,10 +354,10 @@ void GearResponse::linear_reference(Run& run, const DteGear& g, int H, const std
 }
 
 // Contact-loss bands (runs of points not in full contact), the first loss
-// frequency refined on the branch, the mean contact force and the closed form
-// at every full-contact point.
-void GearResponse::measure(Run& run, const std::string& label, const DteGear& g, const HarmonicBalance& hb,
-                           const FrequencyCurve& c, Worst& worst, Table& bands) const {
+// frequency refined on the branch, the mean contact force and (constant model)
+// the closed form at every full-contact point.
+void GearResponse::measure(Run& run, const std::string& label, const DteGear& g, DteModel model,
+                           const HarmonicBalance& hb, const FrequencyCurve& c, Worst& worst, Table& bands) const {
   const ResponseEvaluator ev(hb, kX);
   const auto& P = c.branch.points;
   long band = 0;
@@ -341,9 +374,9 @@ void GearResponse::measure(Run& run, const std::string& label, const DteGear& g,
     }
     in_band = lost;
     if (i == P.size()) break;
-    const double F = dte_mean_contact_force(g, P[i].X);
+    const double F = dte_mean_contact_force(g, P[i].X, model);
     worst.mean_force = std::max(worst.mean_force, std::fabs(F - g.F0) / g.F0);
-    if (!lost) {
+    if (!lost && model == DteModel::constant) {
       const VectorXd Xc = dte_closed_contact(g, hb.harmonics(), P[i].omega);
       worst.closed_form = std::max(worst.closed_form, (P[i].X - Xc).lpNorm<Eigen::Infinity>() /
                                                           Xc.tail(Xc.size() - 1).lpNorm<Eigen::Infinity>());
@@ -427,6 +460,91 @@ void GearResponse::time_history(Run& run, const DteGear& g, const HarmonicBalanc
   run.key_numbers().add("time_history_f_hz", hz(P[pick].omega), "Hz");
 }
 
+// The near-peak point of a curve against GSL time integration of the model with
+// the STE's first 20 harmonics (the "full" STE): the stable point of largest
+// x_rms_ac at least 0.3 % in frequency below the first fold (the peak of the
+// softening overhang; at the fold itself the orbit attracts too slowly), from
+// its HB state to the periodic state. For H = 20 it checks the HB solution; for
+// H < 20 it measures the truncation error of the curve at its peak (STE and
+// response harmonics together).
+void GearResponse::peak_check(Run& run, const Case& cs, const DteGear& g, const HarmonicBalance& hb,
+                              const FrequencyCurve& c) const {
+  const auto& P = c.branch.points;
+  const double w_fold = c.branch.folds.empty() ? INFINITY : c.branch.folds.front().omega;
+  std::size_t pick = P.size();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (c.stable[i] && P[i].omega < (1.0 - 3e-3) * w_fold && (pick == P.size() || rms_ac(P[i].X) > rms_ac(P[pick].X)))
+      pick = i;
+  if (pick == P.size()) throw std::runtime_error(cs.label + ": no stable point below the first fold for the peak check");
+  const HarmonicBalance full = dte_harmonic_balance(g, kFullSte, 0, ContactQuadrature::exact, model_of(cs));
+  VectorXd x0, v0;
+  hb_initial_state(hb, P[pick].X, P[pick].omega, x0, v0);
+  TimeIntegrationOptions opt;
+  opt.x_scale = c.scaling.x[0];
+  const SteadyState s = run.timed("peak check " + cs.label, [&] {
+    return TimeIntegrator(full).steady_state(x0, v0, P[pick].omega, opt);
+  });
+  if (!s.converged)
+    throw std::runtime_error(cs.label + ": peak check: time integration not periodic at f_mesh = " +
+                             std::to_string(hz(P[pick].omega)) + " Hz");
+  const VectorXd x = s.x.col(0);
+  const double rms_ti = std::sqrt((x.array() - x.mean()).square().mean()), rms_hb = rms_ac(P[pick].X);
+  KeyNumbers& key = run.key_numbers();
+  key.add("peak_check_f_hz_" + cs.label, hz(P[pick].omega), "Hz");
+  key.add("peak_check_rms_hb_um_" + cs.label, rms_hb * kUm, "um");
+  key.add("peak_check_rms_ti_um_" + cs.label, rms_ti * kUm, "um");
+  key.add("peak_check_rel_diff_" + cs.label, std::fabs(rms_hb - rms_ti) / rms_ti, "-");
+}
+
+// Floquet multipliers of the parametric model (variational equation about the HB
+// orbit, hb/floquet.hpp) against GSL's variational equation integrated along the
+// orbit itself (TimeIntegrator::monodromy, from the HB state): at the stable
+// full-contact point of largest RMS, the stable contact-loss point of largest RMS
+// and the unstable point of largest |mu| (where present), all 1 % away from folds.
+void GearResponse::floquet_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const ResponseEvaluator ev(hb, kX);
+  const auto& P = c.branch.points;
+  // the point of largest value(i) among those with ok(i)
+  auto pick = [&](const std::function<bool(std::size_t)>& ok, const std::function<double(std::size_t)>& value) {
+    std::size_t best = P.size();
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (ok(i) && (best == P.size() || value(i) > value(best))) best = i;
+    return best;
+  };
+  auto closed = [&](std::size_t i) { return ev.summarize(P[i].X).contact == ContactState::full; };
+  auto rms = [&](std::size_t i) { return rms_ac(P[i].X); };
+  auto away = [&](std::size_t i) {   // 1 % from every fold (a multiplier near +1 there is slow to resolve)
+    for (const auto& f : c.branch.folds)
+      if (std::fabs(f.omega - P[i].omega) < 1e-2 * f.omega) return false;
+    return true;
+  };
+  const std::size_t full = pick([&](std::size_t i) { return c.stable[i] && closed(i) && away(i); }, rms);
+  const std::size_t lost = pick([&](std::size_t i) { return c.stable[i] && !closed(i) && away(i); }, rms);
+  const std::size_t unstable = pick([&](std::size_t i) { return !c.stable[i] && away(i); },
+                                    [&](std::size_t i) { return c.floquet[i].modulus; });
+  Table t({"label", "f_mesh_hz", "contact", "stable", "modulus_variational", "modulus_time_integration", "abs_diff"});
+  const TimeIntegrator ti(hb);
+  TimeIntegrationOptions opt;
+  opt.x_scale = c.scaling.x[0];
+  double worst = 0.0;
+  for (std::size_t i : {full, lost, unstable}) {
+    if (i == P.size()) continue;
+    VectorXd x0, v0;
+    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
+    const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(ti.monodromy(x0, v0, P[i].omega, opt), false).eigenvalues();
+    const double m_ti = mu.cwiseAbs().maxCoeff(), d = std::fabs(m_ti - c.floquet[i].modulus);
+    worst = std::max(worst, d);
+    t.add_row({cs.label, hz(P[i].omega), std::string(to_string(ev.summarize(P[i].X).contact)), long(c.stable[i] ? 1 : 0),
+               c.floquet[i].modulus, m_ti, d});
+  }
+  run.write("check_floquet_" + cs.label + ".csv", t);
+  run.key_numbers().add("floquet_check_points_" + cs.label, double(t.rows()), "-");
+  run.key_numbers().add("floquet_check_abs_diff_" + cs.label, worst, "-");
+  long n_unstable = 0;
+  for (bool st : c.stable) n_unstable += st ? 0 : 1;
+  run.key_numbers().add("unstable_points_" + cs.label, double(n_unstable), "-");
+}
+
 // --case own: one curve with the user's gear.
 void GearResponse::own_case(Run& run) const {
   const double F0 = own_.torque / own_.pitch_radius;
@@ -434,7 +552,7 @@ void GearResponse::own_case(Run& run) const {
   if (own_.ste_file.empty()) {
     e = ste_samples(F0 * thesis_gear_.gear.pitch_radius());   // ch. 7's gear at the same tooth force
   } else {
-    e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0).ste;
+    e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0 || model_.model() == DteModel::parametric).ste;
   }
   DteGear g;
   g.F0 = F0;
@@ -442,13 +560,13 @@ void GearResponse::own_case(Run& run) const {
   g.kc = own_.kc > 0 ? own_.kc : mean_stiffness(e, F0);
   g.c = mesh_damping(gear_.zeta, g.kc, g.me);
   g.ste = periodic_fourier(e, sol_.H);
-  const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_));
+  const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_), model_.model());
   const FrequencyCurve c = sweep(run, hb, "own");
   run.write("frc.csv", response_table(g, hb, c));
   linear_reference(run, g, sol_.H, "own");
   Worst worst;
   Table bands({"label", "band", "f_lo_hz", "f_hi_hz"});
-  measure(run, "own", g, hb, c, worst, bands);
+  measure(run, "own", g, model_.model(), hb, c, worst, bands);
   run.write("loss_bands.csv", bands);
   KeyNumbers& key = run.key_numbers();
   key.add("me", g.me, "kg");

@@ -13,6 +13,7 @@ const char* to_string(ContactState s) {
 
 }  // namespace gearhb
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -184,6 +185,40 @@ void indicator_moments(const std::vector<std::pair<double, double>>& I, int M, d
     for (int m = 1; m <= M; ++m) {
       Sc[m] += (std::sin(m * b) - std::sin(m * a)) * inv2pi / m;
       Ss[m] += (std::cos(m * a) - std::cos(m * b)) * inv2pi / m;
+    }
+  }
+}
+
+void weighted_indicator_moments(const std::vector<std::pair<double, double>>& I,
+                                const std::function<double(double)>& w, int M, double max_piece,
+                                double* Sc, double* Ss) {
+  if (!(max_piece > 0.0)) throw std::invalid_argument("weighted_indicator_moments: max_piece must be > 0");
+  // 10-point Gauss-Legendre nodes and weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
+  static const double x[5] = {0.1488743389816312, 0.4333953941292472, 0.6794095682990244,
+                              0.8650633666889845, 0.9739065285171717};
+  static const double g[5] = {0.2955242247147530, 0.2692667193099965, 0.2190863625159820,
+                              0.1494513491505804, 0.0666713443086881};
+  const double inv2pi = 0.5 / M_PI;
+  for (int m = 0; m <= M; ++m) Sc[m] = Ss[m] = 0.0;
+  for (const auto& [a, b] : I) {
+    const int pieces = std::max(1, int(std::ceil((b - a) / max_piece)));
+    const double h = (b - a) / pieces;
+    for (int p = 0; p < pieces; ++p) {
+      const double mid = a + (p + 0.5) * h, half = 0.5 * h;
+      for (int q = 0; q < 10; ++q) {
+        const double t = mid + (q < 5 ? -x[q] : x[q - 5]) * half;
+        const double wt = g[q % 5] * half * inv2pi * w(t);
+        // cos(m t), sin(m t) by the angle-addition recurrence
+        const double c1 = std::cos(t), s1 = std::sin(t);
+        double c = 1.0, s = 0.0;
+        for (int m = 0; m <= M; ++m) {
+          Sc[m] += wt * c;
+          Ss[m] += wt * s;
+          const double cn = c * c1 - s * s1;
+          s = s * c1 + c * s1;
+          c = cn;
+        }
+      }
     }
   }
 }

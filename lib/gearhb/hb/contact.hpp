@@ -9,6 +9,12 @@
 // (n is the member `normal`).
 // The gap may also vary periodically with the forcing phase (e.g. a
 // transmission error): g(theta) = g + sum_k (gc_k cos k theta + gs_k sin k theta).
+// So may the stiffness (a parametric contact, e.g. a gear mesh whose stiffness
+// varies with the mesh phase): k_c(theta) = kc s(theta), s > 0 a 2 pi-periodic
+// profile; since s > 0 the contact is closed exactly where g + v > 0, as for a
+// constant kc, and the law stays piecewise linear in x.
+#include <functional>
+
 #include <Eigen/Dense>
 
 namespace gearhb {
@@ -20,7 +26,15 @@ struct UnilateralContact {
   // Optional periodic part of the gap, real Fourier coefficients [0, a1, b1, ...]
   // in the harmonic-balance basis (empty = constant gap).
   Eigen::VectorXd gap_harmonics;
+  // Optional stiffness profile s(theta) > 0 (2 pi-periodic, smooth inside the
+  // contact intervals): the stiffness is kc s(theta). Empty = constant kc.
+  std::function<double(double)> stiffness_profile = {};
 };
+
+// The contact stiffness at phase theta: kc, or kc s(theta) with a profile.
+inline double stiffness_at(const UnilateralContact& c, double theta) {
+  return c.stiffness_profile ? c.kc * c.stiffness_profile(theta) : c.kc;
+}
 
 // The contact law and its derivative dF/dv (0 or kc; at u = 0 we take 0).
 inline double contact_force(double kc, double u) { return u > 0.0 ? kc * u : 0.0; }
@@ -77,5 +91,17 @@ ContactState contact_state(const Eigen::VectorXd& uc, const Eigen::VectorXd& us)
 // Moments Sc[m] = (1/2pi) int_I cos(m theta), Ss[m] = (1/2pi) int_I sin(m theta), m = 0..M.
 void indicator_moments(const std::vector<std::pair<double, double>>& intervals, int M,
                        double* Sc, double* Ss);
+
+// The same moments of the indicator weighted by a smooth function w(theta) (a
+// time-varying contact stiffness profile): Sc[m] = (1/2pi) int_I w cos(m theta),
+// Ss[m] = (1/2pi) int_I w sin(m theta), m = 0..M, by 10-point Gauss-Legendre
+// quadrature on pieces of each interval no longer than `max_piece` [rad]. The
+// interval ends are the exact contact crossings, so the quadrature never straddles
+// the kink of the law; inside, w, cos and sin are smooth and the rule (exact for
+// polynomials of degree 19 on each piece) converges to round-off once a piece
+// spans well under one period of cos(M theta) and of w's fastest variation.
+void weighted_indicator_moments(const std::vector<std::pair<double, double>>& intervals,
+                                const std::function<double(double)>& w, int M, double max_piece,
+                                double* Sc, double* Ss);
 
 }  // namespace gearhb

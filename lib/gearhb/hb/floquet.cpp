@@ -27,6 +27,9 @@ PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb)
   }
   dim_ = 2 * n_ + 1 + 2 * int(harmonics_.size());
   if (hb.contacts().size() > 30) throw std::invalid_argument("PiecewiseLinearFlow: at most 30 contacts");
+  for (const auto& ct : hb.contacts())
+    if (ct.stiffness_profile)
+      throw std::invalid_argument("PiecewiseLinearFlow: a time-varying contact stiffness has no piecewise-constant flow");
 }
 
 Eigen::RowVectorXd PiecewiseLinearFlow::contact_row(std::size_t i) const {
@@ -177,8 +180,71 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
   vT = z.segment(n, n);
 }
 
+namespace {
+
+// Multipliers of a monodromy matrix into r (largest modulus first) and the stable flag.
+void set_multipliers(FloquetResult& r, const Eigen::MatrixXd& Phi, const FloquetOptions& opt, double w) {
+  const Eigen::VectorXcd mu = general_eigenvalues(Phi, "Floquet multipliers at omega = " + std::to_string(w));
+  std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
+  std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+  r.multipliers = Eigen::Map<Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
+  r.critical = v.front();
+  r.modulus = std::abs(r.critical);
+  r.angle = std::arg(r.critical);
+  r.stable = r.modulus < 1.0 - opt.stability_margin;
+}
+
+bool has_stiffness_profile(const HarmonicBalance& hb) {
+  for (const auto& ct : hb.contacts())
+    if (ct.stiffness_profile) return true;
+  return false;
+}
+
+}  // namespace
+
+FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+                                        const FloquetOptions& opt) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  const double T = 2.0 * M_PI / w;
+  const auto& sys = hb.system();
+  const Eigen::MatrixXd Minv = sys.M.inverse();
+  // penetration coefficients of every contact on the HB orbit, and its switch times
+  std::vector<Eigen::VectorXd> u;
+  std::vector<double> breakpoints;
+  const Aft aft(H);
+  for (const auto& ct : hb.contacts()) {
+    Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
+    uc[0] += ct.gap;
+    for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
+      if (b - a < 2.0 * M_PI)
+        for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / w);
+    u.push_back(std::move(uc));
+  }
+  auto A = [&](double t, Eigen::MatrixXd& out) {
+    const double th = w * t;
+    Eigen::MatrixXd Kt = sys.K;
+    for (std::size_t i = 0; i < u.size(); ++i) {
+      double ui = u[i][0];
+      for (int k = 1; k <= H; ++k) ui += u[i][2 * k - 1] * std::cos(k * th) + u[i][2 * k] * std::sin(k * th);
+      const auto& ct = hb.contacts()[i];
+      Kt += contact_stiffness(stiffness_at(ct, th), ui) * ct.normal * ct.normal.transpose();
+    }
+    out.setZero(2 * n, 2 * n);
+    out.topRightCorner(n, n).setIdentity();
+    out.bottomLeftCorner(n, n) = -Minv * Kt;
+    out.bottomRightCorner(n, n) = -Minv * sys.C;
+  };
+  FloquetResult r;
+  r.monodromy = monodromy_linear_periodic(A, 2 * n, T, breakpoints, 1e-11);
+  r.orbit_error = NAN;   // the HB orbit is not corrected on this path
+  hb_initial_state(hb, X, w, r.x0, r.v0);
+  set_multipliers(r, r.monodromy, opt, w);
+  return r;
+}
+
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, double x_scale,
                                   const FloquetOptions& opt) {
+  if (has_stiffness_profile(hb)) return floquet_of_hb_variational(hb, X, w, opt);
   const int n = hb.dofs(), H = hb.harmonics(), m = 2 * n;
   const double T = 2.0 * M_PI / w;
   const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
@@ -259,14 +325,7 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
   }
   if (Phi_best.size() == 0)
     throw std::runtime_error("floquet_of_hb_orbit: the exact period map is not finite at omega = " + std::to_string(w));
-  const Eigen::VectorXcd mu = general_eigenvalues(Phi_best, "floquet_of_hb_orbit at omega = " + std::to_string(w));
-  std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
-  std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-  r.multipliers = Eigen::Map<Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
-  r.critical = v.front();
-  r.modulus = std::abs(r.critical);
-  r.angle = std::arg(r.critical);
-  r.stable = r.modulus < 1.0 - opt.stability_margin;
+  set_multipliers(r, Phi_best, opt, w);
   return r;
 }
 

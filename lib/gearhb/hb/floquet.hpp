@@ -79,8 +79,20 @@ class PiecewiseLinearFlow {
 
 // Multipliers of the HB point (X, omega) after correcting the orbit by shooting.
 // x_scale: characteristic displacement (HarmonicBalance::scaling).
+// A model with a time-varying contact stiffness (contact.hpp stiffness_profile)
+// has no piecewise-constant generator: it goes to floquet_of_hb_variational.
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                   double x_scale, const FloquetOptions& opt = {});
+
+// Multipliers from the variational equation about the HB orbit itself (not
+// corrected; orbit_error = NaN, corrected = false):
+//   d/dt [dx; dv] = [0 I; -M^-1 (K + sum_i kc_i(t) [u_i(t) > 0] n_i n_i'), -M^-1 C] [dx; dv],
+// u_i the HB penetration, integrated by monodromy_linear_periodic with its contact
+// switches as breakpoints (the vector field is continuous in x, so no saltation).
+// For a parametric contact this is the only path; for a constant kc it is an
+// approximation of floquet_of_hb_orbit good to the HB truncation error.
+FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                        const FloquetOptions& opt = {});
 
 // Monodromy matrix of y' = A(t) y over [0, T] (dimension dim), from the identity,
 // by GSL rk8pd (relative and absolute tolerance `tol`), restarted at every

@@ -13,14 +13,30 @@
 namespace gearhb {
 
 Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega) {
-  Eigen::VectorXd best = hb.open_contact_solution(omega);
-  if (hb.contacts().empty()) return best;
+  // A candidate that is not finite (the open-contact solution of a system with a
+  // free rigid-body mode, K singular, under a static load) or whose residual is
+  // not finite is skipped.
+  Eigen::VectorXd best;
+  double r_best = INFINITY;
   Eigen::VectorXd R;
-  hb.evaluate(best, omega, R, nullptr, nullptr);
-  const double r_open = R.norm();
-  const Eigen::VectorXd closed = hb.closed_contact_solution(omega);
-  hb.evaluate(closed, omega, R, nullptr, nullptr);
-  return R.norm() < r_open ? closed : best;
+  for (bool closed : {false, true}) {
+    if (closed && hb.contacts().empty()) break;
+    Eigen::VectorXd X = closed ? hb.closed_contact_solution(omega) : hb.open_contact_solution(omega);
+    if (!X.allFinite()) continue;
+    hb.evaluate(X, omega, R, nullptr, nullptr);
+    const double r = R.norm();
+    if (std::isfinite(r) && (best.size() == 0 || r < r_best)) {
+      best = std::move(X);
+      r_best = r;
+    }
+  }
+  if (best.size() == 0) {
+    std::ostringstream os;
+    os << "linear_first_guess: neither the open- nor the closed-contact linear solution is finite at omega = "
+       << omega << " (a free rigid-body mode under a static load with no contact to hold it)";
+    throw std::invalid_argument(os.str());
+  }
+  return best;
 }
 
 const char* to_string(BifurcationType t) {

@@ -31,6 +31,21 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
     }
     if (c.gap_harmonics.size() > 2 * H_ + 1)
       c.gap_harmonics.conservativeResize(2 * H_ + 1);   // truncated to the H retained
+    // Mean stiffness over the period (trapezoid rule on 1024 phases, spectrally
+    // accurate for a smooth periodic profile); the profile must stay positive.
+    double mean = c.kc;
+    if (c.stiffness_profile) {
+      const int S = 1024;
+      double sum = 0.0;
+      for (int j = 0; j < S; ++j) {
+        const double s = c.stiffness_profile(2.0 * M_PI * j / S);
+        if (!(s > 0.0) || !std::isfinite(s))
+          throw std::invalid_argument("HarmonicBalance: contact stiffness profile must be finite and > 0");
+        sum += s;
+      }
+      mean = c.kc * sum / S;
+    }
+    kc_mean_.push_back(mean);
   }
   const int N_ = aft_.samples(), m = 2 * H_ + 1;
   uc_.resize(m); us_.resize(N_); fs_.resize(N_); ss_.resize(N_); fcoef_.resize(m);
@@ -85,14 +100,21 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::Vector
     uc_[0] += ct.gap;
     aft_.to_time(uc_.data(), us_.data());
     if (quad_ == ContactQuadrature::exact) {
-      indicator_moments(contact_intervals(uc_, us_), 2 * H_, mc_.data(), ms_.data());
+      // the moments of the indicator of the contact intervals, weighted by the
+      // stiffness profile if any (pieces of at most one sample spacing)
+      if (ct.stiffness_profile)
+        weighted_indicator_moments(contact_intervals(uc_, us_), ct.stiffness_profile, 2 * H_, 2.0 * M_PI / N,
+                                   mc_.data(), ms_.data());
+      else
+        indicator_moments(contact_intervals(uc_, us_), 2 * H_, mc_.data(), ms_.data());
       aft_.product_matrix_from_moments(mc_.data(), ms_.data(), G_);
       G_ *= ct.kc;
       fcoef_.noalias() = G_ * uc_;
     } else {
       for (int j = 0; j < N; ++j) {
-        fs_[j] = contact_force(ct.kc, us_[j]);
-        ss_[j] = contact_stiffness(ct.kc, us_[j]);
+        const double k = stiffness_at(ct, 2.0 * M_PI * j / N);
+        fs_[j] = contact_force(k, us_[j]);
+        ss_[j] = contact_stiffness(k, us_[j]);
       }
       aft_.to_frequency(fs_.data(), fcoef_.data());
       if (J) aft_.product_matrix(ss_.data(), G_);
@@ -117,12 +139,19 @@ Eigen::VectorXd HarmonicBalance::linear_solution(double w, bool closed) const {
   Eigen::MatrixXd K = sys_.K;
   Eigen::VectorXd f0 = f_.f0;
   if (closed)
-    for (const auto& ct : contacts_) {
-      K += ct.kc * ct.normal * ct.normal.transpose();
-      f0 -= ct.kc * ct.gap * ct.normal;   // constant part of kc (g + n'x) moved to the right
+    for (std::size_t i = 0; i < contacts_.size(); ++i) {
+      const auto& ct = contacts_[i];
+      // a stiffness profile enters with its mean (then this is a first guess only)
+      K += kc_mean_[i] * ct.normal * ct.normal.transpose();
+      f0 -= kc_mean_[i] * ct.gap * ct.normal;   // constant part of kc (g + n'x) moved to the right
     }
   Eigen::VectorXd X = Eigen::VectorXd::Zero(size());
-  X.segment(0, n_) = K.partialPivLu().solve(f0);
+  // K singular (a free rigid-body mode, e.g. gears with rigid shafts and the mesh
+  // open) under a static load that K cannot hold: no static equilibrium, the
+  // static part is NaN (linear_first_guess then skips this solution).
+  Eigen::VectorXd X0 = K.partialPivLu().solve(f0);
+  if (!X0.allFinite() || (K * X0 - f0).norm() > 1e-8 * f0.norm()) X0.setConstant(NAN);
+  X.segment(0, n_) = X0;
   LinearSystem s{sys_.M, sys_.C, K};
   const std::complex<double> i(0.0, 1.0);
   // fc cos + fs sin = Re((fc - i fs) e^{i theta})
@@ -161,15 +190,16 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
       if (closed && contacts_.empty()) continue;
       const Eigen::VectorXd X = linear_solution(w, closed);
       for (int d = 0; d < n_; ++d) {
-        xref = std::max(xref, std::hypot(X[index(1, d)], X[index(2, d)]));
-        xstatic = std::max(xstatic, std::fabs(X[d]));
+        const double a = std::hypot(X[index(1, d)], X[index(2, d)]);
+        if (std::isfinite(a)) xref = std::max(xref, a);
+        if (std::isfinite(X[d])) xstatic = std::max(xstatic, std::fabs(X[d]));   // NaN: no static equilibrium
       }
     }
   }
   if (!(xref > 0.0)) xref = xstatic;  // no oscillating input: the static size
   if (!(xref > 0.0)) xref = 1.0;      // nothing forces the system: any unit will do
   double kref = sys_.K.diagonal().cwiseAbs().maxCoeff();
-  for (const auto& ct : contacts_) kref += ct.kc * ct.normal.squaredNorm();
+  for (std::size_t i = 0; i < contacts_.size(); ++i) kref += kc_mean_[i] * contacts_[i].normal.squaredNorm();
   Scaling s;
   s.x = Eigen::VectorXd::Constant(size(), xref);
   s.omega = std::max(std::fabs(wmax), std::fabs(wmin));

@@ -20,11 +20,15 @@
 // coefficients of u = g + n'x (n = UnilateralContact::normal) go to N time samples (FFTW), then either
 //  - sampled (the classic AFT): the law is applied sample by sample and the
 //    samples go back to coefficients; Jacobian dFnl/dX = sum_i (n_i n_i') (x) G(s_i),
-//    G the AFT product matrix of the sampled stiffness s_i = kc_i [u_i > 0];
+//    G the AFT product matrix of the sampled stiffness s_i = kc_i [u_i > 0]
+//    (kc_i(theta_j) for a contact with a stiffness profile);
 //  - exact (default): the samples only bracket the contact crossings, which are
 //    refined on the trigonometric polynomial, and the projection of the
 //    piecewise-linear law is integrated in closed form (contact.hpp). Same
 //    Jacobian structure with G the product matrix of the contact indicator.
+//    With a time-varying stiffness kc s(theta) (contact.hpp), G is the product
+//    matrix of s times the indicator, its moments integrated by Gauss-Legendre
+//    quadrature between the exact crossings (weighted_indicator_moments).
 // Both Jacobians are exact for their residual. Why exact is the default: the
 // sampled residual is piecewise linear in X with a kink per sample crossing,
 // which near folds creates spurious micro-folds (ch. 3 sample study).
@@ -70,11 +74,16 @@ class HarmonicBalance : public ParametricProblem {
   Eigen::VectorXd project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const;
 
   // Solution with every contact removed (open contact): static + first harmonic,
-  // exact for the linear system. A natural first guess for Newton.
+  // exact for the linear system. A natural first guess for Newton. If K cannot
+  // hold the static load (K singular: a free rigid-body mode) the static part is NaN.
   Eigen::VectorXd open_contact_solution(double omega) const;
   // The same with every contact permanently closed (springs kc_i n_i n_i' and
   // their constant preloads kc_i g_i added): exact while the contacts stay shut.
+  // A contact with a stiffness profile (contact.hpp) enters with its mean
+  // stiffness: then this is only a first guess.
   Eigen::VectorXd closed_contact_solution(double omega) const;
+  // Mean over the period of contact i's stiffness (kc, or kc times the mean profile).
+  double mean_stiffness(std::size_t i) const { return kc_mean_[i]; }
 
   // Characteristic sizes, from the problem's own data over [omega_min, omega_max]:
   // displacement = the largest of the open- and closed-contact linear vibration
@@ -91,6 +100,7 @@ class HarmonicBalance : public ParametricProblem {
   int n_, H_;
   Aft aft_;
   ContactQuadrature quad_;
+  std::vector<double> kc_mean_;   // per contact, mean stiffness over the period
   // Work buffers (evaluate is const but not re-entrant: one object per thread).
   mutable Eigen::VectorXd uc_, us_, fs_, ss_, fcoef_, mc_, ms_;
   mutable Eigen::MatrixXd G_;

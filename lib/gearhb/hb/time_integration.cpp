@@ -52,7 +52,7 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
     const auto& sys = c->hb->system();
     Eigen::MatrixXd Kt = sys.K;
     for (const auto& ct : c->hb->contacts())
-      Kt += contact_stiffness(ct.kc, gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
+      Kt += contact_stiffness(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -c->Minv * Kt / (w * w);
@@ -91,7 +91,7 @@ Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
   const double theta = omega * t;
   Eigen::VectorXd rhs = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta) - sys.C * v - sys.K * x;
   for (const auto& ct : hb_.contacts())
-    rhs -= contact_force(ct.kc, gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
+    rhs -= contact_force(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
   return Minv_ * rhs;
 }
 
