@@ -19,11 +19,10 @@
 //    periodic signal).
 //  - grid_error: how far a method's grid solutions are from the reference's
 //    stable ones: for every stable reference solution, the nearest solution of
-//    the method at that frequency (relative error of x_max, of x_h1). A stable
-//    reference solution with no method solution within `found` (relative, in
-//    x_max) is counted as missed, not as an error: a stepped time-integration
-//    sweep lands on one attractor and misses a coexisting one, which is a
-//    different failure from an inaccurate solution.
+//    the method at that frequency (relative error of x_max, of x_h1, capped at 1;
+//    1 when the method has none there). A solution farther than `found` is also
+//    counted as missed: a stepped sweep lands on one attractor and misses a
+//    coexisting one, so its error there is the distance between the two.
 //  - cpu_seconds: CPU time of this process, to time a method.
 #include <vector>
 
@@ -58,6 +57,15 @@ BranchOnGridReport branch_on_grid(const HarmonicBalance& hb, const Branch& b, co
                                   const std::vector<double>& omegas, const Eigen::VectorXd& q,
                                   StabilityMethod stability, const FloquetOptions& floquet = {});
 
+// Harmonic balance stepped along `omegas` (in that order) the way a time-integration
+// sweep is: Newton at each frequency from the previous solution (the first from the
+// linear first guess, frequency_sweep.hpp; after a failure again from it), stability
+// by Hill. One solution per frequency at most; failures leave the frequency empty.
+GridSolutions newton_stepped_sweep(const HarmonicBalance& hb, const std::vector<double>& omegas,
+                                   const Eigen::VectorXd& q, const Scaling& s);
+// Merge the solutions of several sweeps on the same grid (duplicates dropped).
+GridSolutions merge_grid(const std::vector<GridSolutions>& parts, const Scaling& s);
+
 struct SteppedSweepPoint {
   double omega = 0.0;
   bool periodic = false;         // the state repeated within opt.periodicity_tol
@@ -81,7 +89,7 @@ GridSolutions sweep_on_grid(const std::vector<double>& omegas,
                             const std::vector<std::vector<SteppedSweepPoint>>& sweeps);
 
 struct GridError {
-  double x_max = 0.0, x_h1 = 0.0;   // largest relative errors over the solutions found
+  double x_max = 0.0, x_h1 = 0.0;   // largest relative errors (capped at 1)
   int compared = 0;                 // stable reference solutions
   int missed = 0;                   // of which the method had none within `found`
 };
