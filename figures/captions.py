@@ -60,6 +60,18 @@ CHAPTERS = [
         ("fig70s_H*.png", "supplement", "Convergence in H of the 300 N m curve (H = 1, 5, 10, 20): 5 harmonics are not "
          "converged at the peak (2.8 % below H = 20), see the chapter README."),
     ]},
+    {"program": "ch02_methods", "title": "Chapter 2: the method, speed against accuracy, and where each method fails", "figures": [
+        ("figM1_*.png", "supplement", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
+         "rkf45 sweeps); hollow circles: a stable solution missed."),
+        ("figM2_*.png", "supplement", "CPU time of one Newton step against n(2H+1), with the (n(2H+1))^3 model of the LU."),
+        ("figM3_*.png", "supplement", "Natural continuation stops at the first fold; arc length goes round it."),
+        ("figM4_*.png", "supplement", "Time-integration sweeps up and down jump at the folds and never see the unstable branch."),
+        ("figM5_*.png", "supplement", "Sampled AFT: spurious folds and stalled branches at contact; the exact projection has none."),
+        ("figM6_*.png", "supplement", "Too few harmonics: the gear's superharmonic resonances disappear."),
+        ("figM7_*.png", "supplement", "Hill truncated at H against Floquet on the Mathieu and Meissner stability charts."),
+        ("figM8_*.png", "supplement", "Arc length without scaling on the micrometre gear problem: stuck near the start."),
+        ("figM9_*.png", "supplement", "Grazing: each method's error as the contact interval shrinks to zero."),
+    ]},
 ]
 
 NOT_COMPUTABLE = [
