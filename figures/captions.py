@@ -62,6 +62,18 @@ CHAPTERS = [
         ("fig70s_param*.png", "supplement", "The 300 N m curve of the thesis' constant-stiffness model and of the "
          "parametric model it approximates (k(t) = F0/e(t)), see the chapter README."),
     ]},
+    {"program": "ch02_methods", "title": "Chapter 2: the method, speed against accuracy, and where each method fails", "figures": [
+        ("figM1_*.png", "supplement", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
+         "rkf45 sweeps); hollow circles: a stable solution missed."),
+        ("figM2_*.png", "supplement", "CPU time of one Newton step against n(2H+1), with the (n(2H+1))^3 model of the LU."),
+        ("figM3_*.png", "supplement", "Natural continuation stops at the first fold; arc length goes round it."),
+        ("figM4_*.png", "supplement", "Time-integration sweeps up and down jump at the folds and never see the unstable branch."),
+        ("figM5_*.png", "supplement", "Sampled AFT: spurious folds and stalled branches at contact; the exact projection has none."),
+        ("figM6_*.png", "supplement", "Too few harmonics: the gear's superharmonic resonances disappear."),
+        ("figM7_*.png", "supplement", "Hill truncated at H against Floquet on the Mathieu and Meissner stability charts."),
+        ("figM8_*.png", "supplement", "Arc length without scaling on the micrometre gear problem: stuck near the start."),
+        ("figM9_*.png", "supplement", "Grazing: each method's error as the contact interval shrinks to zero."),
+    ]},
 ]
 
 NOT_COMPUTABLE = [

@@ -5,6 +5,7 @@
 #include <string>
 
 #include <gsl/gsl_errno.h>
+#include <gsl/gsl_min.h>
 #include <gsl/gsl_odeiv2.h>
 
 #include "gearhb/core/gsl_errors.hpp"
@@ -17,7 +18,8 @@ double gap_at(const UnilateralContact& c, double theta) {
   double g = c.gap + c.gap_harmonics[0];
   const int H = int(c.gap_harmonics.size() - 1) / 2;
   for (int k = 1; k <= H; ++k)
-    g += c.gap_harmonics[2 * k - 1] * std::cos(k * theta) + c.gap_harmonics[2 * k] * std::sin(k * theta);
+    if (c.gap_harmonics[2 * k - 1] != 0.0 || c.gap_harmonics[2 * k] != 0.0)   // padded zeros cost nothing
+      g += c.gap_harmonics[2 * k - 1] * std::cos(k * theta) + c.gap_harmonics[2 * k] * std::sin(k * theta);
   return g;
 }
 
@@ -28,6 +30,7 @@ struct OdeContext {
   int n;
   bool variational;
   Eigen::MatrixXd Minv;
+  Eigen::VectorXd r = Eigen::VectorXd();   // work buffer of the right-hand side (no allocation per call)
 };
 
 // The integration runs in the forcing phase theta = omega t, not in t: the state is
@@ -43,13 +46,19 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   const int n = c->n;
   const double w = c->omega;
   Eigen::Map<const Eigen::VectorXd> x(y, n), x_theta(y + n, n);
-  const Eigen::VectorXd a = c->ti->acceleration(theta / w, x, w * x_theta, w);
-  for (int i = 0; i < n; ++i) {
-    dydt[i] = y[n + i];
-    dydt[n + i] = a[i] / (w * w);
-  }
+  // The acceleration of TimeIntegrator::acceleration at t = theta / w, v = w x_theta,
+  // into the work buffer (no allocation per call), divided by w^2.
+  const auto& sys = c->hb->system();
+  const auto& f = c->hb->excitation();
+  c->r.resize(n);
+  c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
+  c->r.noalias() -= w * (sys.C * x_theta);
+  c->r.noalias() -= sys.K * x;
+  for (const auto& ct : c->hb->contacts())
+    c->r -= contact_force(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
+  std::copy(y + n, y + 2 * n, dydt);
+  Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (w * w);
   if (c->variational) {
-    const auto& sys = c->hb->system();
     Eigen::MatrixXd Kt = sys.K;
     for (const auto& ct : c->hb->contacts())
       Kt += contact_stiffness(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
@@ -67,16 +76,18 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
 struct Driver {
   gsl_odeiv2_system sys;
   gsl_odeiv2_driver* d;
-  Driver(OdeContext& ctx, std::size_t dim, double h0, double abs_tol, double rel_tol) {
+  Driver(OdeContext& ctx, std::size_t dim, double h0, double abs_tol, double rel_tol,
+         OdeStepper stepper = OdeStepper::rk8pd) {
     sys = {rhs, nullptr, dim, &ctx};
-    d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, h0, abs_tol, rel_tol);
+    const gsl_odeiv2_step_type* type = stepper == OdeStepper::rkf45 ? gsl_odeiv2_step_rkf45 : gsl_odeiv2_step_rk8pd;
+    d = gsl_odeiv2_driver_alloc_y_new(&sys, type, h0, abs_tol, rel_tol);
   }
   ~Driver() { gsl_odeiv2_driver_free(d); }
   // Advance the phase theta to theta1.
   void advance(double& theta, double theta1, double* y, double omega) {
     const int status = gsl_odeiv2_driver_apply(d, &theta, theta1, y);
     if (status != GSL_SUCCESS)
-      throw std::runtime_error("time integration (GSL rk8pd) failed at omega = " + std::to_string(omega) +
+      throw std::runtime_error("time integration (GSL " + std::string(gsl_odeiv2_step_name(d->s)) + ") failed at omega = " + std::to_string(omega) +
                                ", period " + std::to_string(int(theta / (2.0 * M_PI)) + 1) + ": " +
                                gsl_strerror(status));
   }
@@ -101,7 +112,7 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
   const GslErrorsReturned gsl_errors;
   OdeContext ctx{this, &hb_, omega, n, false, Minv_};
   const double P = 2.0 * M_PI;   // one forcing period in theta
-  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
   std::vector<double> y(2 * n);
   for (int i = 0; i < n; ++i) {
     y[i] = x0[i];
@@ -131,6 +142,71 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
     for (int i = 0; i < n; ++i) ss.x(j, i) = y[i];
   }
   return ss;
+}
+
+namespace {
+struct CrestSearch {
+  OdeContext* ctx;
+  const TimeIntegrationOptions* opt;
+  const Eigen::VectorXd* q;
+  double theta_start;
+  std::vector<double> y_start;
+  double step0;
+};
+// -q'x at the phase theta, integrated from the state at theta_start (the minimiser's objective).
+double minus_coordinate(double theta, void* params) {
+  auto* c = static_cast<CrestSearch*>(params);
+  const int n = c->ctx->n;
+  std::vector<double> y = c->y_start;
+  double th0 = c->theta_start;
+  if (theta > th0) {
+    Driver drv(*c->ctx, 2 * n, c->step0, c->opt->abs_tol * c->opt->x_scale, c->opt->rel_tol, c->opt->stepper);
+    drv.advance(th0, theta, y.data(), c->ctx->omega);
+  }
+  return -c->q->dot(Eigen::Map<const Eigen::VectorXd>(y.data(), n));
+}
+}  // namespace
+
+double TimeIntegrator::max_over_period(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                                       const Eigen::VectorXd& q, const TimeIntegrationOptions& opt) const {
+  const int n = hb_.dofs(), N = opt.samples_per_period;
+  const GslErrorsReturned gsl_errors;
+  OdeContext ctx{this, &hb_, omega, n, false, Minv_};
+  const double P = 2.0 * M_PI;   // one forcing period in theta
+  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
+  std::vector<std::vector<double>> states(N);
+  std::vector<double> y(2 * n);
+  for (int i = 0; i < n; ++i) {
+    y[i] = x0[i];
+    y[n + i] = v0[i] / omega;
+  }
+  double theta = 0.0;
+  int best = 0;
+  double best_value = -INFINITY;
+  for (int j = 0; j < N; ++j) {
+    drv.advance(theta, P * j / N, y.data(), omega);
+    states[j] = y;
+    const double value = q.dot(Eigen::Map<const Eigen::VectorXd>(y.data(), n));
+    if (value > best_value) { best_value = value; best = j; }
+  }
+  // Bracket [theta_{j-1}, theta_{j+1}] around the best sample (the flow is 2 pi-periodic in theta).
+  const int prev = (best + N - 1) % N;
+  CrestSearch cs{&ctx, &opt, &q, P * (best - 1) / N, states[prev], P / N / 16};
+  gsl_function f{minus_coordinate, &cs};
+  const double a = cs.theta_start, b = P * (best + 1) / N, m = P * best / N;
+  if (!(minus_coordinate(m, &cs) < std::min(minus_coordinate(a, &cs), minus_coordinate(b, &cs))))
+    return best_value;   // flat crest: no interior minimum to bracket
+  gsl_min_fminimizer* s = gsl_min_fminimizer_alloc(gsl_min_fminimizer_brent);
+  gsl_min_fminimizer_set(s, &f, m, a, b);
+  double fmin = -best_value;
+  for (int it = 0; it < 100; ++it) {
+    if (gsl_min_fminimizer_iterate(s) != GSL_SUCCESS) break;
+    fmin = std::min(fmin, gsl_min_fminimizer_f_minimum(s));
+    if (gsl_min_test_interval(gsl_min_fminimizer_x_lower(s), gsl_min_fminimizer_x_upper(s), 1e-9 * P / N, 0.0) == GSL_SUCCESS)
+      break;
+  }
+  gsl_min_fminimizer_free(s);
+  return std::max(best_value, -fmin);
 }
 
 Eigen::MatrixXd TimeIntegrator::monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,

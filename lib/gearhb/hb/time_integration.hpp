@@ -23,7 +23,12 @@
 
 namespace gearhb {
 
+// GSL's embedded Runge-Kutta pairs: Prince-Dormand 8(9) (the default, the
+// project's reference) and the cheaper Runge-Kutta-Fehlberg 4(5).
+enum class OdeStepper { rk8pd, rkf45 };
+
 struct TimeIntegrationOptions {
+  OdeStepper stepper = OdeStepper::rk8pd;
   double rel_tol = 1e-10, abs_tol = 1e-12;  // GSL driver tolerances (abs_tol scaled by x_scale)
   double x_scale = 1.0;                     // typical displacement, for abs_tol
   int max_periods = 20000;
@@ -48,6 +53,13 @@ class TimeIntegrator {
   // Integrate from (x0, v0) at phase 0 until periodic, then sample the last period.
   SteadyState steady_state(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                            const TimeIntegrationOptions& opt) const;
+
+  // Largest value over one period of the coordinate q' x on the orbit through
+  // (x0, v0) at phase 0: the largest of opt.samples_per_period uniform samples,
+  // refined by GSL's Brent minimiser between its neighbours (each trial time
+  // integrated from the neighbour's state), so a crest between samples is found.
+  double max_over_period(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                         const Eigen::VectorXd& q, const TimeIntegrationOptions& opt) const;
 
   // Monodromy matrix (2n x 2n) about the orbit through (x0, v0) at phase 0.
   Eigen::MatrixXd monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
