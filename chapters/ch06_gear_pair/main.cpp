@@ -174,8 +174,8 @@ GearPairChapter::GearPairChapter(Study& study) {
   P.add("ds_max_alt", &mesh_.ds_max_alt, "-", "arc-length step cap of the kc_alt curves", Range::between(1e-6, 1.0));
   P.add("damp_mesh", &mesh_.damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only", Range::between(0, 1));
   P.group("own case (--case own)", true);
-  P.add("Fi", &own_.Fi, "N m", "static torque on gear 1; gear 2 gets -Fi rb2/rb1");
-  P.add("Fa", &own_.Fa, "N, N m", "harmonic amplitude of F = Fa [1,0,1,1,0,1]", Range::nonnegative());
+  P.add("Fi", &own_.Fi, "N m", "static torque on gear 1; gear 2 gets -Fi rb2/rb1", Range::between(-1e12, 1e12));
+  P.add("Fa", &own_.Fa, "N, N m", "harmonic amplitude of F = Fa [1,0,1,1,0,1]", Range::between(0.0, 1e12));
   sol_.omega_min = 2000.0;    // ~0.16 x the lowest natural frequency
   sol_.omega_max = 62000.0;   // ~1.2 x the highest closed one
   sol_.ds_max = 0.005;        // resolves the small fold pairs near 7.5-8.4 krad/s (README)
@@ -361,6 +361,8 @@ void GearPairChapter::own_case(Run& run) const {
   run.write("frc.csv", frequency_response_table(hb, c, T2));
   run.write("bifurcations.csv", bifurcation_table(c));
   const ContactHistory h = contact_history(hb, c.branch, T2);
+  run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");   // 0: natural continuation stopped at a fold
+  run.key_numbers().add("points", double(c.branch.points.size()), "-");
   run.key_numbers().add("transitions", h.transitions, "-");
   run.key_numbers().add("folds", double(c.branch.folds.size()), "-");
   run.key_numbers().add("delta_max", h.x_max, "m");

@@ -33,7 +33,7 @@ Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega) {
   if (best.size() == 0) {
     std::ostringstream os;
     os << "linear_first_guess: neither the open- nor the closed-contact linear solution is finite at omega = "
-       << omega << " (a free rigid-body mode under a static load with no contact to hold it)";
+       << omega << " (a free rigid-body mode under a static load with no contact to hold it, or loads so large that the response overflows)";
     throw std::invalid_argument(os.str());
   }
   return best;
