@@ -37,6 +37,8 @@ CHAPTERS = [
          "harmonic loads (kc = 5e8 N/m): dashed where unstable; where the mesh opens the curves bend and fold."),
         ("figS4[0-5]_*.png", "supplement", "The same with the printed kc = 5e2 N/m (kc_alt): every curve is the linear open response "
          "shifted, which is why 5e8 is the default (chapter README)."),
+        ("figS46_*.png", "supplement", "Beyond Fig. 43's first period doubling: time integration settles on an orbit that "
+         "repeats after two forcing periods, not one; the dashed curve is the unstable period-1 orbit of harmonic balance."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
         ("fig4[89]_*.png", "Figs. 48-49", "Deflection of one tooth pair loaded at two contact node pairs (constant thickness)."),

@@ -106,4 +106,28 @@ def draw(data_dir, fig_dir):
         else:
             name = "figS%d_ch06_kc_alt.png" % int(row["figure"])
         out.append(case_figure(data_dir, fig_dir, row, name))
+    if (data_dir / "period2_fig43.csv").exists():
+        out.append(period_doubling_figure(data_dir, fig_dir))
     return out
+
+
+def period_doubling_figure(data_dir, fig_dir):
+    """Supplement: the period-2 orbit GSL finds beyond Fig. 43's first period doubling."""
+    import json
+    d = read_csv(data_dir / "period2_fig43.csv")
+    with open(data_dir / "key_numbers.json") as f:
+        key = {k: v["value"] for k, v in json.load(f).items()}
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    ax.plot(d["periods"], [v * 1e3 for v in d["delta_time_integration"]], color="C0", lw=1.4,
+            label="GSL rk8pd after %d periods: period 2" % 3000)
+    ax.plot(d["periods"], [v * 1e3 for v in d["delta_hb_period_one"]], color="C1", lw=1.0, ls="--",
+            label=r"harmonic balance: period-1 orbit (unstable, $\mu$ = %.3f)" % key["period2_multiplier_fig43"])
+    for p in range(1, 4):
+        ax.axvline(p, color="0.6", ls=":", lw=0.8)
+    ax.axhline(0.0, color="k", lw=1.0, ls=":")
+    ax.set_xlabel(r"time [forcing periods $2\pi/\omega$]")
+    ax.set_ylabel(r"mesh deflection $\Delta$ [mm]")
+    ax.set_title(r"Beyond Fig. 43's period doubling: $\omega$ = %.1f rad/s, $F_i$ = -1e6 N m, F = 1e4 (H = 16)"
+                 % key["period2_omega_fig43"], fontsize=9)
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, framealpha=0.9)
+    return save(fig, fig_dir / "figS46_ch06_period_doubling.png")

@@ -26,8 +26,10 @@
 //   build/bin/ch06_gear_pair --case own --set Fi=1e6 --set Fa=1e5 --out /tmp/mine
 //   build/bin/ch06_gear_pair --case fig43 --set H=16           one curve of the table
 // ===========================================================================
+#include <algorithm>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -40,6 +42,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/hb/response.hpp"
+#include "gearhb/hb/time_integration.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -71,6 +74,7 @@ struct Checks {
   double check_omega_min = 10000;   // its range [rad/s]: Fig. 43's intermittent band
   double check_omega_max = 20000;
   double check_omega_max_quick = 12600;   // --case quick: the first stable part of the band
+  int pd_transient = 3000;          // forcing periods integrated before the period-2 orbit is sampled
 };
 
 enum class Mesh { kc, kc_alt };          // which mesh stiffness a case uses
@@ -146,6 +150,7 @@ class GearPairChapter {
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void time_integration_check(Run& run) const;
+  void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void harmonic_convergence(Run& run) const;
   void own_case(Run& run) const;
 };
@@ -337,6 +342,52 @@ void GearPairChapter::time_integration_check(Run& run) const {
   run.key_numbers().add("time_integration_points", double(chk.points), "-");
   run.say("time-integration check (Fig. 43): " + std::to_string(chk.points) + " points, worst relative difference " +
           std::to_string(chk.worst_rel_diff));
+  period_doubled_orbit(run, hb, c);
+}
+
+// Step 4b (issue "Stability and contact you can trust"): beyond the first period doubling
+// of the check curve the period-1 orbit is unstable with a multiplier below -1. GSL rk8pd
+// started on it leaves it and settles on a period-2 orbit: Delta repeats after two forcing
+// periods, not after one (period2_fig43.csv: 4 periods of both orbits).
+void GearPairChapter::period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const auto& B = c.bifurcations;
+  const auto pd = std::find_if(B.begin(), B.end(), [](const Bifurcation& b) {
+    return b.type == BifurcationType::period_doubling && b.located;
+  });
+  if (pd == B.end() || pd + 1 == B.end()) throw std::runtime_error("the check curve has no period-doubling band");
+  const auto& P = c.branch.points;
+  const double w_mid = 0.5 * (pd->omega + (pd + 1)->omega);
+  std::size_t k = std::size_t(pd->after_point) + 1;   // the point of the band nearest its middle
+  for (std::size_t i = k; i <= std::size_t((pd + 1)->after_point); ++i)
+    if (std::fabs(P[i].omega - w_mid) < std::fabs(P[k].omega - w_mid)) k = i;
+  const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
+  TimeIntegrator ti(hb);
+  TimeIntegrationOptions o;
+  o.x_scale = c.scaling.x[0];
+  o.samples_per_period = 256;
+  VectorXd x0, v0;
+  hb_initial_state(hb, P[k].X, P[k].omega, x0, v0);
+  const VectorXd d = run.timed("period-2 orbit", [&] { return VectorXd(ti.sample(x0, v0, P[k].omega, checks_.pd_transient, 4, o) * T2); });
+  const VectorXd d_hb = ResponseEvaluator(hb, T2, 256).history(P[k].X);
+  const int N = 256;
+  const double half = 0.5 * (d.maxCoeff() - d.minCoeff());
+  double after_one = 0.0, after_two = 0.0;   // max |Delta(t + T) - Delta(t)|, |Delta(t + 2T) - Delta(t)| / half
+  for (int j = 0; j < 2 * N; ++j) {
+    after_one = std::max(after_one, std::fabs(d[j + N] - d[j]) / half);
+    after_two = std::max(after_two, std::fabs(d[j + 2 * N] - d[j]) / half);
+  }
+  Table t({"periods", "delta_time_integration", "delta_hb_period_one"});
+  for (int j = 0; j < 4 * N; ++j) t.add_row({double(j) / N, d[j], d_hb[j % N]});
+  run.write("period2_fig43.csv", t);
+  KeyNumbers& key = run.key_numbers();
+  key.add("period2_omega_fig43", P[k].omega, "rad/s");
+  key.add("period2_multiplier_fig43", c.floquet[k].modulus * std::cos(c.floquet[k].angle), "-");
+  key.add("period2_repeat_after_one_period", after_one, "-");
+  key.add("period2_repeat_after_two_periods", after_two, "-");
+  key.add("period2_orbit_fig43", after_two < 1e-6 && after_one > 1e-2 ? 1.0 : 0.0, "-");
+  run.say("beyond the period doubling at " + std::to_string(pd->omega) + " rad/s: time integration at " +
+          std::to_string(P[k].omega) + " rad/s repeats after 2 periods to " + std::to_string(after_two) +
+          ", after 1 period only to " + std::to_string(after_one));
 }
 
 // Step 5: convergence in H of the peak Delta_max / Delta_min of Fig. 43 over 10-20 krad/s.

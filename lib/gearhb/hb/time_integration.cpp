@@ -144,6 +144,29 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
   return ss;
 }
 
+Eigen::MatrixXd TimeIntegrator::sample(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                                       int transient, int periods, const TimeIntegrationOptions& opt) const {
+  const int n = hb_.dofs(), N = opt.samples_per_period;
+  const GslErrorsReturned gsl_errors;
+  OdeContext ctx{this, &hb_, omega, n, false, Minv_};
+  const double P = 2.0 * M_PI;   // one forcing period in theta
+  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
+  std::vector<double> y(2 * n);
+  for (int i = 0; i < n; ++i) {
+    y[i] = x0[i];
+    y[n + i] = v0[i] / omega;
+  }
+  double theta = 0.0;
+  for (int p = 1; p <= transient; ++p) drv.advance(theta, p * P, y.data(), omega);
+  Eigen::MatrixXd xs(Eigen::Index(periods) * N, n);
+  const double theta0 = theta;
+  for (Eigen::Index j = 0; j < xs.rows(); ++j) {
+    drv.advance(theta, theta0 + P * double(j) / N, y.data(), omega);
+    for (int i = 0; i < n; ++i) xs(j, i) = y[i];
+  }
+  return xs;
+}
+
 namespace {
 struct CrestSearch {
   OdeContext* ctx;

@@ -58,6 +58,12 @@ class TimeIntegrator {
   // (x0, v0) at phase 0: the largest of opt.samples_per_period uniform samples,
   // refined by GSL's Brent minimiser between its neighbours (each trial time
   // integrated from the neighbour's state), so a crest between samples is found.
+  // Integrate from (x0, v0) at phase 0 over `transient` forcing periods, then sample x
+  // over `periods` more (samples_per_period each, starting at phase 0): a
+  // (periods x samples_per_period) x n matrix. For orbits that are not 1-periodic
+  // (period doubling, quasi-periodic), where steady_state's periodicity test fails.
+  Eigen::MatrixXd sample(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int transient,
+                         int periods, const TimeIntegrationOptions& opt) const;
   double max_over_period(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                          const Eigen::VectorXd& q, const TimeIntegrationOptions& opt) const;
 
