@@ -93,6 +93,17 @@ struct Driver {
   }
 };
 
+// The integrator's state (x, dx/dtheta = v / omega) from (x, v).
+std::vector<double> phase_state(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega) {
+  const auto n = x0.size();
+  std::vector<double> y(std::size_t(2 * n));
+  for (Eigen::Index i = 0; i < n; ++i) {
+    y[std::size_t(i)] = x0[i];
+    y[std::size_t(n + i)] = v0[i] / omega;
+  }
+  return y;
+}
+
 }  // namespace
 
 Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
@@ -113,11 +124,7 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
   OdeContext ctx{this, &hb_, omega, n, false, Minv_};
   const double P = 2.0 * M_PI;   // one forcing period in theta
   Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
-  std::vector<double> y(2 * n);
-  for (int i = 0; i < n; ++i) {
-    y[i] = x0[i];
-    y[n + i] = v0[i] / omega;
-  }
+  std::vector<double> y = phase_state(x0, v0, omega);
   SteadyState ss;
   double theta = 0.0;
   for (int p = 1; p <= opt.max_periods; ++p) {
@@ -151,11 +158,7 @@ Eigen::MatrixXd TimeIntegrator::sample(const Eigen::VectorXd& x0, const Eigen::V
   OdeContext ctx{this, &hb_, omega, n, false, Minv_};
   const double P = 2.0 * M_PI;   // one forcing period in theta
   Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
-  std::vector<double> y(2 * n);
-  for (int i = 0; i < n; ++i) {
-    y[i] = x0[i];
-    y[n + i] = v0[i] / omega;
-  }
+  std::vector<double> y = phase_state(x0, v0, omega);
   double theta = 0.0;
   for (int p = 1; p <= transient; ++p) drv.advance(theta, p * P, y.data(), omega);
   Eigen::MatrixXd xs(Eigen::Index(periods) * N, n);
@@ -198,11 +201,7 @@ double TimeIntegrator::max_over_period(const Eigen::VectorXd& x0, const Eigen::V
   const double P = 2.0 * M_PI;   // one forcing period in theta
   Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
   std::vector<std::vector<double>> states(N);
-  std::vector<double> y(2 * n);
-  for (int i = 0; i < n; ++i) {
-    y[i] = x0[i];
-    y[n + i] = v0[i] / omega;
-  }
+  std::vector<double> y = phase_state(x0, v0, omega);
   double theta = 0.0;
   int best = 0;
   double best_value = -INFINITY;
