@@ -83,6 +83,6 @@ TEST(FrequencySweep, TimeIntegrationCheckPicksStableIntermittentPointsAwayFromFo
   const TimeIntegrationCheck chk = compare_with_time_integration(hb, c, Eigen::VectorXd::Constant(1, 1.0), to);
   EXPECT_EQ(chk.points, 6);
   EXPECT_EQ(chk.rows.size(), 6u);
-  // issue #3 criterion: x_max within 0.5 % of GSL time integration.
+  // The chapters' criterion (README "Reference files and tests"): x_max within 0.5 % of GSL time integration.
   EXPECT_LT(chk.worst_rel_diff, 5e-3);
 }
