@@ -7,6 +7,7 @@
 #include <Eigen/Dense>
 
 #include "gearhb/app/output.hpp"
+#include "gearhb/gears/dte_response.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
@@ -34,5 +35,14 @@ Table bifurcation_table(const FrequencyCurve& c);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);
+
+// The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model with the
+// mesh frequency first: f_mesh_hz, omega, x_max, x_min, x_rms_ac, x_h1, stable, contact.
+Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);
+// Contact-loss bands of labelled curves: label, band (1, 2, ...), f_lo_hz, f_hi_hz.
+Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>& reports);
+// HB vs time integration of labelled curves: label, f_mesh_hz, contact, x_rms_ac_hb,
+// x_rms_ac_ti, rel_diff, periods.
+Table dte_time_integration_table(const std::vector<std::pair<std::string, DteTimeCheck>>& checks);
 
 }  // namespace gearhb

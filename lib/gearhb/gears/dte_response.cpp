@@ -1,0 +1,108 @@
+#include "gearhb/gears/dte_response.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/hb/response.hpp"
+#include "gearhb/hb/time_integration.hpp"
+
+namespace gearhb {
+
+namespace {
+const Eigen::VectorXd kX = Eigen::VectorXd::Constant(1, 1.0);
+}
+
+DteGear dte_gear(const std::vector<double>& ste, double torque, double r, double I1, double I2, double zeta,
+                 int ste_harmonics) {
+  DteGear g;
+  g.F0 = torque / r;
+  g.me = equivalent_mass(I1, I2, r, r);
+  g.kc = mean_stiffness(ste, g.F0);
+  g.c = mesh_damping(zeta, g.kc, g.me);
+  g.ste = periodic_fourier(ste, ste_harmonics);
+  return g;
+}
+
+DteCurveReport dte_curve_report(const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) {
+  const ResponseEvaluator ev(hb, kX);
+  const auto& P = c.branch.points;
+  DteCurveReport r;
+  bool in_band = false;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const bool lost = ev.summarize(P[i].X).contact != ContactState::full;
+    if (lost && !in_band) r.loss_bands.push_back({P[i].omega, P[i].omega});
+    if (lost) {
+      auto& b = r.loss_bands.back();
+      b.first = std::min(b.first, P[i].omega);
+      b.second = std::max(b.second, P[i].omega);
+    }
+    in_band = lost;
+    r.mean_force_rel_dev = std::max(r.mean_force_rel_dev, std::fabs(dte_mean_contact_force(g, P[i].X) - g.F0) / g.F0);
+    if (!lost) {
+      const Eigen::VectorXd Xc = dte_closed_contact(g, hb.harmonics(), P[i].omega);
+      r.closed_form_rel_diff = std::max(r.closed_form_rel_diff, (P[i].X - Xc).lpNorm<Eigen::Infinity>() /
+                                                                    Xc.tail(Xc.size() - 1).lpNorm<Eigen::Infinity>());
+      ++r.closed_points;
+    }
+    if (rms_ac(P[i].X) > r.peak_rms) {
+      r.peak_rms = rms_ac(P[i].X);
+      r.peak_omega = P[i].omega;
+    }
+  }
+  r.first_loss_omega = first_transition(hb, c, opens_somewhere(hb));
+  return r;
+}
+
+std::vector<double> dte_linear_rms(const DteGear& g, int H, const std::vector<double>& omegas) {
+  std::vector<double> out;
+  for (double w : omegas) out.push_back(rms_ac(dte_closed_contact(g, H, w)));
+  return out;
+}
+
+DteTimeCheck dte_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c, int points,
+                                        int lost_points) {
+  const ResponseEvaluator ev(hb, kX);
+  const auto& P = c.branch.points;
+  std::vector<std::size_t> lost, full;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    bool near = false;
+    for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - P[i].omega) < 5e-3 * f.omega;
+    if (!c.stable[i] || near) continue;
+    (ev.summarize(P[i].X).contact == ContactState::full ? full : lost).push_back(i);
+  }
+  std::vector<std::size_t> chosen;
+  auto spread = [&](const std::vector<std::size_t>& v, std::size_t n) {
+    for (std::size_t k = 0; k < n && !v.empty(); ++k) chosen.push_back(v[(2 * k + 1) * v.size() / (2 * n)]);
+  };
+  const std::size_t n_lost = std::min<std::size_t>(std::size_t(lost_points), lost.size());
+  spread(lost, n_lost);
+  spread(full, std::size_t(points) - n_lost);
+  const TimeIntegrator ti(hb);
+  TimeIntegrationOptions opt;
+  opt.x_scale = c.scaling.x[0];
+  DteTimeCheck out;
+  for (std::size_t i : chosen) {
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
+    const SteadyState s = ti.steady_state(x0, v0, P[i].omega, opt);
+    if (!s.converged)
+      throw std::runtime_error("time integration not periodic at omega = " + std::to_string(P[i].omega) +
+                               " rad/s after " + std::to_string(s.periods) + " periods");
+    const Eigen::VectorXd x = s.x.col(0);
+    DteTimeComparison row;
+    row.omega = P[i].omega;
+    row.contact = ev.summarize(P[i].X).contact;
+    row.rms_time_integration = std::sqrt((x.array() - x.mean()).square().mean());
+    row.rms_hb = ev.summarize(P[i].X).x_rms_ac;
+    row.rel_diff = std::fabs(row.rms_hb - row.rms_time_integration) / row.rms_time_integration;
+    row.periods = s.periods;
+    out.worst_rel_diff = std::max(out.worst_rel_diff, row.rel_diff);
+    out.rows.push_back(row);
+  }
+  return out;
+}
+
+}  // namespace gearhb
