@@ -62,15 +62,51 @@ std::vector<double> dte_linear_rms(const DteGear& g, int H, const std::vector<do
   return out;
 }
 
+namespace {
+bool near_fold(const FrequencyCurve& c, double omega) {
+  for (const auto& f : c.branch.folds)
+    if (std::fabs(f.omega - omega) < 5e-3 * f.omega) return true;
+  return false;
+}
+}  // namespace
+
+DteTimeComparison dte_time_integration_point(const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i) {
+  const ResponseEvaluator ev(hb, kX);
+  const auto& p = c.branch.points.at(i);
+  TimeIntegrationOptions opt;
+  opt.x_scale = c.scaling.x[0];
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(hb, p.X, p.omega, x0, v0);
+  const SteadyState s = TimeIntegrator(hb).steady_state(x0, v0, p.omega, opt);
+  if (!s.converged)
+    throw std::runtime_error("time integration not periodic at omega = " + std::to_string(p.omega) + " rad/s after " +
+                             std::to_string(s.periods) + " periods");
+  const Eigen::VectorXd x = s.x.col(0);
+  DteTimeComparison row;
+  row.omega = p.omega;
+  row.contact = ev.summarize(p.X).contact;
+  row.rms_time_integration = std::sqrt((x.array() - x.mean()).square().mean());
+  row.rms_hb = ev.summarize(p.X).x_rms_ac;
+  row.rel_diff = std::fabs(row.rms_hb - row.rms_time_integration) / row.rms_time_integration;
+  row.periods = s.periods;
+  return row;
+}
+
+std::size_t dte_near_peak_point(const FrequencyCurve& c) {
+  const auto& P = c.branch.points;
+  std::size_t best = P.size();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (c.stable[i] && !near_fold(c, P[i].omega) && (best == P.size() || rms_ac(P[i].X) > rms_ac(P[best].X))) best = i;
+  return best;
+}
+
 DteTimeCheck dte_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c, int points,
                                         int lost_points) {
   const ResponseEvaluator ev(hb, kX);
   const auto& P = c.branch.points;
   std::vector<std::size_t> lost, full;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    bool near = false;
-    for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - P[i].omega) < 5e-3 * f.omega;
-    if (!c.stable[i] || near) continue;
+    if (!c.stable[i] || near_fold(c, P[i].omega)) continue;
     (ev.summarize(P[i].X).contact == ContactState::full ? full : lost).push_back(i);
   }
   std::vector<std::size_t> chosen;
@@ -80,27 +116,10 @@ DteTimeCheck dte_time_integration_check(const HarmonicBalance& hb, const Frequen
   const std::size_t n_lost = std::min<std::size_t>(std::size_t(lost_points), lost.size());
   spread(lost, n_lost);
   spread(full, std::size_t(points) - n_lost);
-  const TimeIntegrator ti(hb);
-  TimeIntegrationOptions opt;
-  opt.x_scale = c.scaling.x[0];
   DteTimeCheck out;
   for (std::size_t i : chosen) {
-    Eigen::VectorXd x0, v0;
-    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
-    const SteadyState s = ti.steady_state(x0, v0, P[i].omega, opt);
-    if (!s.converged)
-      throw std::runtime_error("time integration not periodic at omega = " + std::to_string(P[i].omega) +
-                               " rad/s after " + std::to_string(s.periods) + " periods");
-    const Eigen::VectorXd x = s.x.col(0);
-    DteTimeComparison row;
-    row.omega = P[i].omega;
-    row.contact = ev.summarize(P[i].X).contact;
-    row.rms_time_integration = std::sqrt((x.array() - x.mean()).square().mean());
-    row.rms_hb = ev.summarize(P[i].X).x_rms_ac;
-    row.rel_diff = std::fabs(row.rms_hb - row.rms_time_integration) / row.rms_time_integration;
-    row.periods = s.periods;
-    out.worst_rel_diff = std::max(out.worst_rel_diff, row.rel_diff);
-    out.rows.push_back(row);
+    out.rows.push_back(dte_time_integration_point(hb, c, i));
+    out.worst_rel_diff = std::max(out.worst_rel_diff, out.rows.back().rel_diff);
   }
   return out;
 }

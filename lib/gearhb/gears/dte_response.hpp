@@ -51,6 +51,13 @@ struct DteTimeCheck {
   std::vector<DteTimeComparison> rows;
   double worst_rel_diff = 0.0;
 };
+// The comparison at point i of the curve. Throws std::runtime_error naming the
+// frequency if the integration does not become periodic.
+DteTimeComparison dte_time_integration_point(const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i);
+// Index of the stable point of largest x_rms_ac at least 0.5 % (in omega) away from
+// every fold: the peak as far as time integration can reach it (a solution at a
+// fold attracts arbitrarily slowly). c.branch.points.size() if there is none.
+std::size_t dte_near_peak_point(const FrequencyCurve& c);
 // Throws std::runtime_error naming the frequency if the integration does not become periodic.
 DteTimeCheck dte_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c, int points = 8,
                                         int lost_points = 5);
