@@ -12,7 +12,7 @@
 // projection of the contact law, one arc-length continuation per curve,
 // Floquet stability of every point (lib/gearhb/hb). The steps, in order (README
 // of this chapter): mesh_stiffness, gear_constants, frequency_responses (per
-// case: linear_reference, measure, time_integration_check, time_history),
+// case: the linear closed-contact curve, measure, the time-integration check, time_history),
 // convergence_summary; own_case for --case own.
 //
 // Sample runs:
@@ -27,6 +27,7 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/app/gear_mesh_parameters.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
@@ -81,7 +82,6 @@ const std::vector<Case> kCases = {
 const double kTorques[] = {100, 200, 300};   // Fig. 67
 const VectorXd kX = VectorXd::Constant(1, 1.0);
 
-bool has(const Case& c, Measure m) { return std::find(c.measures.begin(), c.measures.end(), m) != c.measures.end(); }
 std::string torque_tag(double T) { return "T" + std::to_string(long(std::lround(T))); }
 double hz(double omega) { return omega / (2 * M_PI); }
 
@@ -114,11 +114,8 @@ class GearResponse {
   void mesh_stiffness(Run& run) const;
   void gear_constants(Run& run) const;
   void frequency_responses(Run& run) const;
-  void linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const;
   DteCurveReport measure(Run& run, const std::string& label, const DteGear& g, const HarmonicBalance& hb,
                          const FrequencyCurve& c) const;
-  DteTimeCheck time_integration_check(Run& run, const Case& cs, const HarmonicBalance& hb,
-                                      const FrequencyCurve& c) const;
   void time_history(Run& run, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void own_case(Run& run) const;
   void check(const Selection& sel);
@@ -138,12 +135,7 @@ GearResponse::GearResponse(Study& study) {
   sol_.omega_max = 2 * M_PI * gear_.f_max_hz;
   sol_.ds_max = 0.05;
   add_solver_parameters(P, sol_, 1);
-  std::vector<std::string> labels, quick;
-  for (const auto& c : kCases) {
-    labels.push_back(c.label);
-    if (c.quick) quick.push_back(c.label);
-  }
-  study.cases(labels, quick);
+  register_cases(study, kCases);
   study.check([this, &P](const Selection& sel) {
     ParameterSet::require(sel.kind == Selection::Kind::own || !P.was_set("H"),
                           "parameter 'H' is fixed by the case table (H = 1, 5, 10, 20); set it with --case own");
@@ -247,30 +239,20 @@ void GearResponse::frequency_responses(Run& run) const {
     const FrequencyCurve c = sweep(run, hb, cs.label);
     run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c));
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
-    linear_reference(run, g, cs.H, cs.label);
+    run.write("linear_" + cs.label + ".csv", linear_mesh_table(g, cs.H, sol_.omega_min, sol_.omega_max));
     const DteCurveReport rep = measure(run, cs.label, g, hb, c);
     worst.add(rep);
     reports.push_back({cs.label, rep});
     index.add_row({cs.label, cs.figure, cs.torque, long(cs.H), g.F0, g.me, g.kc, g.c, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.bifurcations.size()), rep.peak_rms * kUm, hz(rep.peak_omega)});
-    if (has(cs, Measure::time_check)) checks.push_back({cs.label, time_integration_check(run, cs, hb, c)});
-    if (has(cs, Measure::time_history)) time_history(run, g, hb, c);
+    if (measures(cs, Measure::time_check)) checks.push_back({cs.label, timed_dte_time_check(run, cs.label, hb, c)});
+    if (measures(cs, Measure::time_history)) time_history(run, g, hb, c);
   }
   run.write("cases.csv", index);
   run.write("loss_bands.csv", loss_band_table(reports));
   if (!checks.empty()) run.write("check_time_integration.csv", dte_time_integration_table(checks));
   if (worst.closed_points > 0) run.key_numbers().add("closed_form_rel_diff", worst.closed_form, "-");
   run.key_numbers().add("mean_force_rel_dev", worst.mean_force, "-");
-}
-
-// The linear closed-contact curve (closed form from the STE harmonics kept).
-void GearResponse::linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const {
-  std::vector<double> omegas;
-  for (int i = 0; i <= 800; ++i) omegas.push_back(sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 800.0);
-  const std::vector<double> rms = dte_linear_rms(g, H, omegas);
-  Table t({"f_mesh_hz", "x_rms_ac"});
-  for (std::size_t i = 0; i < omegas.size(); ++i) t.add_row({hz(omegas[i]), rms[i]});
-  run.write("linear_" + label + ".csv", t);
 }
 
 // Contact-loss bands, the first loss refined on the branch, the peak, the mean
@@ -284,22 +266,6 @@ DteCurveReport GearResponse::measure(Run& run, const std::string& label, const D
   if (std::isfinite(r.first_loss_omega)) key.add("loss_onset_hz_" + label, hz(r.first_loss_omega), "Hz");
   key.add("peak_rms_um_" + label, r.peak_rms * kUm, "um");
   return r;
-}
-
-// Step 4 (the chapter README, "Checks"): x_rms_ac by HB against GSL rk8pd at up to
-// 8 stable points away from folds, contact-loss points first, spread over the branch.
-DteTimeCheck GearResponse::time_integration_check(Run& run, const Case& cs, const HarmonicBalance& hb,
-                                                  const FrequencyCurve& c) const {
-  const DteTimeCheck chk = run.timed("time integration " + cs.label, [&] {
-    try {
-      return dte_time_integration_check(hb, c);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(cs.label + ": " + e.what());
-    }
-  });
-  run.key_numbers().add("ti_points_" + cs.label, double(chk.rows.size()), "-");
-  run.key_numbers().add("ti_rms_rel_diff_" + cs.label, chk.worst_rel_diff, "-");
-  return chk;
 }
 
 // Supplement: x(t), e(t) and the contact force over two mesh periods at the
@@ -344,7 +310,7 @@ void GearResponse::own_case(Run& run) const {
   const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_));
   const FrequencyCurve c = sweep(run, hb, "own");
   run.write("frc.csv", mesh_response_table(hb, c));
-  linear_reference(run, g, sol_.H, "own");
+  run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
   KeyNumbers& key = run.key_numbers();

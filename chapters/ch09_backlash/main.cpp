@@ -11,7 +11,8 @@
 //            spring of the beam model's stiffness: the physical reading)
 // kc = mean of F0 / e is recomputed from the new STE. The steps, in order (README
 // of this chapter): normal_backlash_geometry, limited_ste, frequency_responses
-// (per case: linear_reference, measure, time_integration_check), backlash_effect;
+// (per case: the linear closed-contact curve, measure, the time-integration check),
+// backlash_effect;
 // own_case for --case own.
 //
 // Sample runs:
@@ -129,11 +130,8 @@ class BacklashChapter {
   void limited_ste(Run& run) const;
   void ste_table(Run& run, double torque) const;
   std::vector<CurveResult> frequency_responses(Run& run) const;
-  void linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const;
   DteCurveReport measure(Run& run, const std::string& label, const DteGear& g, const HarmonicBalance& hb,
                          const FrequencyCurve& c) const;
-  DteTimeCheck time_integration_check(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                      const FrequencyCurve& c) const;
   void backlash_effect(Run& run, const std::vector<CurveResult>& curves) const;
   DteTimeCheck peak_change(Run& run, const CurveResult& with, const CurveResult& without) const;
   void own_case(Run& run) const;
@@ -295,28 +293,18 @@ std::vector<CurveResult> BacklashChapter::frequency_responses(Run& run) const {
     const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
     run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c));
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
-    linear_reference(run, g, cs.H, cs.label);
+    run.write("linear_" + cs.label + ".csv", linear_mesh_table(g, cs.H, sol_.omega_min, sol_.omega_max));
     const DteCurveReport rep = measure(run, cs.label, g, hb, c);
     reports.push_back({cs.label, rep});
     out.push_back({&cs, g, c, rep});
     index.add_row({cs.label, cs.figure, cs.torque, long(cs.H), reading_name(cs.reading), g.F0, g.me, g.kc, g.c, long(c.branch.points.size()), long(c.branch.folds.size()),
                    long(c.bifurcations.size()), rep.peak_rms * kUm, hz(rep.peak_omega)});
-    if (measures(cs, Measure::time_check)) checks.push_back({cs.label, time_integration_check(run, cs.label, hb, c)});
+    if (measures(cs, Measure::time_check)) checks.push_back({cs.label, timed_dte_time_check(run, cs.label, hb, c)});
   }
   run.write("cases.csv", index);
   run.write("loss_bands.csv", loss_band_table(reports));
   if (!checks.empty()) run.write("check_time_integration.csv", dte_time_integration_table(checks));
   return out;
-}
-
-// The linear closed-contact curve (closed form from the STE harmonics kept).
-void BacklashChapter::linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const {
-  std::vector<double> omegas;
-  for (int i = 0; i <= 800; ++i) omegas.push_back(sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 800.0);
-  const std::vector<double> rms = dte_linear_rms(g, H, omegas);
-  Table t({"f_mesh_hz", "x_rms_ac"});
-  for (std::size_t i = 0; i < omegas.size(); ++i) t.add_row({hz(omegas[i]), rms[i]});
-  run.write("linear_" + label + ".csv", t);
 }
 
 // Contact-loss bands, first loss, peak, and ch. 8's two checks at every point.
@@ -332,21 +320,6 @@ DteCurveReport BacklashChapter::measure(Run& run, const std::string& label, cons
   key.add("mean_force_rel_dev_" + label, r.mean_force_rel_dev, "-");
   if (r.closed_points > 0) key.add("closed_form_rel_diff_" + label, r.closed_form_rel_diff, "-");
   return r;
-}
-
-// HB against GSL rk8pd at up to 8 stable points (5 with contact loss) of the curve.
-DteTimeCheck BacklashChapter::time_integration_check(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                                     const FrequencyCurve& c) const {
-  const DteTimeCheck chk = run.timed("time integration " + label, [&] {
-    try {
-      return dte_time_integration_check(hb, c);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(label + ": " + e.what());
-    }
-  });
-  run.key_numbers().add("ti_points_" + label, double(chk.rows.size()), "-");
-  run.key_numbers().add("ti_rms_rel_diff_" + label, chk.worst_rel_diff, "-");
-  return chk;
 }
 
 // Step 4 (§9: "the 300 N m peak drops and moves closer to 200 N m"): each curve with
@@ -404,7 +377,7 @@ void BacklashChapter::own_case(Run& run) const {
   const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_));
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", mesh_response_table(hb, c));
-  linear_reference(run, g, sol_.H, "own");
+  run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
   run.key_numbers().add("fn", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");

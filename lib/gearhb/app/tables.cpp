@@ -112,4 +112,13 @@ Table dte_time_integration_table(const std::vector<std::pair<std::string, DteTim
   return t;
 }
 
+Table linear_mesh_table(const DteGear& g, int H, double omega_min, double omega_max, int points) {
+  std::vector<double> omegas;
+  for (int i = 0; i <= points; ++i) omegas.push_back(omega_min + (omega_max - omega_min) * i / double(points));
+  const std::vector<double> rms = dte_linear_rms(g, H, omegas);
+  Table t({"f_mesh_hz", "x_rms_ac"});
+  for (std::size_t i = 0; i < omegas.size(); ++i) t.add_row({hz(omegas[i]), rms[i]});
+  return t;
+}
+
 }  // namespace gearhb

@@ -44,5 +44,8 @@ Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>&
 // HB vs time integration of labelled curves: label, f_mesh_hz, contact, x_rms_ac_hb,
 // x_rms_ac_ti, rel_diff, periods.
 Table dte_time_integration_table(const std::vector<std::pair<std::string, DteTimeCheck>>& checks);
+// The linear closed-contact curve (dte_linear_rms) at `points` + 1 uniform omegas of
+// [omega_min, omega_max]: f_mesh_hz, x_rms_ac.
+Table linear_mesh_table(const DteGear& g, int H, double omega_min, double omega_max, int points = 800);
 
 }  // namespace gearhb
