@@ -62,6 +62,17 @@ CHAPTERS = [
         ("fig70s_param*.png", "supplement", "The 300 N m curve of the thesis' constant-stiffness model and of the "
          "parametric model it approximates (k(t) = F0/e(t)), see the chapter README."),
     ]},
+    {"program": "ch09_backlash", "title": "Chapter 9: backlash limits the STE at high torque", "figures": [
+        ("fig77_*.png", "Fig. 77", "STE over one mesh cycle with backlash (clip and adjacent-pair spring) and without, 100/200/300 N m: "
+         "only 300 N m reaches the local normal backlash, near the ends of the single-pair zone."),
+        ("fig77s_*.png", "supplement", "The local normal backlash b cos(mu) along the single-pair zone against the 300 N m STE."),
+        ("fig78_*.png", "Fig. 78", "Fourier coefficients of the STE with and without backlash: only 300 N m changes, by a few per cent."),
+        ("fig79_*.png", "Fig. 79", "Our STE coefficients with backlash; Parker, Vijayakar & Imajo's bars are not available and not drawn."),
+        ("fig80_*.png", "Fig. 80", "DTE response with backlash, one harmonic, three torques and the linear closed-contact curve."),
+        ("fig81_*.png", "Fig. 81", "The same with five harmonics."),
+        ("fig82_*.png", "Fig. 82", "300 N m with and without backlash (both readings), H = 1 and 5, with a zoom on the peak: "
+         "the peak drops by 1.3 % and moves up in frequency."),
+    ]},
 ]
 
 NOT_COMPUTABLE = [
