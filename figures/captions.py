@@ -3,6 +3,18 @@
 what it shows and what to notice. Plus the thesis figures that cannot be computed."""
 
 CHAPTERS = [
+    {"program": "ch02_methods", "title": "Chapter 2: the method, speed against accuracy, and where each method fails", "figures": [
+        ("figM1_*.png", "supplement", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
+         "rkf45 sweeps); hollow circles: a stable solution missed."),
+        ("figM2_*.png", "supplement", "CPU time of one Newton step against n(2H+1), with the (n(2H+1))^3 model of the LU."),
+        ("figM3_*.png", "supplement", "Natural continuation stops at the first fold; arc length goes round it."),
+        ("figM4_*.png", "supplement", "Time-integration sweeps up and down jump at the folds and never see the unstable branch."),
+        ("figM5_*.png", "supplement", "Sampled AFT: spurious folds and stalled branches at contact; the exact projection has none."),
+        ("figM6_*.png", "supplement", "Too few harmonics: the gear's superharmonic resonances disappear."),
+        ("figM7_*.png", "supplement", "Hill truncated at H against Floquet on the Mathieu and Meissner stability charts."),
+        ("figM8_*.png", "supplement", "Arc length without scaling on the micrometre gear problem: stuck near the start."),
+        ("figM9_*.png", "supplement", "Grazing: each method's error as the contact interval shrinks to zero."),
+    ]},
     {"program": "ch03_mass_wall", "title": "Chapter 3: a mass against a wall", "figures": [
         ("fig07_*.png", "Fig. 7", "Linear frequency response with the contact open (spring k) and closed (k + kc): "
          "the two resonances, 1 and sqrt(2) rad/s, between which the contact curves live."),
@@ -64,17 +76,16 @@ CHAPTERS = [
         ("fig70s_param*.png", "supplement", "The 300 N m curve of the thesis' constant-stiffness model and of the "
          "parametric model it approximates (k(t) = F0/e(t)), see the chapter README."),
     ]},
-    {"program": "ch02_methods", "title": "Chapter 2: the method, speed against accuracy, and where each method fails", "figures": [
-        ("figM1_*.png", "supplement", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
-         "rkf45 sweeps); hollow circles: a stable solution missed."),
-        ("figM2_*.png", "supplement", "CPU time of one Newton step against n(2H+1), with the (n(2H+1))^3 model of the LU."),
-        ("figM3_*.png", "supplement", "Natural continuation stops at the first fold; arc length goes round it."),
-        ("figM4_*.png", "supplement", "Time-integration sweeps up and down jump at the folds and never see the unstable branch."),
-        ("figM5_*.png", "supplement", "Sampled AFT: spurious folds and stalled branches at contact; the exact projection has none."),
-        ("figM6_*.png", "supplement", "Too few harmonics: the gear's superharmonic resonances disappear."),
-        ("figM7_*.png", "supplement", "Hill truncated at H against Floquet on the Mathieu and Meissner stability charts."),
-        ("figM8_*.png", "supplement", "Arc length without scaling on the micrometre gear problem: stuck near the start."),
-        ("figM9_*.png", "supplement", "Grazing: each method's error as the contact interval shrinks to zero."),
+    {"program": "ch09_backlash", "title": "Chapter 9: backlash limits the STE at high torque", "figures": [
+        ("fig77_*.png", "Fig. 77", "STE over one mesh cycle with backlash (clip and adjacent-pair spring) and without, 100/200/300 N m: "
+         "only 300 N m reaches the local normal backlash, near the ends of the single-pair zone."),
+        ("fig77s_*.png", "supplement", "The local normal backlash b cos(mu) along the single-pair zone against the 300 N m STE."),
+        ("fig78_*.png", "Fig. 78", "Fourier coefficients of the STE with and without backlash: only 300 N m changes, by a few per cent."),
+        ("fig79_*.png", "Fig. 79", "Our STE coefficients with backlash; Parker, Vijayakar & Imajo's bars are not available and not drawn."),
+        ("fig80_*.png", "Fig. 80", "DTE response with backlash, one harmonic, three torques and the linear closed-contact curve."),
+        ("fig81_*.png", "Fig. 81", "The same with five harmonics."),
+        ("fig82_*.png", "Fig. 82", "300 N m with and without backlash (both readings), H = 1 and 5, with a zoom on the peak: "
+         "the peak drops by 1.3 % and moves up in frequency."),
     ]},
 ]
 

@@ -60,7 +60,9 @@ def fig67(data_dir, fig_dir, kn):
     return save(fig, fig_dir / "fig67_mesh_stiffness.png")
 
 
-def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases):
+def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases, what="DTE response"):
+    """RMS of x vs mesh frequency for the curves `labels` (torque colours), their
+    contact-loss bands as bars, the linear closed-contact curve of the last one."""
     bands = loss_bands(data_dir)
     fig, ax = plt.subplots(figsize=(8, 5))
     ymax = 0.0
@@ -86,8 +88,8 @@ def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases):
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
     ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
     ax.set_ylim(0, ymax * 1.15)
-    ax.set_title("Fig. %s: DTE response, H = %d (STE truncated to %d harmonic%s), me = %.3f kg, zeta = %g"
-                 % (fig_no, H, H, "" if H == 1 else "s", cases[labels[0]]["me"], params["zeta"]))
+    ax.set_title("Fig. %s: %s, H = %d (STE truncated to %d harmonic%s), me = %.3f kg, zeta = %g"
+                 % (fig_no, what, H, H, "" if H == 1 else "s", cases[labels[0]]["me"], params["zeta"]))
     h, _ = ax.get_legend_handles_labels()
     ax.legend(handles=h + style_legend(extra), loc="upper right", bbox_to_anchor=(1.0, 0.86), fontsize=7.5)
     return save(fig, fig_dir / name)

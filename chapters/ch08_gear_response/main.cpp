@@ -17,7 +17,7 @@
 // projection of the contact law, one arc-length continuation per curve,
 // Floquet stability of every point (lib/gearhb/hb). The steps, in order (README
 // of this chapter): mesh_stiffness, gear_constants, frequency_responses (per
-// case: linear_reference, measure, time_integration_check, time_history,
+// case: the linear closed-contact curve, measure, the time-integration check, time_history,
 // peak_check, floquet_check); own_case for --case own.
 //
 // Sample runs:
@@ -29,20 +29,22 @@
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
-#include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
+#include "gearhb/app/gear_mesh_parameters.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/dte_response.hpp"
 #include "gearhb/gears/ste.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/gears/ste_file.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
-#include "gearhb/hb/time_integration.hpp"
 
 using namespace gearhb;
 using Eigen::VectorXd;
@@ -52,21 +54,8 @@ namespace {
 constexpr double kUm = 1e6;   // m -> um
 
 // --- parameters: one struct per concern, thesis defaults (§8.1) ------------
-struct GearPair {
-  double I1 = 0.0158, I2 = 0.0158;   // wheel inertias [kg m^2]
-  double zeta = 0.08;                // damping ratio of the mesh
-};
-struct SteSettings {
-  int samples = 64;   // phases per mesh cycle of the continuous STE
-  int reading = 0;    // 0 load moving continuously, 1 ch. 7's 8 positions per base pitch
-};
-struct FrequencyRange {
-  double f_min_hz = 300.0, f_max_hz = 5000.0;   // mesh frequency [Hz]
-};
-struct MeshModel {
-  std::string name = "constant";   // constant (thesis §8.1) | parametric (k(t) = F0 / e(t))
-  DteModel model() const { return name == "parametric" ? DteModel::parametric : DteModel::constant; }
-};
+// (the gear pair, the STE, the mesh model (constant | parametric) and the frequency
+// range: GearMeshParameters, app/gear_mesh_parameters.hpp, shared with chapter 9)
 struct OwnCase {
   double torque = 300.0;         // [N m]
   double pitch_radius = 0.075;   // r1 = r2 [m]
@@ -107,7 +96,6 @@ constexpr int kFullSte = 20;   // STE harmonics of the "full" model (peak check)
 const double kTorques[] = {100, 200, 300};   // Fig. 67
 const VectorXd kX = VectorXd::Constant(1, 1.0);
 
-bool has(const Case& c, Measure m) { return std::find(c.measures.begin(), c.measures.end(), m) != c.measures.end(); }
 std::string torque_tag(double T) { return "T" + std::to_string(long(std::lround(T))); }
 double hz(double omega) { return omega / (2 * M_PI); }
 
@@ -115,6 +103,11 @@ double hz(double omega) { return omega / (2 * M_PI); }
 struct Worst {
   double mean_force = 0.0, closed_form = 0.0;
   long closed_points = 0;
+  void add(const DteCurveReport& r) {
+    mean_force = std::max(mean_force, r.mean_force_rel_dev);
+    closed_form = std::max(closed_form, r.closed_form_rel_diff);
+    closed_points += r.closed_points;
+  }
 };
 
 class GearResponse {
@@ -123,50 +116,29 @@ class GearResponse {
   void run(Run& run);
 
  private:
-  GearPair gear_;
-  SteSettings ste_;
-  FrequencyRange range_;
-  MeshModel model_;
+  GearMeshParameters gear_;
   OwnCase own_;
   SolverSettings sol_;
   SteModel thesis_gear_;   // ch. 7's STE model, thesis defaults
 
   std::vector<double> ste_samples(double torque) const;
   DteGear mesh(double torque) const;
-  SweepOptions sweep_settings() const;
-  FrequencyCurve sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const;
   void mesh_stiffness(Run& run) const;
   void gear_constants(Run& run) const;
   void frequency_responses(Run& run) const;
-  Table response_table(const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const;
-  void measure(Run& run, const std::string& label, const DteGear& g, DteModel model, const HarmonicBalance& hb,
-               const FrequencyCurve& c, Worst& worst, Table& bands) const;
-  void time_integration_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
-                              Table& rows) const;
+  DteCurveReport measure(Run& run, const std::string& label, const DteGear& g, DteModel model,
+                         const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void time_history(Run& run, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void peak_check(Run& run, const Case& cs, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void floquet_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  DteModel model_of(const Case& cs) const { return cs.parametric ? DteModel::parametric : model_.model(); }
+  DteModel model_of(const Case& cs) const { return cs.parametric ? DteModel::parametric : mesh_model(gear_); }
   void own_case(Run& run) const;
   void check(const Selection& sel);
 };
 
 GearResponse::GearResponse(Study& study) {
   ParameterSet& P = study.parameters();
-  P.group("gear pair (thesis §8.1)");
-  P.add("I1", &gear_.I1, "kg m^2", "inertia of wheel 1", Range::positive());
-  P.add("I2", &gear_.I2, "kg m^2", "inertia of wheel 2", Range::positive());
-  P.add("zeta", &gear_.zeta, "-", "damping ratio, c = 2 zeta sqrt(kc me)", Range::between(1e-4, 1.0));
-  P.group("static transmission error (thesis ch. 7 model)");
-  P.add("ste_samples", &ste_.samples, "-", "phases per mesh cycle of the continuous STE", Range::between(16, 4096));
-  P.add("ste_reading", &ste_.reading, "-", "0 load moving continuously, 1 ch. 7's 8 positions per base pitch",
-        Range::between(0, 1));
-  P.group("mesh model");
-  P.add("model", &model_.name, "-", "constant (thesis §8.1: kc, STE as excitation) or parametric (k(t) = F0/e(t))");
-  P.group("mesh frequency range");
-  P.add("f_min_hz", &range_.f_min_hz, "Hz", "start of the sweep", Range::between(1.0, 1e6));
-  P.add("f_max_hz", &range_.f_max_hz, "Hz", "end of the sweep", Range::between(1.0, 1e6));
+  add_gear_mesh_parameters(P, gear_);
   P.group("own case (--case own)", true);
   P.add("torque", &own_.torque, "N m", "transmitted torque T", Range::between(1e-3, 1e5));
   P.add("pitch_radius", &own_.pitch_radius, "m", "pitch radius r of both wheels", Range::between(1e-3, 10.0));
@@ -174,37 +146,25 @@ GearResponse::GearResponse(Study& study) {
   P.add("kc", &own_.kc, "N/m", "mesh stiffness (0 = mean of F0/e(t))", Range::between(0.0, 1e13));
   P.add("ste_file", &own_.ste_file, "path", "STE as CSV 'phase,ste_um' (empty = ch. 7's STE)");
   sol_.H = 5;
-  sol_.omega_min = 2 * M_PI * range_.f_min_hz;
-  sol_.omega_max = 2 * M_PI * range_.f_max_hz;
+  sol_.omega_min = 2 * M_PI * gear_.f_min_hz;
+  sol_.omega_max = 2 * M_PI * gear_.f_max_hz;
   sol_.ds_max = 0.05;
   add_solver_parameters(P, sol_, 1);
-  std::vector<std::string> labels, quick;
-  for (const auto& c : kCases) {
-    labels.push_back(c.label);
-    if (c.quick) quick.push_back(c.label);
-  }
-  study.cases(labels, quick);
+  register_cases(study, kCases);
   study.check([this, &P](const Selection& sel) {
-    ParameterSet::require(!P.was_set("omega_min") && !P.was_set("omega_max"),
-                          "set the mesh-frequency range with f_min_hz / f_max_hz [Hz], not omega_min / omega_max");
     ParameterSet::require(sel.kind == Selection::Kind::own || !P.was_set("H"),
                           "parameter 'H' is fixed by the case table (H = 1, 5, 10, 20); set it with --case own");
+    apply_gear_mesh_parameters(P, gear_, sol_);
     check(sel);
   });
 }
 
 void GearResponse::check(const Selection& sel) {
-  sol_.omega_min = 2 * M_PI * range_.f_min_hz;
-  sol_.omega_max = 2 * M_PI * range_.f_max_hz;
-  ParameterSet::require(range_.f_min_hz < range_.f_max_hz, "parameter 'f_min_hz' must be < f_max_hz");
-  ParameterSet::require(model_.name == "constant" || model_.name == "parametric",
-                        "parameter 'model' must be 'constant' or 'parametric'");
-  check_solver_settings(sol_);
   if (sel.kind != Selection::Kind::own) return;
-  ParameterSet::require(own_.ste_file.empty() || ste_.reading == 0,
+  ParameterSet::require(own_.ste_file.empty() || gear_.ste_reading == 0,
                         "ste_reading applies to ch. 7's STE, not to an ste_file");
   if (!own_.ste_file.empty()) {
-    const bool parametric = model_.model() == DteModel::parametric;
+    const bool parametric = mesh_model(gear_) == DteModel::parametric;
     try {
       const std::vector<double> e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0 || parametric).ste;
       // the parametric stiffness F0 / e needs the STE cut to H harmonics positive
@@ -228,35 +188,13 @@ void GearResponse::run(Run& run) {
 
 // The STE of ch. 7's gear at torque T (continuous, or the 8-position reading) [m].
 std::vector<double> GearResponse::ste_samples(double torque) const {
-  if (ste_.reading == 1) return ste_values(ste_over_mesh_cycle(thesis_gear_, torque));
-  return ste_values(ste_continuous(thesis_gear_, torque, ste_.samples));
+  if (gear_.ste_reading == 1) return ste_values(ste_over_mesh_cycle(thesis_gear_, torque));
+  return ste_values(ste_continuous(thesis_gear_, torque, gear_.ste_samples));
 }
 
 // The 1-DOF model of the thesis' gear pair at torque T (§8.1), STE harmonics up to 20.
 DteGear GearResponse::mesh(double torque) const {
-  const std::vector<double> e = ste_samples(torque);
-  const double r = thesis_gear_.gear.pitch_radius();
-  DteGear g;
-  g.F0 = torque / r;
-  g.me = equivalent_mass(gear_.I1, gear_.I2, r, r);
-  g.kc = mean_stiffness(e, g.F0);
-  g.c = mesh_damping(gear_.zeta, g.kc, g.me);
-  g.ste = periodic_fourier(e, 20);
-  return g;
-}
-
-SweepOptions GearResponse::sweep_settings() const {
-  SweepOptions o = sweep_options(sol_);
-  o.stability = StabilityMethod::floquet;
-  return o;
-}
-
-FrequencyCurve GearResponse::sweep(Run& run, const HarmonicBalance& hb, const std::string& label) const {
-  FrequencyCurve c = run.timed("sweep " + label, [&] {
-    return require_complete(sweep_frequency(hb, sweep_settings(), label), label);
-  });
-  run.say(label + ": " + c.branch.summary());
-  return c;
+  return dte_gear(ste_samples(torque), torque, thesis_gear_.gear.pitch_radius(), gear_.I1, gear_.I2, gear_.zeta);
 }
 
 // Step 1 (Fig. 67): the STE and k(t) = F0 / e(t) over one mesh cycle, both readings.
@@ -264,7 +202,7 @@ void GearResponse::mesh_stiffness(Run& run) const {
   Table spectrum({"torque", "k", "amplitude_um", "amplitude_p8_um"});
   for (double T : kTorques) {
     const double F = T / thesis_gear_.gear.pitch_radius();
-    const std::vector<double> ec = ste_values(ste_continuous(thesis_gear_, T, ste_.samples));
+    const std::vector<double> ec = ste_values(ste_continuous(thesis_gear_, T, gear_.ste_samples));
     const std::vector<double> e8 = ste_values(ste_over_mesh_cycle(thesis_gear_, T));
     for (const auto& [name, e] : {std::pair<std::string, const std::vector<double>&>{"", ec}, {"_p8", e8}}) {
       Table t({"phase", "ste_um", "k"});
@@ -297,143 +235,48 @@ void GearResponse::gear_constants(Run& run) const {
 void GearResponse::frequency_responses(Run& run) const {
   Table index({"label", "figure", "model", "torque", "H", "F0", "me", "kc", "c", "points", "folds", "bifurcations",
                "peak_rms_um", "peak_f_hz"});
-  Table bands({"label", "band", "f_lo_hz", "f_hi_hz"});
-  Table ti({"label", "f_mesh_hz", "contact", "x_rms_ac_hb", "x_rms_ac_ti", "rel_diff", "periods"});
+  std::vector<std::pair<std::string, DteCurveReport>> reports;
+  std::vector<std::pair<std::string, DteTimeCheck>> checks;
   Worst worst;
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const DteGear g = mesh(cs.torque);
     const DteModel model = model_of(cs);
     const HarmonicBalance hb = dte_harmonic_balance(g, cs.H, sol_.N, contact_quadrature(sol_), model);
-    const FrequencyCurve c = sweep(run, hb, cs.label);
-    const Table frc = response_table(g, hb, c);
-    run.write("frc_" + cs.label + ".csv", frc);
+    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
+    run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c));
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
-    linear_reference(run, g, cs.H, cs.label);
-    measure(run, cs.label, g, model, hb, c, worst, bands);
-    std::size_t peak = 0;
-    for (std::size_t i = 0; i < c.branch.points.size(); ++i)
-      if (rms_ac(c.branch.points[i].X) > rms_ac(c.branch.points[peak].X)) peak = i;
-    index.add_row({cs.label, cs.figure, std::string(model == DteModel::parametric ? "parametric" : "constant"), cs.torque, long(cs.H), g.F0, g.me, g.kc, g.c, long(c.branch.points.size()),
-                   long(c.branch.folds.size()), long(c.bifurcations.size()), rms_ac(c.branch.points[peak].X) * kUm,
-                   hz(c.branch.points[peak].omega)});
-    if (has(cs, Measure::time_check)) time_integration_check(run, cs, hb, c, ti);
-    if (has(cs, Measure::time_history)) time_history(run, g, hb, c);
-    if (has(cs, Measure::peak)) peak_check(run, cs, g, hb, c);
-    if (has(cs, Measure::floquet)) floquet_check(run, cs, hb, c);
+    run.write("linear_" + cs.label + ".csv", linear_mesh_table(g, cs.H, sol_.omega_min, sol_.omega_max));
+    const DteCurveReport rep = measure(run, cs.label, g, model, hb, c);
+    worst.add(rep);
+    reports.push_back({cs.label, rep});
+    index.add_row({cs.label, cs.figure, std::string(to_string(model)), cs.torque, long(cs.H), g.F0, g.me, g.kc, g.c,
+                   long(c.branch.points.size()), long(c.branch.folds.size()), long(c.bifurcations.size()),
+                   rep.peak_rms * kUm, hz(rep.peak_omega)});
+    if (measures(cs, Measure::time_check)) checks.push_back({cs.label, timed_dte_time_check(run, cs.label, hb, c)});
+    if (measures(cs, Measure::time_history)) time_history(run, g, hb, c);
+    if (measures(cs, Measure::peak)) peak_check(run, cs, g, hb, c);
+    if (measures(cs, Measure::floquet)) floquet_check(run, cs, hb, c);
   }
   run.write("cases.csv", index);
-  run.write("loss_bands.csv", bands);
-  if (ti.rows() > 0) run.write("check_time_integration.csv", ti);
+  run.write("loss_bands.csv", loss_band_table(reports));
+  if (!checks.empty()) run.write("check_time_integration.csv", dte_time_integration_table(checks));
   if (worst.closed_points > 0) run.key_numbers().add("closed_form_rel_diff", worst.closed_form, "-");
   run.key_numbers().add("mean_force_rel_dev", worst.mean_force, "-");
 }
 
-// One row per continuation point: f_mesh_hz, omega, x_max, x_min, x_rms_ac, x_h1, stable, contact [m].
-Table GearResponse::response_table(const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const {
-  (void)g;
-  const ResponseEvaluator ev(hb, kX);
-  Table t({"f_mesh_hz", "omega", "x_max", "x_min", "x_rms_ac", "x_h1", "stable", "contact"});
-  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    const auto& p = c.branch.points[i];
-    const ResponseSummary r = ev.summarize(p.X);
-    t.add_row({hz(p.omega), p.omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, long(c.stable[i] ? 1 : 0),
-               std::string(to_string(r.contact))});
-  }
-  return t;
-}
-
-// The linear closed-contact curve (closed form from the STE harmonics kept).
-void GearResponse::linear_reference(Run& run, const DteGear& g, int H, const std::string& label) const {
-  Table t({"f_mesh_hz", "x_rms_ac"});
-  for (int i = 0; i <= 800; ++i) {
-    const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 800.0;
-    t.add_row({hz(w), rms_ac(dte_closed_contact(g, H, w))});
-  }
-  run.write("linear_" + label + ".csv", t);
-}
-
-// Contact-loss bands (runs of points not in full contact), the first loss
-// frequency refined on the branch, the mean contact force and (constant model)
-// the closed form at every full-contact point.
-void GearResponse::measure(Run& run, const std::string& label, const DteGear& g, DteModel model,
-                           const HarmonicBalance& hb, const FrequencyCurve& c, Worst& worst, Table& bands) const {
-  const ResponseEvaluator ev(hb, kX);
-  const auto& P = c.branch.points;
-  long band = 0;
-  double lo = 0.0, hi = 0.0;
-  bool in_band = false;
-  for (std::size_t i = 0; i <= P.size(); ++i) {
-    const bool lost = i < P.size() && ev.summarize(P[i].X).contact != ContactState::full;
-    if (lost) {
-      const double f = hz(P[i].omega);
-      lo = in_band ? std::min(lo, f) : f;
-      hi = in_band ? std::max(hi, f) : f;
-    } else if (in_band) {
-      bands.add_row({label, ++band, lo, hi});
-    }
-    in_band = lost;
-    if (i == P.size()) break;
-    const double F = dte_mean_contact_force(g, P[i].X, model);
-    worst.mean_force = std::max(worst.mean_force, std::fabs(F - g.F0) / g.F0);
-    if (!lost && model == DteModel::constant) {
-      const VectorXd Xc = dte_closed_contact(g, hb.harmonics(), P[i].omega);
-      worst.closed_form = std::max(worst.closed_form, (P[i].X - Xc).lpNorm<Eigen::Infinity>() /
-                                                          Xc.tail(Xc.size() - 1).lpNorm<Eigen::Infinity>());
-      ++worst.closed_points;
-    }
-  }
+// Contact-loss bands, the first loss refined on the branch, the peak, the mean
+// contact force (either model) and, constant model, the closed form at every
+// full-contact point (dte_response.hpp).
+DteCurveReport GearResponse::measure(Run& run, const std::string& label, const DteGear& g, DteModel model,
+                                     const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const DteCurveReport r = dte_curve_report(g, hb, c, model);
   KeyNumbers& key = run.key_numbers();
-  key.add("loss_bands_" + label, double(band), "-");
-  key.add("contact_loss_" + label, band > 0 ? 1.0 : 0.0, "-");
-  const double f_loss = first_transition(hb, c, opens_somewhere(hb));
-  if (std::isfinite(f_loss)) key.add("loss_onset_hz_" + label, hz(f_loss), "Hz");
-  double peak = 0.0;
-  for (const auto& p : P) peak = std::max(peak, rms_ac(p.X));
-  key.add("peak_rms_um_" + label, peak * kUm, "um");
-}
-
-// Step 4 (§5 of the chapter README): x_rms_ac by HB against GSL rk8pd at up to 8
-// stable points away from folds, contact-loss points first, spread over the branch.
-void GearResponse::time_integration_check(Run& run, const Case& cs, const HarmonicBalance& hb,
-                                          const FrequencyCurve& c, Table& rows) const {
-  const ResponseEvaluator ev(hb, kX);
-  const auto& P = c.branch.points;
-  std::vector<std::size_t> lost, full;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    bool near = false;
-    for (const auto& f : c.branch.folds) near = near || std::fabs(f.omega - P[i].omega) < 5e-3 * f.omega;
-    if (!c.stable[i] || near) continue;
-    (ev.summarize(P[i].X).contact == ContactState::full ? full : lost).push_back(i);
-  }
-  std::vector<std::size_t> chosen;
-  auto spread = [&](const std::vector<std::size_t>& v, std::size_t n) {
-    for (std::size_t k = 0; k < n && !v.empty(); ++k) chosen.push_back(v[(2 * k + 1) * v.size() / (2 * n)]);
-  };
-  spread(lost, std::min<std::size_t>(5, lost.size()));
-  spread(full, 8 - std::min<std::size_t>(5, lost.size()));
-  const TimeIntegrator ti(hb);
-  TimeIntegrationOptions opt;
-  opt.x_scale = c.scaling.x[0];
-  double worst = 0.0;
-  run.timed("time integration " + cs.label, [&] {
-    for (std::size_t i : chosen) {
-      VectorXd x0, v0;
-      hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
-      const SteadyState s = ti.steady_state(x0, v0, P[i].omega, opt);
-      if (!s.converged)
-        throw std::runtime_error(cs.label + ": time integration not periodic at f_mesh = " + std::to_string(hz(P[i].omega)) + " Hz");
-      const VectorXd x = s.x.col(0);
-      const double rms_ti = std::sqrt((x.array() - x.mean()).square().mean());
-      const double rms_hb = ev.summarize(P[i].X).x_rms_ac, d = std::fabs(rms_hb - rms_ti) / rms_ti;
-      worst = std::max(worst, d);
-      rows.add_row({cs.label, hz(P[i].omega), std::string(to_string(ev.summarize(P[i].X).contact)), rms_hb, rms_ti, d,
-                    long(s.periods)});
-    }
-    return 0;
-  });
-  run.key_numbers().add("ti_points_" + cs.label, double(chosen.size()), "-");
-  run.key_numbers().add("ti_rms_rel_diff_" + cs.label, worst, "-");
+  key.add("loss_bands_" + label, double(r.loss_bands.size()), "-");
+  key.add("contact_loss_" + label, r.loss_bands.empty() ? 0.0 : 1.0, "-");
+  if (std::isfinite(r.first_loss_omega)) key.add("loss_onset_hz_" + label, hz(r.first_loss_omega), "Hz");
+  key.add("peak_rms_um_" + label, r.peak_rms * kUm, "um");
+  return r;
 }
 
 // Supplement: x(t), e(t) and the contact force over two mesh periods at the
@@ -469,31 +312,22 @@ void GearResponse::time_history(Run& run, const DteGear& g, const HarmonicBalanc
 // response harmonics together).
 void GearResponse::peak_check(Run& run, const Case& cs, const DteGear& g, const HarmonicBalance& hb,
                               const FrequencyCurve& c) const {
-  const auto& P = c.branch.points;
-  const double w_fold = c.branch.folds.empty() ? INFINITY : c.branch.folds.front().omega;
-  std::size_t pick = P.size();
-  for (std::size_t i = 0; i < P.size(); ++i)
-    if (c.stable[i] && P[i].omega < (1.0 - 3e-3) * w_fold && (pick == P.size() || rms_ac(P[i].X) > rms_ac(P[pick].X)))
-      pick = i;
-  if (pick == P.size()) throw std::runtime_error(cs.label + ": no stable point below the first fold for the peak check");
+  const std::size_t pick = dte_peak_below_fold_point(c);
+  if (pick == c.branch.points.size())
+    throw std::runtime_error(cs.label + ": no stable point below the first fold for the peak check");
   const HarmonicBalance full = dte_harmonic_balance(g, kFullSte, 0, ContactQuadrature::exact, model_of(cs));
-  VectorXd x0, v0;
-  hb_initial_state(hb, P[pick].X, P[pick].omega, x0, v0);
-  TimeIntegrationOptions opt;
-  opt.x_scale = c.scaling.x[0];
-  const SteadyState s = run.timed("peak check " + cs.label, [&] {
-    return TimeIntegrator(full).steady_state(x0, v0, P[pick].omega, opt);
+  const DteTimeComparison r = run.timed("peak check " + cs.label, [&] {
+    try {
+      return dte_time_integration_point(hb, c, pick, full);
+    } catch (const std::runtime_error& e) {
+      throw std::runtime_error(cs.label + ": peak check: " + e.what());
+    }
   });
-  if (!s.converged)
-    throw std::runtime_error(cs.label + ": peak check: time integration not periodic at f_mesh = " +
-                             std::to_string(hz(P[pick].omega)) + " Hz");
-  const VectorXd x = s.x.col(0);
-  const double rms_ti = std::sqrt((x.array() - x.mean()).square().mean()), rms_hb = rms_ac(P[pick].X);
   KeyNumbers& key = run.key_numbers();
-  key.add("peak_check_f_hz_" + cs.label, hz(P[pick].omega), "Hz");
-  key.add("peak_check_rms_hb_um_" + cs.label, rms_hb * kUm, "um");
-  key.add("peak_check_rms_ti_um_" + cs.label, rms_ti * kUm, "um");
-  key.add("peak_check_rel_diff_" + cs.label, std::fabs(rms_hb - rms_ti) / rms_ti, "-");
+  key.add("peak_check_f_hz_" + cs.label, hz(r.omega), "Hz");
+  key.add("peak_check_rms_hb_um_" + cs.label, r.rms_hb * kUm, "um");
+  key.add("peak_check_rms_ti_um_" + cs.label, r.rms_time_integration * kUm, "um");
+  key.add("peak_check_rel_diff_" + cs.label, r.rel_diff, "-");
 }
 
 // Floquet multipliers of the parametric model (variational equation about the HB
@@ -502,47 +336,11 @@ void GearResponse::peak_check(Run& run, const Case& cs, const DteGear& g, const 
 // full-contact point of largest RMS, the stable contact-loss point of largest RMS
 // and the unstable point of largest |mu| (where present), all 1 % away from folds.
 void GearResponse::floquet_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const {
-  const ResponseEvaluator ev(hb, kX);
-  const auto& P = c.branch.points;
-  // the point of largest value(i) among those with ok(i)
-  auto pick = [&](const std::function<bool(std::size_t)>& ok, const std::function<double(std::size_t)>& value) {
-    std::size_t best = P.size();
-    for (std::size_t i = 0; i < P.size(); ++i)
-      if (ok(i) && (best == P.size() || value(i) > value(best))) best = i;
-    return best;
-  };
-  auto closed = [&](std::size_t i) { return ev.summarize(P[i].X).contact == ContactState::full; };
-  auto rms = [&](std::size_t i) { return rms_ac(P[i].X); };
-  auto away = [&](std::size_t i) {   // 1 % from every fold (a multiplier near +1 there is slow to resolve)
-    for (const auto& f : c.branch.folds)
-      if (std::fabs(f.omega - P[i].omega) < 1e-2 * f.omega) return false;
-    return true;
-  };
-  const std::size_t full = pick([&](std::size_t i) { return c.stable[i] && closed(i) && away(i); }, rms);
-  const std::size_t lost = pick([&](std::size_t i) { return c.stable[i] && !closed(i) && away(i); }, rms);
-  const std::size_t unstable = pick([&](std::size_t i) { return !c.stable[i] && away(i); },
-                                    [&](std::size_t i) { return c.floquet[i].modulus; });
-  Table t({"label", "f_mesh_hz", "contact", "stable", "modulus_variational", "modulus_time_integration", "abs_diff"});
-  const TimeIntegrator ti(hb);
-  TimeIntegrationOptions opt;
-  opt.x_scale = c.scaling.x[0];
-  double worst = 0.0;
-  for (std::size_t i : {full, lost, unstable}) {
-    if (i == P.size()) continue;
-    VectorXd x0, v0;
-    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
-    const Eigen::VectorXcd mu = Eigen::EigenSolver<Eigen::MatrixXd>(ti.monodromy(x0, v0, P[i].omega, opt), false).eigenvalues();
-    const double m_ti = mu.cwiseAbs().maxCoeff(), d = std::fabs(m_ti - c.floquet[i].modulus);
-    worst = std::max(worst, d);
-    t.add_row({cs.label, hz(P[i].omega), std::string(to_string(ev.summarize(P[i].X).contact)), long(c.stable[i] ? 1 : 0),
-               c.floquet[i].modulus, m_ti, d});
-  }
-  run.write("check_floquet_" + cs.label + ".csv", t);
-  run.key_numbers().add("floquet_check_points_" + cs.label, double(t.rows()), "-");
-  run.key_numbers().add("floquet_check_abs_diff_" + cs.label, worst, "-");
-  long n_unstable = 0;
-  for (bool st : c.stable) n_unstable += st ? 0 : 1;
-  run.key_numbers().add("unstable_points_" + cs.label, double(n_unstable), "-");
+  const DteFloquetCheck chk = run.timed("floquet check " + cs.label, [&] { return dte_floquet_check(hb, c); });
+  run.write("check_floquet_" + cs.label + ".csv", dte_floquet_table(cs.label, chk));
+  run.key_numbers().add("floquet_check_points_" + cs.label, double(chk.rows.size()), "-");
+  run.key_numbers().add("floquet_check_abs_diff_" + cs.label, chk.worst_abs_diff, "-");
+  run.key_numbers().add("unstable_points_" + cs.label, double(chk.unstable_points), "-");
 }
 
 // --case own: one curve with the user's gear.
@@ -552,7 +350,7 @@ void GearResponse::own_case(Run& run) const {
   if (own_.ste_file.empty()) {
     e = ste_samples(F0 * thesis_gear_.gear.pitch_radius());   // ch. 7's gear at the same tooth force
   } else {
-    e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0 || model_.model() == DteModel::parametric).ste;
+    e = read_ste_file(own_.ste_file, 2 * sol_.H + 1, own_.kc == 0.0 || mesh_model(gear_) == DteModel::parametric).ste;
   }
   DteGear g;
   g.F0 = F0;
@@ -560,20 +358,18 @@ void GearResponse::own_case(Run& run) const {
   g.kc = own_.kc > 0 ? own_.kc : mean_stiffness(e, F0);
   g.c = mesh_damping(gear_.zeta, g.kc, g.me);
   g.ste = periodic_fourier(e, sol_.H);
-  const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_), model_.model());
-  const FrequencyCurve c = sweep(run, hb, "own");
-  run.write("frc.csv", response_table(g, hb, c));
-  linear_reference(run, g, sol_.H, "own");
-  Worst worst;
-  Table bands({"label", "band", "f_lo_hz", "f_hi_hz"});
-  measure(run, "own", g, model_.model(), hb, c, worst, bands);
-  run.write("loss_bands.csv", bands);
+  const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_), mesh_model(gear_));
+  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
+  run.write("frc.csv", mesh_response_table(hb, c));
+  run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
+  const DteCurveReport rep = measure(run, "own", g, mesh_model(gear_), hb, c);
+  run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
   KeyNumbers& key = run.key_numbers();
   key.add("me", g.me, "kg");
   key.add("kc", g.kc, "N/m");
   key.add("c", g.c, "N s/m");
   key.add("fn", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");
-  key.add("mean_force_rel_dev", worst.mean_force, "-");
+  key.add("mean_force_rel_dev", rep.mean_force_rel_dev, "-");
   key.add("points", double(c.branch.points.size()), "-");
 }
 

@@ -25,6 +25,8 @@ Eigen::VectorXd ste_harmonics(const DteGear& g, int H) {
   return e;
 }
 
+const char* to_string(DteModel m) { return m == DteModel::parametric ? "parametric" : "constant"; }
+
 double dte_parametric_stiffness(const DteGear& g, int H, double theta) {
   const Eigen::VectorXd e = ste_harmonics(g, H);
   double v = e[0];

@@ -46,6 +46,7 @@ struct DteGear {
 // Which of the two models: the thesis' constant kc with the STE as excitation, or
 // the parametric one with k(t) = F0 / e(t).
 enum class DteModel { constant, parametric };
+const char* to_string(DteModel m);   // "constant" | "parametric"
 
 double equivalent_mass(double I1, double I2, double r1, double r2);
 double mesh_damping(double zeta, double kc, double me);   // 2 zeta sqrt(kc me)

@@ -81,6 +81,17 @@ double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2) {
   return G.inverse()(0, 0);
 }
 
+double single_pair_elastic(const SteModel& m, const ToothBeam& tooth, double s, double F) {
+  const ContactRadii r = contact_radii(m.gear, m.gear, s);
+  const double rf = m.gear.root_radius();
+  return F * (tooth_flexibility(tooth, r.r1 - rf)(0, 0) + tooth_flexibility(tooth, r.r2 - rf)(0, 0));
+}
+
+double single_pair_ste(const SteModel& m, const ToothBeam& tooth, double s, double F) {
+  return single_pair_elastic(m, tooth, s, F) +
+         double(int(m.hertz)) * palmgren_line_contact_approach(F, m.gear.face_width);
+}
+
 std::vector<StePoint> ste_continuous(const SteModel& m, double torque, int samples) {
   if (samples < 4 || samples > 1 << 16)
     throw std::invalid_argument("ste_continuous: samples per mesh cycle must be in [4, 65536]");
@@ -107,7 +118,7 @@ std::vector<StePoint> ste_continuous(const SteModel& m, double torque, int sampl
       p.force_B = kB * p.elastic;
       p.hertz = hertz_two_pairs(m, p.force_A, p.force_B);
     } else {
-      p.elastic = F * (tooth_flexibility(tooth, p.a1A)(0, 0) + tooth_flexibility(tooth, p.a2A)(0, 0));
+      p.elastic = single_pair_elastic(m, tooth, s, F);
       p.force_A = F;
       p.hertz = nh * palmgren_line_contact_approach(F, b);
     }

@@ -50,6 +50,12 @@ Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a);
 // Stiffness V/X of the fused pair (driving tooth loaded at a1, driven at a2).
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2);
 
+// One pair alone touching at the point s from A of the path of contact (0 <= s <= AE):
+// the deflections of both teeth (roots clamped) at their load heights under F [m],
+// and that plus Hertz (SteModel::hertz contacts at F) [m].
+double single_pair_elastic(const SteModel& m, const ToothBeam& tooth, double s, double F);
+double single_pair_ste(const SteModel& m, const ToothBeam& tooth, double s, double F);
+
 struct StePoint {
   double phase = 0.0;              // mesh phase in [0, 1)
   int pairs = 1;
