@@ -60,7 +60,7 @@ def case_figure(data_dir, fig_dir, row, name):
     kinds = mark_bifurcations(a1, data_dir, label, d)
     a1.axhline(0.0, color="k", lw=1.0, ls=":")
     a1.annotate(r"contact level $\Delta$ = 0 (teeth touch above)", (0.99, 0.0), xycoords=("axes fraction", "data"),
-                fontsize=7, xytext=(0, 3), textcoords="offset points", ha="right")
+                fontsize=7, xytext=(0, -9), textcoords="offset points", ha="right")
     a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
     a1.set_title("Fig. %d: $F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
                  % (int(row["figure"]), row["Fi"], row["Fa"], row["kc"]), fontsize=9)

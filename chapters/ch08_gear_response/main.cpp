@@ -291,14 +291,14 @@ void GearResponse::time_history(Run& run, const DteGear& g, const HarmonicBalanc
       pick = i;
   if (pick == P.size()) throw std::runtime_error("time_history: no stable contact-loss point on the curve");
   const VectorXd x = ev.history(P[pick].X);
+  const VectorXd force = ev.contact_force_history(P[pick].X, 0);   // the model's own law (constant or parametric)
   const Aft fine(hb.harmonics(), int(x.size()));
   const VectorXd e = fine.to_time(ste_harmonics(g, hb.harmonics()));
   const double T = 2 * M_PI / P[pick].omega;
   Table t({"t_ms", "x_um", "e_um", "contact_force"});
   for (int period = 0; period < 2; ++period)
     for (int j = 0; j < x.size(); ++j)
-      t.add_row({1e3 * T * (period + double(j) / x.size()), x[j] * kUm, e[j] * kUm,
-                 std::max(g.kc * (x[j] + e[j]), 0.0)});
+      t.add_row({1e3 * T * (period + double(j) / x.size()), x[j] * kUm, e[j] * kUm, force[j]});
   run.write("time_history.csv", t);
   run.key_numbers().add("time_history_f_hz", hz(P[pick].omega), "Hz");
 }

@@ -15,6 +15,17 @@ Eigen::VectorXd ResponseEvaluator::history(const Eigen::VectorXd& X) const {
   return fine_.to_time(hb_.project(X, q_));
 }
 
+Eigen::VectorXd ResponseEvaluator::contact_force_history(const Eigen::VectorXd& X, std::size_t i) const {
+  const auto& ct = hb_.contacts().at(i);
+  Eigen::VectorXd uc = hb_.project(X, ct.normal) + ct.gap_harmonics;
+  uc[0] += ct.gap;
+  const Eigen::VectorXd u = fine_.to_time(uc);
+  Eigen::VectorXd f(u.size());
+  for (Eigen::Index j = 0; j < u.size(); ++j)
+    f[j] = contact_force(stiffness_at(ct, 2.0 * M_PI * double(j) / double(u.size())), u[j]);
+  return f;
+}
+
 ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   const int H = hb_.harmonics();
   const Eigen::VectorXd c = hb_.project(X, q_);

@@ -34,6 +34,10 @@ class ResponseEvaluator {
   ResponseSummary summarize(const Eigen::VectorXd& X) const;
   // Time history of the coordinate over one period at `fine` samples (theta_j = 2 pi j / fine).
   Eigen::VectorXd history(const Eigen::VectorXd& X) const;
+  // The force max(k(theta) u(theta), 0) of contact `i` on the same samples, with the
+  // contact's own law: penetration u = g(theta) + n'x(theta) and stiffness k(theta)
+  // (constant kc, or kc s(theta) for a time-varying stiffness).
+  Eigen::VectorXd contact_force_history(const Eigen::VectorXd& X, std::size_t i) const;
 
  private:
   const HarmonicBalance& hb_;
