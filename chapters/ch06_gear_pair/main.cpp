@@ -155,27 +155,33 @@ class GearPairChapter {
   void own_case(Run& run) const;
 };
 
+// Physical bounds of the gear pair's data (SI units): wide enough for any gear, narrow
+// enough that M, K and the mesh terms stay finite in double precision.
+const Range kMass = Range::between(1e-9, 1e9);        // [kg], [kg m^2]
+const Range kLength = Range::between(1e-6, 1e3);      // [m]
+const Range kStiffness = Range::between(1e-6, 1e15);  // [N/m], [N m/rad]
+
 GearPairChapter::GearPairChapter(Study& study) {
   ParameterSet& P = study.parameters();
   P.group("gear pair (thesis §6.2)");
   P.add("pressure_angle_deg", &gear_.pressure_angle_deg, "deg", "pressure angle", Range::between(1.0, 45.0));
-  P.add("I1", &gear_.I1, "kg m^2", "gear 1 polar inertia", Range::positive());
-  P.add("m1", &gear_.m1, "kg", "gear 1 mass", Range::positive());
-  P.add("rb1", &gear_.rb1, "m", "gear 1 base radius", Range::positive());
-  P.add("I2", &gear_.I2, "kg m^2", "gear 2 polar inertia", Range::positive());
-  P.add("m2", &gear_.m2, "kg", "gear 2 mass", Range::positive());
-  P.add("rb2", &gear_.rb2, "m", "gear 2 base radius", Range::positive());
-  P.add("kx1", &gear_.kx1, "N/m", "gear 1 support stiffness along x", Range::positive());
-  P.add("ky1", &gear_.ky1, "N/m", "gear 1 support stiffness along y", Range::positive());
-  P.add("kth1", &gear_.kth1, "N m/rad", "gear 1 torsional support stiffness (thesis prints 'N')", Range::positive());
-  P.add("kx2", &gear_.kx2, "N/m", "gear 2 support stiffness along x", Range::positive());
-  P.add("ky2", &gear_.ky2, "N/m", "gear 2 support stiffness along y", Range::positive());
-  P.add("kth2", &gear_.kth2, "N m/rad", "gear 2 torsional support stiffness (thesis prints 'N')", Range::positive());
-  P.add("kc", &gear_.kc, "N/m", "mesh stiffness (thesis prints 5e2; 5e8 reproduces its text)", Range::positive());
-  P.add("ray_alpha", &gear_.rayleigh_alpha, "1/s", "C = alpha M + beta K", Range::nonnegative());
-  P.add("ray_beta", &gear_.rayleigh_beta, "s", "C = alpha M + beta K", Range::nonnegative());
+  P.add("I1", &gear_.I1, "kg m^2", "gear 1 polar inertia", kMass);
+  P.add("m1", &gear_.m1, "kg", "gear 1 mass", kMass);
+  P.add("rb1", &gear_.rb1, "m", "gear 1 base radius", kLength);
+  P.add("I2", &gear_.I2, "kg m^2", "gear 2 polar inertia", kMass);
+  P.add("m2", &gear_.m2, "kg", "gear 2 mass", kMass);
+  P.add("rb2", &gear_.rb2, "m", "gear 2 base radius", kLength);
+  P.add("kx1", &gear_.kx1, "N/m", "gear 1 support stiffness along x", kStiffness);
+  P.add("ky1", &gear_.ky1, "N/m", "gear 1 support stiffness along y", kStiffness);
+  P.add("kth1", &gear_.kth1, "N m/rad", "gear 1 torsional support stiffness (thesis prints 'N')", kStiffness);
+  P.add("kx2", &gear_.kx2, "N/m", "gear 2 support stiffness along x", kStiffness);
+  P.add("ky2", &gear_.ky2, "N/m", "gear 2 support stiffness along y", kStiffness);
+  P.add("kth2", &gear_.kth2, "N m/rad", "gear 2 torsional support stiffness (thesis prints 'N')", kStiffness);
+  P.add("kc", &gear_.kc, "N/m", "mesh stiffness (thesis prints 5e2; 5e8 reproduces its text)", kStiffness);
+  P.add("ray_alpha", &gear_.rayleigh_alpha, "1/s", "C = alpha M + beta K", Range::between(0.0, 1e6));
+  P.add("ray_beta", &gear_.rayleigh_beta, "s", "C = alpha M + beta K", Range::between(0.0, 1.0));
   P.group("kc study");
-  P.add("kc_alt", &mesh_.kc_alt, "N/m", "the other mesh stiffness (cases *_kc_alt)", Range::positive());
+  P.add("kc_alt", &mesh_.kc_alt, "N/m", "the other mesh stiffness (cases *_kc_alt)", kStiffness);
   P.add("ds_max_alt", &mesh_.ds_max_alt, "-", "arc-length step cap of the kc_alt curves", Range::between(1e-6, 1.0));
   P.add("damp_mesh", &mesh_.damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only", Range::between(0, 1));
   P.group("own case (--case own)", true);

@@ -9,7 +9,7 @@
 namespace gearhb {
 
 ResponseEvaluator::ResponseEvaluator(const HarmonicBalance& hb, Eigen::VectorXd q, int fine)
-    : hb_(hb), q_(std::move(q)), fine_(hb.harmonics(), fine) {}
+    : hb_(hb), q_(std::move(q)), fine_(hb.harmonics(), std::max(fine, 2 * hb.harmonics() + 2)) {}
 
 Eigen::VectorXd ResponseEvaluator::history(const Eigen::VectorXd& X) const {
   return fine_.to_time(hb_.project(X, q_));

@@ -29,7 +29,8 @@ struct ResponseSummary {
 
 class ResponseEvaluator {
  public:
-  // q: the plotted coordinate; `fine` samples per period for max/min and contact state.
+  // q: the plotted coordinate; `fine` samples per period for max/min and contact state
+  // (raised to 2H + 2 if smaller: the grid must carry the H harmonics).
   ResponseEvaluator(const HarmonicBalance& hb, Eigen::VectorXd q, int fine = 1024);
   ResponseSummary summarize(const Eigen::VectorXd& X) const;
   // Time history of the coordinate over one period at `fine` samples (theta_j = 2 pi j / fine).
