@@ -140,9 +140,19 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   c.stability = opt.stability;
   c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
   if (!co.regime && !hb.contacts().empty()) {
-    // Steps across a change of the contact state are kept short (continuation.hpp).
-    const auto ev = std::make_shared<ResponseEvaluator>(hb, Eigen::VectorXd::Zero(hb.dofs()), 256);
-    co.regime = [ev](const Eigen::VectorXd& X) { return static_cast<int>(ev->summarize(X).contact); };
+    // Steps across a change of the contact state are kept short (continuation.hpp). The
+    // regime: the state (open / full / intermittent) of every contact, two bits each.
+    const auto aft = std::make_shared<Aft>(hb.harmonics(), std::max(256, 2 * hb.harmonics() + 2));
+    co.regime = [aft, &hb](const Eigen::VectorXd& X) {
+      int code = 0;
+      for (std::size_t i = 0; i < hb.contacts().size() && i < 15; ++i) {
+        const auto& ct = hb.contacts()[i];
+        Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
+        uc[0] += ct.gap;
+        code |= static_cast<int>(contact_state(uc, aft->to_time(uc))) << (2 * i);
+      }
+      return code;
+    };
   }
   const Eigen::VectorXd X0 = linear_first_guess(hb, co.omega_start);
   c.branch = opt.natural ? natural_continuation(hb, X0, c.scaling, co)
