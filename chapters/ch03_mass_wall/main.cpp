@@ -108,9 +108,9 @@ MassAgainstWall::MassAgainstWall(Study& study) {
   P.add("k", &osc_.k, "N/m", "spring to ground", Range::positive());
   P.add("kc", &osc_.kc, "N/m", "contact stiffness", Range::nonnegative());
   P.group("own case (--case own)", true);
-  P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload");
-  P.add("F", &own_.F, "N", "harmonic force amplitude");
-  P.add("F0", &own_.F0, "N", "static force");
+  P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload", Range::between(-1e6, 1e6));
+  P.add("F", &own_.F, "N", "harmonic force amplitude", Range::between(-1e12, 1e12));
+  P.add("F0", &own_.F0, "N", "static force", Range::between(-1e12, 1e12));
   add_solver_parameters(P, sol_, 1);
   register_cases(study, kCases);
   study.check([this](const Selection&) { check_solver_settings(sol_); });

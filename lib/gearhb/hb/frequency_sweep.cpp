@@ -139,6 +139,12 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   c.natural = opt.natural;
   c.stability = opt.stability;
   c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
+  if (!(c.scaling.x[0] >= 1e-150 && c.scaling.x[0] <= 1e150 && std::isfinite(c.scaling.residual))) {
+    std::ostringstream os;
+    os << "case " << label << ": the model's characteristic displacement over the range is " << c.scaling.x[0]
+       << " (loads or stiffnesses beyond double precision: the response must lie within 1e-150 ... 1e150)";
+    throw std::invalid_argument(os.str());
+  }
   if (!co.regime && !hb.contacts().empty()) {
     // Steps across a change of the contact state are kept short (continuation.hpp). The
     // regime: the state (open / full / intermittent) of every contact, two bits each.
