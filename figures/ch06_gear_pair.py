@@ -35,9 +35,9 @@ def mark_bifurcations(ax, data_dir, label, d):
     """Period doublings, Neimark-Sacker points and branch points on the Delta_max curve."""
     b = read_csv(data_dir / ("bifurcations_%s.csv" % label))
     used = []
-    for t, w, located in zip(b["type"], b["omega"], b["located"]):
-        if t == "fold" or not located:
-            continue   # folds show as turning points; unlocated changes are only listed in the csv
+    for t, w, located, smooth in zip(b["type"], b["omega"], b["located"], b["smooth"]):
+        if t == "fold" or not (located and smooth):
+            continue   # folds show as turning points; jumps and unlocated changes are only in the csv
         # the Delta_max value at the nearest point of the branch
         i = min(range(len(d["omega"])), key=lambda j: abs(d["omega"][j] - w))
         m, c = MARKERS[t]

@@ -60,10 +60,10 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
 }
 
 Table bifurcation_table(const FrequencyCurve& c) {
-  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located"});
+  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located", "smooth"});
   for (const auto& b : c.bifurcations)
     t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier),
-               long(b.located ? 1 : 0)});
+               long(b.located ? 1 : 0), long(b.smooth ? 1 : 0)});
   return t;
 }
 

@@ -31,7 +31,8 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
-// located (1: on the chord; 0: a corrector failed there, the values are the next point's).
+// located (1: on the chord; 0: a corrector failed there, the values are the next point's),
+// smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across).
 Table bifurcation_table(const FrequencyCurve& c);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.

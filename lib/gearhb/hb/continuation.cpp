@@ -274,18 +274,20 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
 
 BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                                 const Scaling& s,
-                                const std::function<int(const Eigen::VectorXd&, double)>& state,
-                                double tol, double corrector_tolerance) {
-  const int sa = state(a.X, a.omega);
-  if (sa == state(b.X, b.omega))
-    throw std::invalid_argument("locate_state_change: no change of state between the points");
+                                const std::function<StateProbe(const Eigen::VectorXd&, double)>& probe,
+                                double tol, double corrector_tolerance, double indicator_tol) {
+  const StateProbe pa = probe(a.X, a.omega), pb = probe(b.X, b.omega);
+  if (pa.state == pb.state) throw std::invalid_argument("locate_state_change: no change of state between the points");
   Scaled S(p, s);
   const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
   const Eigen::VectorXd normal = (yb - ya).normalized();
-  double lo = 0.0, hi = 1.0;
+  double lo = 0.0, hi = 1.0, h_lo = pa.indicator, h_hi = pb.indicator;
+  int last_side = 0;   // Illinois: halve the value kept twice in a row
   BranchPoint found = b;
   while (hi - lo > tol) {
-    const double mid = 0.5 * (lo + hi);
+    const bool secant = std::isfinite(h_lo) && std::isfinite(h_hi) && h_lo * h_hi < 0.0;
+    double mid = secant ? lo + (hi - lo) * h_lo / (h_lo - h_hi) : 0.5 * (lo + hi);
+    mid = std::clamp(mid, lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));   // keep the bracket shrinking
     Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
     int iters = 0;
     double res = 0.0;
@@ -294,11 +296,23 @@ BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a
                                std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
     const Eigen::VectorXd X = S.X(y);
     const double w = S.omega(y);
-    if (state(X, w) == sa) {
+    const StateProbe pm = probe(X, w);
+    if (pm.state == pa.state) {
       lo = mid;
+      h_lo = pm.indicator;
+      if (last_side == -1) h_hi *= 0.5;
+      last_side = -1;
     } else {
       hi = mid;
+      h_hi = pm.indicator;
       found = {X, w, iters, res, 0.0, 0.0};
+      if (last_side == 1) h_lo *= 0.5;
+      last_side = 1;
+    }
+    if (std::isfinite(pm.indicator) && std::fabs(pm.indicator) < indicator_tol) {
+      if (pm.state != pa.state) break;
+      found = {X, w, iters, res, 0.0, 0.0};   // on the circle to indicator_tol: the change itself
+      break;
     }
   }
   return found;

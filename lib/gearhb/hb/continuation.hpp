@@ -19,6 +19,7 @@
 // Natural continuation (kept for teaching, thesis §2.2): omega marches with a
 // fixed step, Newton restarts from the previous solution. It cannot pass a
 // fold: it stops at the first omega where Newton fails and reports it.
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -119,14 +120,25 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
                          const Scaling& s, const std::function<bool(const Eigen::VectorXd&)>& state,
                          const TransitionOptions& opt = {});
 
-// The same bisection for a state that depends on (X, omega) (e.g. the number of
-// Floquet multipliers outside the unit circle): returns the converged point on the
-// branch at the change (X, omega), the first one whose state differs from a's, to a
-// chord fraction below `tol` (scaled). `corrector_tolerance` is the Newton tolerance
-// of the corrector. Throws if a corrector fails.
+// What a probe of the branch reports: an integer state (e.g. the number of Floquet
+// multipliers outside the unit circle) and, optionally, a smooth indicator that changes
+// sign where the state changes (e.g. log |mu| of the crossing multiplier; NaN if none).
+struct StateProbe {
+  int state = 0;
+  double indicator = NAN;
+};
+
+// The point on the branch between a and b where the state of `probe` changes: each trial
+// point on the chord a -> b is corrected back onto the branch in the hyperplane normal to
+// the chord. With a finite indicator of opposite signs at the bracket ends the trial is
+// the Illinois (modified regula falsi) estimate of its zero, otherwise the midpoint;
+// stops when the bracket is below `tol` (chord fraction) or |indicator| < indicator_tol.
+// Returns the last trial point whose state differs from a's (b if none). Throws if a
+// corrector fails. `corrector_tolerance` is the corrector's Newton tolerance.
 BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                                 const Scaling& s,
-                                const std::function<int(const Eigen::VectorXd&, double)>& state,
-                                double tol = 1e-9, double corrector_tolerance = 1e-10);
+                                const std::function<StateProbe(const Eigen::VectorXd&, double)>& probe,
+                                double tol = 1e-9, double corrector_tolerance = 1e-10,
+                                double indicator_tol = 1e-10);
 
 }  // namespace gearhb

@@ -187,8 +187,11 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   // which kind of crossing it is.
   for (std::size_t i = 1; i < P.size(); ++i) {
     if (outside(c.floquet[i - 1]) == outside(c.floquet[i])) continue;
-    auto state = [&hb, &opt, xs](const Eigen::VectorXd& X, double w) {
-      return outside(point_floquet(floquet_of_hb_orbit(hb, X, w, xs, opt.floquet)));
+    // The probe: the count outside, and log |mu| of the crossing multiplier (zero on the circle).
+    const PointFloquet &fa = c.floquet[i - 1], &fb = c.floquet[i];
+    auto state = [&hb, &opt, xs, &fa, &fb](const Eigen::VectorXd& X, double w) {
+      const FloquetResult r = floquet_of_hb_orbit(hb, X, w, xs, opt.floquet);
+      return StateProbe{outside(point_floquet(r)), std::log(std::abs(crossing_multiplier(r, fa, fb)))};
     };
     Bifurcation bf;
     bf.after_point = int(i) - 1;
@@ -203,6 +206,7 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
       bf.multiplier = crossing_multiplier(fr[i], c.floquet[i - 1], c.floquet[i]);
     }
     bf.type = crossing_type(bf.multiplier);
+    bf.smooth = bf.located && std::fabs(std::abs(bf.multiplier) - 1.0) <= 1e-2;
     if (bf.type == BifurcationType::fold) {
       // a fold of the branch (the corrected orbit's +1 crossing), or a branch point if
       // the HB branch has no fold near it: the two differ by the HB truncation error

@@ -62,6 +62,12 @@ struct Bifurcation {
   // Located on the chord between the two points; false if a corrector failed there (the
   // multiplier is then that of point after_point + 1 and omega is that point's).
   bool located = true;
+  // The crossing multiplier is within 1e-2 of the unit circle at the located point. False:
+  // the multipliers jump across the circle inside the located bracket (chord fraction
+  // 1e-9), as they may where the corrected orbit grazes a contact or where the shooting
+  // correction lands on a coexisting orbit next to a fold; the type is then that of the
+  // kind whose count changed, not of a smooth crossing.
+  bool smooth = true;
 };
 
 // Floquet data of one point (the stable flag is FrequencyCurve::stable).
