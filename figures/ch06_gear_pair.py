@@ -87,7 +87,7 @@ def case_figure(data_dir, fig_dir, row, name):
     a2.set_ylabel(r"oscillating amplitude of $\Delta$ [mm]")
     a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]   (dotted: natural frequencies, grey open, red closed mesh)",
                   fontsize=8)
-    a2.legend(fontsize=7, loc="lower right", framealpha=0.9)
+    a2.legend(fontsize=7, loc="upper right", framealpha=0.9)
     fig_.subplots_adjust(hspace=0.32)
     return save(fig_, fig_dir / name)
 

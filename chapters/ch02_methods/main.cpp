@@ -678,10 +678,9 @@ void Methods::grazing(Run& run) const {
     const auto ref = stepped_sweep(ex, {w}, vec({1.0}), tight, x0, v0).front();
     const auto ti = stepped_sweep(ex, {w}, vec({1.0}), loose).front();
     const ResponseEvaluator ev(ex, vec({1.0})), evs(sa, vec({1.0}));
-    VectorXd uc = ex.project(Xe, vec({1.0}));
-    uc[0] += ex.contacts()[0].gap;
+    const VectorXd uc = ex.penetration(Xe, 0);
     double width = 0.0;
-    for (const auto& [lo, hi] : contact_intervals(uc, Aft(10, 84).to_time(uc))) width += hi - lo;
+    for (const auto& [lo, hi] : contact_intervals(uc, Aft(ex.harmonics()).to_time(uc))) width += hi - lo;
     const double mod = floquet_of_hb_orbit(ex, Xe, w, s.x[0]).modulus;
     auto err = [&](double x) { return std::fabs(x - ref.x_max) / std::fabs(ref.x_max); };
     t.add_row({F, width, ref.x_max, err(ev.summarize(Xe).x_max), err(evs.summarize(Xs).x_max), err(ti.x_max), mod});

@@ -78,6 +78,7 @@ struct Checks {
 };
 
 enum class Mesh { kc, kc_alt };          // which mesh stiffness a case uses
+std::string name(Mesh m) { return m == Mesh::kc ? "kc" : "kc_alt"; }   // file stems, cases.csv
 enum class Measure {
   separation,    // first loss of full contact (a curve starting in full contact)
   first_touch,   // first contact (a curve starting open)
@@ -255,10 +256,9 @@ void GearPairChapter::normal_modes(Run& run) const {
     const GearPairParameters g = gear(m);
     const MatrixXd M = gear_pair_mass(g), K = gear_pair_support_stiffness(g);
     const Modes open = modal_analysis(M, K), closed = modal_analysis(M, K + gear_pair_mesh_stiffness(g));
-    const std::string tag = m == Mesh::kc ? "" : "_kc_alt";
+    const std::string tag = m == Mesh::kc ? "" : "_kc_alt";   // key-number suffix
     for (int i = 0; i < 6; ++i) {
-      t.add_row({tag.empty() ? std::string("kc") : std::string("kc_alt"), g.kc, long(i + 1), open.omega[i],
-                 closed.omega[i]});
+      t.add_row({name(m), g.kc, long(i + 1), open.omega[i], closed.omega[i]});
       if (m == Mesh::kc) run.key_numbers().add("omega_open_" + std::to_string(i + 1), open.omega[i], "rad/s");
       run.key_numbers().add("omega_closed_" + std::to_string(i + 1) + tag, closed.omega[i], "rad/s");
     }
@@ -280,7 +280,7 @@ void GearPairChapter::linear_responses(Run& run) const {
       const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 3000.0;
       t.add_row({w, std::abs(T2.dot(frequency_response(open, F, w))), std::abs(T2.dot(frequency_response(closed, F, w)))});
     }
-    run.write(m == Mesh::kc ? "linear_kc.csv" : "linear_kc_alt.csv", t);
+    run.write("linear_" + name(m) + ".csv", t);
   }
 }
 
@@ -304,7 +304,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
     const MatrixXd K = gear_pair_support_stiffness(g);
     long unstable = 0;
     for (bool st : c.stable) unstable += st ? 0 : 1;
-    index.add_row({cs.label, cs.figure, std::string(cs.mesh == Mesh::kc ? "kc" : "kc_alt"), g.kc, cs.load.Fi,
+    index.add_row({cs.label, cs.figure, name(cs.mesh), g.kc, cs.load.Fi,
                    cs.load.Fa, T2.dot(K.ldlt().solve(F0)), T2.dot((K + gear_pair_mesh_stiffness(g)).ldlt().solve(F0)),
                    long(c.branch.points.size()), long(c.branch.folds.size()), unstable, long(c.bifurcations.size()),
                    long(c.branch.rejected_steps), long(h.transitions), std::string(to_string(h.start)),

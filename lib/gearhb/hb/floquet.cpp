@@ -212,9 +212,8 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
   std::vector<Eigen::VectorXd> u;
   std::vector<double> breakpoints;
   const Aft aft(H);
-  for (const auto& ct : hb.contacts()) {
-    Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
-    uc[0] += ct.gap;
+  for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
+    Eigen::VectorXd uc = hb.penetration(X, i);
     for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
       if (b - a < 2.0 * M_PI)
         for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / w);
@@ -254,9 +253,8 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
   for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
   {
     Aft aft(H);
-    for (const auto& ct : hb.contacts()) {
-      Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
-      uc[0] += ct.gap;
+    for (std::size_t c = 0; c < hb.contacts().size(); ++c) {
+      const Eigen::VectorXd uc = hb.penetration(X, c);
       const auto I = contact_intervals(uc, aft.to_time(uc));
       for (std::size_t i = 0; i < I.size(); ++i) {
         const double a = I[i].first, b = I[i].second;

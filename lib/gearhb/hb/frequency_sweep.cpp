@@ -1,9 +1,8 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 
-#include <memory>
-
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -152,9 +151,7 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
     co.regime = [aft, &hb](const Eigen::VectorXd& X) {
       int code = 0;
       for (std::size_t i = 0; i < hb.contacts().size() && i < 15; ++i) {
-        const auto& ct = hb.contacts()[i];
-        Eigen::VectorXd uc = hb.project(X, ct.normal) + ct.gap_harmonics;
-        uc[0] += ct.gap;
+        const Eigen::VectorXd uc = hb.penetration(X, i);
         code |= static_cast<int>(contact_state(uc, aft->to_time(uc))) << (2 * i);
       }
       return code;

@@ -135,6 +135,13 @@ Eigen::VectorXd HarmonicBalance::project(const Eigen::VectorXd& X, const Eigen::
   return c;
 }
 
+Eigen::VectorXd HarmonicBalance::penetration(const Eigen::VectorXd& X, std::size_t i) const {
+  const auto& ct = contacts_.at(i);
+  Eigen::VectorXd u = project(X, ct.normal) + ct.gap_harmonics;
+  u[0] += ct.gap;
+  return u;
+}
+
 Eigen::VectorXd HarmonicBalance::linear_solution(double w, bool closed) const {
   Eigen::MatrixXd K = sys_.K;
   Eigen::VectorXd f0 = f_.f0;

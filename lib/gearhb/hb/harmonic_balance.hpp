@@ -72,6 +72,8 @@ class HarmonicBalance : public ParametricProblem {
   int index(int basis, int dof) const { return basis * n_ + dof; }
   // Coefficients (2H+1) of the coordinate q' x (e.g. q = e_1, or e_1 - e_2).
   Eigen::VectorXd project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const;
+  // Coefficients (2H+1) of the penetration u = g(theta) + n'x of contact i (contact where u > 0).
+  Eigen::VectorXd penetration(const Eigen::VectorXd& X, std::size_t i) const;
 
   // Solution with every contact removed (open contact): static + first harmonic,
   // exact for the linear system. A natural first guess for Newton. If K cannot

@@ -17,9 +17,7 @@ Eigen::VectorXd ResponseEvaluator::history(const Eigen::VectorXd& X) const {
 
 Eigen::VectorXd ResponseEvaluator::contact_force_history(const Eigen::VectorXd& X, std::size_t i) const {
   const auto& ct = hb_.contacts().at(i);
-  Eigen::VectorXd uc = hb_.project(X, ct.normal) + ct.gap_harmonics;
-  uc[0] += ct.gap;
-  const Eigen::VectorXd u = fine_.to_time(uc);
+  const Eigen::VectorXd u = fine_.to_time(hb_.penetration(X, i));
   Eigen::VectorXd f(u.size());
   for (Eigen::Index j = 0; j < u.size(); ++j)
     f[j] = contact_force(stiffness_at(ct, 2.0 * M_PI * double(j) / double(u.size())), u[j]);
@@ -39,9 +37,8 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
   r.x_h1 = std::hypot(c[1], c[2]);
   // Contact state: penetration u = g + n'x of every contact on the fine grid.
   bool any_open = false, any_closed = false;
-  for (const auto& ct : hb_.contacts()) {
-    Eigen::VectorXd uc = hb_.project(X, ct.normal) + ct.gap_harmonics;
-    uc[0] += ct.gap;
+  for (std::size_t i = 0; i < hb_.contacts().size(); ++i) {
+    const Eigen::VectorXd uc = hb_.penetration(X, i);
     const auto [lo, hi] = trig_extremes(uc, fine_.to_time(uc));   // contact_state's reading
     any_closed = any_closed || hi > 0.0;
     any_open = any_open || !(lo > 0.0);
