@@ -138,6 +138,18 @@ void Aft::product_matrix_from_moments(const double* sc, const double* ss,
   }
 }
 
+double trig_series(const double* c, int H, double theta) {
+  const double c1 = std::cos(theta), s1 = std::sin(theta);
+  double v = c[0], ck = 1.0, sk = 0.0;
+  for (int k = 1; k <= H; ++k) {
+    const double cn = ck * c1 - sk * s1;
+    sk = sk * c1 + ck * s1;
+    ck = cn;
+    v += c[2 * k - 1] * ck + c[2 * k] * sk;
+  }
+  return v;
+}
+
 std::vector<double> harmonic_amplitudes(const std::vector<double>& period_samples, int H) {
   const int N = int(period_samples.size());
   Aft aft(H, N);

@@ -66,6 +66,14 @@ class Aft {
   std::unique_ptr<Plans> p_;
 };
 
+// Value at theta of the series with coefficients c = [a0, a1, b1, ..., aH, bH]
+// (size 2H+1): one sincos, then cos(k theta), sin(k theta) by the angle-addition
+// recurrence (rounding error grows like k eps, 1e-13 at k = 340).
+double trig_series(const double* c, int H, double theta);
+inline double trig_series(const Eigen::VectorXd& c, double theta) {
+  return trig_series(c.data(), int(c.size() - 1) / 2, theta);
+}
+
 // Amplitude sqrt(a_k^2 + b_k^2) of harmonics k = 0..H of a uniformly sampled
 // period (k = 0 gives |mean|). Convenience for spectra of measured signals.
 std::vector<double> harmonic_amplitudes(const std::vector<double>& period_samples, int H);

@@ -5,6 +5,30 @@
 
 namespace gearhb {
 
+DenseLinearization::DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdw, const Scaling& s) {
+  const Eigen::Index n = J.rows();
+  A_.resize(n + 1, n + 1);
+  A_.topLeftCorner(n, n) = (J * s.x.asDiagonal()) / s.residual;
+  A_.block(0, n, n, 1) = dRdw * (s.omega / s.residual);
+  A_.row(n).setZero();
+}
+
+bool DenseLinearization::solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs,
+                                        Eigen::VectorXd& dy) const {
+  Eigen::MatrixXd A = A_;
+  A.row(A.rows() - 1) = row.transpose();
+  dy = A.partialPivLu().solve(rhs);
+  return dy.allFinite();
+}
+
+std::unique_ptr<Linearization> ParametricProblem::linearize(const Eigen::VectorXd& X, double omega,
+                                                            const Scaling& s, Eigen::VectorXd& R,
+                                                            Eigen::VectorXd& dRdw) const {
+  Eigen::MatrixXd J;
+  evaluate(X, omega, R, &J, &dRdw);
+  return std::make_unique<DenseLinearization>(std::move(J), dRdw, s);
+}
+
 NewtonReport newton_solve(const ParametricProblem& p, Eigen::VectorXd& X, double omega,
                           const Scaling& s, const NewtonOptions& opt) {
   NewtonReport rep;

@@ -8,6 +8,7 @@
 // its unknowns, of omega and of its residual, derived from its own data (see
 // HarmonicBalance::scaling); the solvers work in the scaled variables
 // x/x_scale, omega/omega_scale, R/r_scale. No factor is tuned by hand.
+#include <memory>
 #include <string>
 
 #include <Eigen/Dense>
@@ -20,6 +21,31 @@ struct Scaling {
   double residual = 1.0; // characteristic size of the residual
 };
 
+// The linearisation of a problem at one point (X, omega), able to solve the
+// bordered systems of continuation (corrector and tangent), in the scaled
+// variables y = [X / x_scale; omega / omega_scale]:
+//
+//   [ dR/dX diag(x_scale) / r_scale   dR/domega omega_scale / r_scale ] dy = [rhs_x]
+//   [               row'  (n+1 entries: X part, then omega)           ]      [rhs_n]
+class Linearization {
+ public:
+  virtual ~Linearization() = default;
+  // dy (n+1), or false if the matrix is singular to working precision.
+  virtual bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs,
+                              Eigen::VectorXd& dy) const = 0;
+};
+
+// The general case: the dense Jacobian, the (n+1) x (n+1) matrix factored by LU
+// with partial pivoting.
+class DenseLinearization : public Linearization {
+ public:
+  DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdw, const Scaling& s);
+  bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override;
+
+ private:
+  Eigen::MatrixXd A_;   // scaled, last row filled per solve
+};
+
 // A square system of equations with one parameter omega.
 class ParametricProblem {
  public:
@@ -28,6 +54,12 @@ class ParametricProblem {
   // R(X, omega); if requested also dR/dX (size x size) and dR/domega.
   virtual void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                         Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw) const = 0;
+  // R and dR/domega at (X, omega), and the linearisation there for the bordered
+  // solves of continuation. The default is DenseLinearization of evaluate's
+  // Jacobian; a problem whose Jacobian has structure may solve faster
+  // (HarmonicBalance: condensation on the contact coordinates).
+  virtual std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
+                                                   Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const;
 };
 
 struct NewtonOptions {

@@ -21,16 +21,14 @@ const char* to_string(ContactState s) {
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_roots.h>
 
+#include "gearhb/core/fourier.hpp"
+
 namespace gearhb {
 
 namespace {
 
 double trig_poly(double theta, void* params) {
-  const auto& c = *static_cast<const Eigen::VectorXd*>(params);
-  double v = c[0];
-  const int H = int(c.size() - 1) / 2;
-  for (int k = 1; k <= H; ++k) v += c[2 * k - 1] * std::cos(k * theta) + c[2 * k] * std::sin(k * theta);
-  return v;
+  return trig_series(*static_cast<const Eigen::VectorXd*>(params), theta);
 }
 
 // Root of u in [a, b] (u(a), u(b) of opposite sign) by GSL's Brent method.
@@ -182,9 +180,17 @@ void indicator_moments(const std::vector<std::pair<double, double>>& I, int M, d
   for (int m = 0; m <= M; ++m) Sc[m] = Ss[m] = 0.0;
   for (const auto& [a, b] : I) {
     Sc[0] += (b - a) * inv2pi;
+    // cos(m a), sin(m a), cos(m b), sin(m b) by the angle-addition recurrence
+    const double ca1 = std::cos(a), sa1 = std::sin(a), cb1 = std::cos(b), sb1 = std::sin(b);
+    double ca = 1.0, sa = 0.0, cb = 1.0, sb = 0.0;
     for (int m = 1; m <= M; ++m) {
-      Sc[m] += (std::sin(m * b) - std::sin(m * a)) * inv2pi / m;
-      Ss[m] += (std::cos(m * a) - std::cos(m * b)) * inv2pi / m;
+      const double can = ca * ca1 - sa * sa1, cbn = cb * cb1 - sb * sb1;
+      sa = sa * ca1 + ca * sa1;
+      sb = sb * cb1 + cb * sb1;
+      ca = can;
+      cb = cbn;
+      Sc[m] += (sb - sa) * inv2pi / m;
+      Ss[m] += (ca - cb) * inv2pi / m;
     }
   }
 }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,15 +20,15 @@ std::string Branch::summary() const {
 
 namespace {
 
-// The scaled augmented system for the corrector and the tangent.
+// The scaled augmented system for the corrector and the tangent: the problem's
+// linearisation at the last evaluated point y (ParametricProblem::linearize).
 struct Scaled {
   const ParametricProblem& p;
   const Scaling& s;
   int n;
   Eigen::VectorXd R, dRdw;
-  Eigen::MatrixXd J;
-  Scaled(const ParametricProblem& prob, const Scaling& sc)
-      : p(prob), s(sc), n(prob.size()), R(n), dRdw(n), J(n, n) {}
+  std::unique_ptr<Linearization> lin;
+  Scaled(const ParametricProblem& prob, const Scaling& sc) : p(prob), s(sc), n(prob.size()), R(n), dRdw(n) {}
   Eigen::VectorXd X(const Eigen::VectorXd& y) const { return s.x.cwiseProduct(y.head(n)); }
   double omega(const Eigen::VectorXd& y) const { return y[n] * s.omega; }
   Eigen::VectorXd y(const Eigen::VectorXd& X, double w) const {
@@ -36,49 +37,46 @@ struct Scaled {
     out[n] = w / s.omega;
     return out;
   }
-  // Fills the first n rows of A = [dR/dy] (scaled) and returns max|R|/r.
-  double eval(const Eigen::VectorXd& y, Eigen::MatrixXd& A) {
-    p.evaluate(X(y), omega(y), R, &J, &dRdw);
-    A.topLeftCorner(n, n) = (J * s.x.asDiagonal()) / s.residual;
-    A.block(0, n, n, 1) = dRdw * (s.omega / s.residual);
+  // Linearises at y; returns max|R|/r.
+  double eval(const Eigen::VectorXd& y) {
+    lin = p.linearize(X(y), omega(y), s, R, dRdw);
     return R.cwiseAbs().maxCoeff() / s.residual;
   }
 };
 
-// Unit tangent at y, oriented along `previous`: [A; previous'] t = [0; 1].
-bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previous, Eigen::VectorXd& t) {
-  const int n = S.n;
-  Eigen::MatrixXd A(n + 1, n + 1);
-  S.eval(y, A);
-  A.row(n) = previous.transpose();
-  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(n + 1);
-  rhs[n] = 1.0;
-  t = A.partialPivLu().solve(rhs);
-  if (!t.allFinite() || t.norm() == 0.0) return false;
+// Unit tangent at the last evaluated point, oriented along `previous`: [A; previous'] t = [0; 1].
+bool tangent_here(Scaled& S, const Eigen::VectorXd& previous, Eigen::VectorXd& t) {
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(S.n + 1);
+  rhs[S.n] = 1.0;
+  if (!S.lin->solve_bordered(previous, rhs, t) || t.norm() == 0.0) return false;
   t.normalize();
   if (t.dot(previous) < 0) t = -t;
   return true;
 }
 
+// The same at y.
+bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previous, Eigen::VectorXd& t) {
+  S.eval(y);
+  return tangent_here(S, previous, t);
+}
+
 // Corrector: Newton on { R(y) = 0 ; normal' (y - y_p) = 0 }, from y = y_p (in place).
-// Returns true on convergence; reports iterations and final scaled residual.
+// Returns true on convergence; reports iterations and final scaled residual. On
+// return S is linearised at the final y (tangent_here reuses it).
 bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int max_iterations,
              double tolerance, int& iters, double& res) {
   const int n = S.n;
   const Eigen::VectorXd yp = y;
-  Eigen::MatrixXd A(n + 1, n + 1);
-  Eigen::VectorXd F(n + 1);
+  Eigen::VectorXd F(n + 1), dy;
   double last_step = 0.0;
   for (iters = 0; iters <= max_iterations; ++iters) {
-    res = S.eval(y, A);
+    res = S.eval(y);
     if (!std::isfinite(res)) return false;
     if (iters > 0 && res < tolerance && last_step < tolerance) return true;
     if (iters == max_iterations) return false;
-    A.row(n) = normal.transpose();
     F.head(n) = -S.R / S.s.residual;
     F[n] = -normal.dot(y - yp);
-    const Eigen::VectorXd dy = A.partialPivLu().solve(F);
-    if (!dy.allFinite()) return false;
+    if (!S.lin->solve_bordered(normal, F, dy)) return false;
     last_step = dy.cwiseAbs().maxCoeff();
     y += dy;
   }
@@ -105,7 +103,7 @@ Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::V
     Eigen::VectorXd y = (1.0 - mid) * ya + mid * yb, tm;
     int iters = 0;
     double res = 0.0;
-    if (!correct(S, y, normal, 30, tolerance, iters, res) || !tangent(S, y, ta, tm)) return best;
+    if (!correct(S, y, normal, 30, tolerance, iters, res) || !tangent_here(S, ta, tm)) return best;
     best = y;
     ((tm[n] > 0) == sign_a ? lo : hi) = mid;
   }
@@ -161,7 +159,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
       bool converged = correct(S, yn, t, opt.corrector_max_iterations, opt.tolerance, iters, res);
       why = converged ? "" : "corrector did not converge";
       if (converged) {
-        if (!tangent(S, yn, t, tn)) {
+        if (!tangent_here(S, t, tn)) {
           converged = false;
           why = "singular augmented Jacobian";
         } else if (tn.dot(t) < cos_turn && ds > 4.0 * opt.ds_min) {

@@ -223,8 +223,7 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
     const double th = w * t;
     Eigen::MatrixXd Kt = sys.K;
     for (std::size_t i = 0; i < u.size(); ++i) {
-      double ui = u[i][0];
-      for (int k = 1; k <= H; ++k) ui += u[i][2 * k - 1] * std::cos(k * th) + u[i][2 * k] * std::sin(k * th);
+      const double ui = trig_series(u[i], th);
       const auto& ct = hb.contacts()[i];
       Kt += contact_stiffness(stiffness_at(ct, th), ui) * ct.normal * ct.normal.transpose();
     }

@@ -15,12 +15,7 @@ namespace gearhb {
 namespace {
 
 double gap_at(const UnilateralContact& c, double theta) {
-  double g = c.gap + c.gap_harmonics[0];
-  const int H = int(c.gap_harmonics.size() - 1) / 2;
-  for (int k = 1; k <= H; ++k)
-    if (c.gap_harmonics[2 * k - 1] != 0.0 || c.gap_harmonics[2 * k] != 0.0)   // padded zeros cost nothing
-      g += c.gap_harmonics[2 * k - 1] * std::cos(k * theta) + c.gap_harmonics[2 * k] * std::sin(k * theta);
-  return g;
+  return c.gap + trig_series(c.gap_harmonics, theta);
 }
 
 struct OdeContext {
