@@ -33,6 +33,8 @@ class Linearization {
   // dy (n+1), or false if the matrix is singular to working precision.
   virtual bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs,
                               Eigen::VectorXd& dy) const = 0;
+  // Whether the last solve used a structured (not the dense) factorisation.
+  virtual bool last_solve_structured() const { return false; }
 };
 
 // The general case: the dense Jacobian, the (n+1) x (n+1) matrix factored by LU

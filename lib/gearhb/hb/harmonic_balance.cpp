@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
+#include <memory>
 #include <stdexcept>
 
 namespace gearhb {
@@ -53,47 +55,47 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
   mc_.resize(2 * m); ms_.resize(2 * m);
 }
 
-void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::VectorXd& R,
-                               Eigen::MatrixXd* J, Eigen::VectorXd* dRdw) const {
-  const int n = n_, m = 2 * H_ + 1, N = aft_.samples();
+void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double w, Eigen::VectorXd& R,
+                                   Eigen::VectorXd* dRdw) const {
+  // X and R as n x (2H+1) matrices, one column per coefficient
+  const int n = n_, m = 2 * H_ + 1;
   R.resize(size());
-  const auto& M = sys_.M;
-  const auto& C = sys_.C;
-  const auto& K = sys_.K;
-  // --- linear part -------------------------------------------------------
-  R.segment(0, n) = K * X.segment(0, n) - f_.f0;
+  const Eigen::Map<const Eigen::MatrixXd> Xm(X.data(), n, m);
+  Eigen::Map<Eigen::MatrixXd> Rm(R.data(), n, m);
+  const Eigen::MatrixXd KX = sys_.K * Xm, MX = sys_.M * Xm, CX = sys_.C * Xm;
+  Rm.col(0) = KX.col(0) - f_.f0;
   for (int k = 1; k <= H_; ++k) {
     const double kw = k * w;
-    const auto c = X.segment(index(2 * k - 1, 0), n);
-    const auto s = X.segment(index(2 * k, 0), n);
-    R.segment(index(2 * k - 1, 0), n) = K * c - kw * kw * (M * c) + kw * (C * s);
-    R.segment(index(2 * k, 0), n) = K * s - kw * kw * (M * s) - kw * (C * c);
+    const int c = 2 * k - 1, s = 2 * k;
+    Rm.col(c) = KX.col(c) - kw * kw * MX.col(c) + kw * CX.col(s);
+    Rm.col(s) = KX.col(s) - kw * kw * MX.col(s) - kw * CX.col(c);
   }
-  R.segment(index(1, 0), n) -= f_.fc;
-  R.segment(index(2, 0), n) -= f_.fs;
-  if (J) {
-    J->setZero(size(), size());
-    J->block(0, 0, n, n) = K;
-    for (int k = 1; k <= H_; ++k) {
-      const double kw = k * w;
-      const int ic = index(2 * k - 1, 0), is = index(2 * k, 0);
-      const Eigen::MatrixXd D = K - kw * kw * M;
-      J->block(ic, ic, n, n) = D;
-      J->block(ic, is, n, n) = kw * C;
-      J->block(is, is, n, n) = D;
-      J->block(is, ic, n, n) = -kw * C;
-    }
-  }
+  Rm.col(1) -= f_.fc;
+  Rm.col(2) -= f_.fs;
   if (dRdw) {
     dRdw->setZero(size());
+    Eigen::Map<Eigen::MatrixXd> Dm(dRdw->data(), n, m);
     for (int k = 1; k <= H_; ++k) {
-      const auto c = X.segment(index(2 * k - 1, 0), n);
-      const auto s = X.segment(index(2 * k, 0), n);
-      dRdw->segment(index(2 * k - 1, 0), n) = -2.0 * k * k * w * (M * c) + k * (C * s);
-      dRdw->segment(index(2 * k, 0), n) = -2.0 * k * k * w * (M * s) - k * (C * c);
+      const int c = 2 * k - 1, s = 2 * k;
+      Dm.col(c) = -2.0 * k * k * w * MX.col(c) + k * CX.col(s);
+      Dm.col(s) = -2.0 * k * k * w * MX.col(s) - k * CX.col(c);
     }
   }
-  // --- contacts by AFT ------------------------------------------------------
+}
+
+Eigen::MatrixXd HarmonicBalance::harmonic_block(int k, double w) const {
+  if (k == 0) return sys_.K;
+  const int n = n_;
+  const double kw = k * w;
+  Eigen::MatrixXd B(2 * n, 2 * n);
+  const Eigen::MatrixXd D = sys_.K - kw * kw * sys_.M;
+  B << D, kw * sys_.C, -kw * sys_.C, D;
+  return B;
+}
+
+void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian,
+                                    std::vector<Eigen::MatrixXd>* G) const {
+  const int n = n_, m = 2 * H_ + 1, N = aft_.samples();
   for (const auto& ct : contacts_) {
     // u(theta) = g(theta) + n' x(theta): coefficients, then samples.
     for (int a = 0; a < m; ++a) uc_[a] = ct.normal.dot(X.segment(a * n, n)) + ct.gap_harmonics[a];
@@ -117,16 +119,218 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::Vector
         ss_[j] = contact_stiffness(k, us_[j]);
       }
       aft_.to_frequency(fs_.data(), fcoef_.data());
-      if (J) aft_.product_matrix(ss_.data(), G_);
+      if (jacobian) aft_.product_matrix(ss_.data(), G_);
     }
     for (int a = 0; a < m; ++a) R.segment(a * n, n) += fcoef_[a] * ct.normal;
-    if (J) {
-      const Eigen::MatrixXd nn = ct.normal * ct.normal.transpose();
-      for (int a = 0; a < m; ++a)
-        for (int b = 0; b < m; ++b)
-          if (G_(a, b) != 0.0) J->block(a * n, b * n, n, n) += G_(a, b) * nn;
-    }
+    if (jacobian) G->push_back(G_);
   }
+}
+
+Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double w, const std::vector<Eigen::MatrixXd>& G) const {
+  const int n = n_, m = 2 * H_ + 1;
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(size(), size());
+  J.block(0, 0, n, n) = sys_.K;
+  for (int k = 1; k <= H_; ++k) J.block(index(2 * k - 1, 0), index(2 * k - 1, 0), 2 * n, 2 * n) = harmonic_block(k, w);
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    const Eigen::MatrixXd nn = contacts_[i].normal * contacts_[i].normal.transpose();
+    for (int a = 0; a < m; ++a)
+      for (int b = 0; b < m; ++b)
+        if (G[i](a, b) != 0.0) J.block(a * n, b * n, n, n) += G[i](a, b) * nn;
+  }
+  return J;
+}
+
+void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::VectorXd& R,
+                               Eigen::MatrixXd* J, Eigen::VectorXd* dRdw) const {
+  linear_terms(X, w, R, dRdw);
+  std::vector<Eigen::MatrixXd> G;
+  contact_terms(X, R, J != nullptr, &G);
+  if (J) *J = assemble_jacobian(w, G);
+}
+
+namespace {
+
+// The bordered system of continuation with the HB Jacobian J = L + U Gc U'
+// (harmonic_balance.hpp): L block diagonal over the harmonics (the linear
+// dynamic stiffness), U = [I (x) n_1, ..., I (x) n_P] the contact normals on
+// every coefficient, Gc = diag(G_1, ..., G_P) the contacts' product matrices.
+// Condensation on the contact coordinates v = U' dx: with Z = L^-1 (.),
+//   [ I + S Gc        U' Z_b    ] [ v ]   [ U' Z_f    ]      S = U' L^-1 U,
+//   [ -c' W Gc     d - c' Z_b   ] [dw ] = [ g - c' Z_f ],    W = L^-1 U,
+// then dx = Z_f - Z_b dw - W Gc v. The reduced matrix has mP + 1 rows (m = 2H+1
+// coefficients, P contacts) instead of n m + 1, and det(bordered) = det(L)
+// det(reduced): it is singular exactly where the full system is (folds are
+// handled by the border as before). Used when L is well conditioned; the result
+// is checked by its residual on the full system.
+class CondensedLinearization : public Linearization {
+ public:
+  // blocks: L's diagonal blocks (harmonic 0: n x n, k >= 1: 2n x 2n, [cos; sin]);
+  // normals: n x P; G: the P product matrices (m x m).
+  CondensedLinearization(std::vector<Eigen::MatrixXd> blocks, std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu,
+                         Eigen::MatrixXd normals, std::vector<Eigen::MatrixXd> G, Eigen::VectorXd dRdw, const Scaling& s)
+      : L_(std::move(blocks)), lu_(std::move(lu)), normals_(std::move(normals)), G_(std::move(G)),
+        b_(std::move(dRdw)), s_(s) {
+    const int n = int(normals_.rows()), P = int(normals_.cols()), m = int(G_[0].rows());
+    for (std::size_t k = 0; k < L_.size(); ++k) offset_.push_back(k == 0 ? 0 : n * (2 * int(k) - 1));
+    // the contact coordinates q = (contact i, basis a) and W's columns w_q = L_k^-1 (n_i at basis a)
+    for (int i = 0; i < P; ++i)
+      for (int a = 0; a < m; ++a) {
+        const int k = (a + 1) / 2, local = (a == 0 || a % 2 == 1) ? 0 : n;
+        Eigen::VectorXd e = Eigen::VectorXd::Zero(L_[k].rows());
+        e.segment(local, n) = normals_.col(i);
+        coords_.push_back({i, a, k, local});
+        w_.push_back(lu_[k].solve(e));
+      }
+    Zb_ = solve_L(b_);
+    UZb_ = project(Zb_);
+    // I + S Gc, S(q1, q2) = n_i1' (w_q2 at basis a1): nonzero for q1, q2 of one harmonic
+    const int q = int(coords_.size());
+    SG_ = Eigen::MatrixXd::Identity(q, q);
+    for (int q1 = 0; q1 < q; ++q1)
+      for (int q2 = 0; q2 < q; ++q2) {
+        const Coord &c1 = coords_[q1], &c2 = coords_[q2];
+        if (c1.block != c2.block) continue;
+        const double S = normals_.col(c1.contact).dot(w_[q2].segment(c1.local, n));
+        SG_.row(q1).segment(c2.contact * m, m) += S * G_[c2.contact].row(c2.basis);
+      }
+  }
+
+  bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
+    const Eigen::Index N = b_.size(), q = Eigen::Index(coords_.size());
+    const int m = int(G_[0].rows());
+    const Eigen::VectorXd f = rhs.head(N) * s_.residual;
+    const Eigen::VectorXd c = row.head(N).cwiseQuotient(s_.x);
+    const double d = row[N] / s_.omega, g = rhs[N];
+    const Eigen::VectorXd Zf = solve_L(f);
+    Eigen::MatrixXd A(q + 1, q + 1);
+    Eigen::VectorXd r(q + 1);
+    A.topLeftCorner(q, q) = SG_;
+    A.topRightCorner(q, 1) = UZb_;
+    A.row(q).setZero();
+    for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
+      const Coord& cj = coords_[j];
+      const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
+      A.row(q).segment(cj.contact * m, m) -= wc * G_[cj.contact].row(cj.basis);
+    }
+    A(q, q) = d - c.dot(Zb_);
+    r.head(q) = project(Zf);
+    r[q] = g - c.dot(Zf);
+    for (Eigen::Index i = 0; i <= q; ++i) {   // row equilibration for the pivoting
+      const double w = A.row(i).cwiseAbs().maxCoeff();
+      if (w > 0.0) A.row(i) /= w, r[i] /= w;
+    }
+    const Eigen::VectorXd vw = A.partialPivLu().solve(r);
+    if (!vw.allFinite()) return false;
+    const double dw = vw[q];
+    Eigen::VectorXd dx = Zf - Zb_ * dw;
+    const Eigen::VectorXd Gv = times_G(vw.head(q));
+    for (Eigen::Index j = 0; j < q; ++j) dx.segment(offset_[coords_[j].block], w_[j].size()) -= Gv[j] * w_[j];
+    // backward error on the full bordered system, as a dense LU would have it
+    const Eigen::VectorXd Ldx = times_L(dx), Gu = times_G(project(dx));
+    Eigen::VectorXd res = Ldx + b_ * dw - f;
+    for (Eigen::Index j = 0; j < q; ++j) {
+      const Coord& cj = coords_[j];
+      res.segment(offset_[cj.block] + cj.local, normals_.rows()) += Gu[j] * normals_.col(cj.contact);
+    }
+    const double scale = f.cwiseAbs().maxCoeff() + Ldx.cwiseAbs().maxCoeff() + std::fabs(dw) * b_.cwiseAbs().maxCoeff();
+    const double last = std::fabs(c.dot(dx) + d * dw - g);
+    if (!(res.cwiseAbs().maxCoeff() <= 1e-10 * scale) ||
+        !(last <= 1e-10 * (std::fabs(g) + c.cwiseAbs().dot(dx.cwiseAbs()) + std::fabs(d * dw))))
+      return false;
+    dy.resize(N + 1);
+    dy.head(N) = dx.cwiseQuotient(s_.x);
+    dy[N] = dw / s_.omega;
+    return true;
+  }
+
+ private:
+  struct Coord { int contact, basis, block, local; };
+  std::vector<Eigen::MatrixXd> L_;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu_;
+  std::vector<int> offset_;     // first unknown of each block
+  Eigen::MatrixXd normals_;
+  std::vector<Eigen::MatrixXd> G_;
+  Eigen::VectorXd b_, Zb_, UZb_;
+  Scaling s_;
+  std::vector<Coord> coords_;
+  std::vector<Eigen::VectorXd> w_;
+  Eigen::MatrixXd SG_;
+  Eigen::VectorXd solve_L(const Eigen::VectorXd& v) const {
+    Eigen::VectorXd out(v.size());
+    for (std::size_t k = 0; k < L_.size(); ++k) out.segment(offset_[k], L_[k].rows()) = lu_[k].solve(v.segment(offset_[k], L_[k].rows()));
+    return out;
+  }
+  Eigen::VectorXd times_L(const Eigen::VectorXd& v) const {
+    Eigen::VectorXd out(v.size());
+    for (std::size_t k = 0; k < L_.size(); ++k) out.segment(offset_[k], L_[k].rows()) = L_[k] * v.segment(offset_[k], L_[k].rows());
+    return out;
+  }
+  Eigen::VectorXd project(const Eigen::VectorXd& x) const {   // U' x
+    Eigen::VectorXd u(coords_.size());
+    for (std::size_t j = 0; j < coords_.size(); ++j)
+      u[j] = normals_.col(coords_[j].contact).dot(x.segment(offset_[coords_[j].block] + coords_[j].local, normals_.rows()));
+    return u;
+  }
+  Eigen::VectorXd times_G(const Eigen::VectorXd& v) const {   // Gc v
+    const Eigen::Index m = G_[0].rows();
+    Eigen::VectorXd out(v.size());
+    for (std::size_t i = 0; i < G_.size(); ++i) out.segment(i * m, m) = G_[i] * v.segment(i * m, m);
+    return out;
+  }
+};
+
+// A solver that tries the condensed system first and falls back to the dense one
+// (assembled on demand) where the condensed residual check fails.
+class HbLinearization : public Linearization {
+ public:
+  HbLinearization(std::unique_ptr<CondensedLinearization> condensed, std::function<Eigen::MatrixXd()> dense_J,
+                  Eigen::VectorXd dRdw, const Scaling& s)
+      : condensed_(std::move(condensed)), dense_J_(std::move(dense_J)), dRdw_(std::move(dRdw)), s_(s) {}
+  bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
+    structured_ = condensed_ && condensed_->solve_bordered(row, rhs, dy);
+    if (structured_) return true;
+    if (!dense_) dense_ = std::make_unique<DenseLinearization>(dense_J_(), dRdw_, s_);
+    return dense_->solve_bordered(row, rhs, dy);
+  }
+  bool last_solve_structured() const override { return structured_; }
+
+ private:
+  std::unique_ptr<CondensedLinearization> condensed_;
+  std::function<Eigen::MatrixXd()> dense_J_;
+  Eigen::VectorXd dRdw_;
+  Scaling s_;
+  mutable std::unique_ptr<DenseLinearization> dense_;
+  mutable bool structured_ = false;
+};
+
+}  // namespace
+
+std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd& X, double w, const Scaling& s,
+                                                          Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const {
+  linear_terms(X, w, R, &dRdw);
+  std::vector<Eigen::MatrixXd> G;
+  contact_terms(X, R, true, &G);
+  const int n = n_, m = 2 * H_ + 1, P = int(contacts_.size());
+  auto dense = [this, w, G]() { return assemble_jacobian(w, G); };
+  if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdw, s);   // nothing to condense
+  std::vector<Eigen::MatrixXd> blocks;
+  std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> factors;
+  for (int k = 0; k <= H_; ++k) {
+    blocks.push_back(harmonic_block(k, w));
+    // L singular (a free rigid-body mode at k = 0, an undamped resonance of the open
+    // system at k omega): the dense system only. Near-singular blocks are caught by
+    // the condensed solve's residual check.
+    factors.emplace_back(blocks.back());
+    const Eigen::VectorXd d = factors.back().matrixLU().diagonal().cwiseAbs();
+    if (!(d.minCoeff() > 1e-13 * d.maxCoeff())) return std::make_unique<DenseLinearization>(dense(), dRdw, s);
+  }
+  Eigen::MatrixXd normals(n, P);
+  for (int i = 0; i < P; ++i) normals.col(i) = contacts_[i].normal;
+  return std::make_unique<HbLinearization>(
+      std::make_unique<CondensedLinearization>(std::move(blocks), std::move(factors), std::move(normals), std::move(G),
+                                               dRdw, s),
+      dense,
+      dRdw, s);
 }
 
 Eigen::VectorXd HarmonicBalance::project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const {

@@ -67,6 +67,13 @@ class HarmonicBalance : public ParametricProblem {
 
   void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
                 Eigen::VectorXd* dRdw) const override;
+  // For continuation: with fewer contact coordinates than unknowns (P (2H+1) < n (2H+1),
+  // i.e. n > P) the bordered systems are solved by condensation on the contact
+  // coordinates (harmonic_balance.cpp, CondensedLinearization): an LU of size
+  // P (2H+1) + 1 instead of n (2H+1) + 1, checked by its residual, with the dense
+  // LU as the fallback.
+  std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
+                                           Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const override;
 
   // Index of coefficient `basis` (0 static, 2k-1 cos k, 2k sin k) of DOF `dof` in X.
   int index(int basis, int dof) const { return basis * n_ + dof; }
@@ -107,6 +114,13 @@ class HarmonicBalance : public ParametricProblem {
   mutable Eigen::VectorXd uc_, us_, fs_, ss_, fcoef_, mc_, ms_;
   mutable Eigen::MatrixXd G_;
   Eigen::VectorXd linear_solution(double omega, bool closed) const;
+  // The pieces of evaluate: the linear terms of R (and dR/domega), the contact
+  // forces added to R (and each contact's product matrix G, kc included), the
+  // dynamic stiffness block of harmonic k, and J from those.
+  void linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::VectorXd* dRdw) const;
+  void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian, std::vector<Eigen::MatrixXd>* G) const;
+  Eigen::MatrixXd harmonic_block(int k, double omega) const;
+  Eigen::MatrixXd assemble_jacobian(double omega, const std::vector<Eigen::MatrixXd>& G) const;
 };
 
 }  // namespace gearhb
