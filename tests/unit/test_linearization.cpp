@@ -53,11 +53,7 @@ HarmonicBalance two_contacts(int H, bool rigid) {
 // condition number near the folds).
 TEST(Linearization, CondensedMatchesDenseAlongNlvibEx03) {
   const HarmonicBalance hb = test_models::nlvib_ex03(21);
-  SweepOptions o;
-  o.omega_min = 0.5;
-  o.omega_max = 0.8;
-  o.direction = SweepDirection::down;
-  o.stability = StabilityMethod::none;
+  SweepOptions o = test_models::nlvib_ex03_sweep(StabilityMethod::none);
   const FrequencyCurve c = sweep_frequency(hb, o, "ex03");
   ASSERT_TRUE(c.complete) << c.failure;
   double worst = 0.0;

@@ -1,5 +1,6 @@
 #pragma once
 // Small models shared by the unit tests.
+#include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace test_models {
@@ -39,6 +40,16 @@ inline gearhb::HarmonicBalance nlvib_ex03(int H, int N = 0) {
   fc[1] = 0.1;
   gearhb::Excitation f{VectorXd::Zero(2), fc, VectorXd::Zero(2)};
   return gearhb::HarmonicBalance(s, {c}, f, H, N);
+}
+
+// NLvib example 03's sweep: omega from 0.8 down to 0.5.
+inline gearhb::SweepOptions nlvib_ex03_sweep(gearhb::StabilityMethod stability) {
+  gearhb::SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 0.8;
+  o.direction = gearhb::SweepDirection::down;
+  o.stability = stability;
+  return o;
 }
 
 }  // namespace test_models

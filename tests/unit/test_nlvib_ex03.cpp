@@ -104,11 +104,7 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
 
 TEST(NlvibEx03, HillOptionAndNoStability) {
   HarmonicBalance hb = test_models::nlvib_ex03(10);
-  SweepOptions o;
-  o.omega_min = 0.5;
-  o.omega_max = 0.8;
-  o.direction = SweepDirection::down;
-  o.stability = StabilityMethod::none;
+  SweepOptions o = test_models::nlvib_ex03_sweep(StabilityMethod::none);
   const FrequencyCurve none = sweep_frequency(hb, o, "none");
   EXPECT_TRUE(none.floquet.empty());
   EXPECT_TRUE(none.bifurcations.empty());
