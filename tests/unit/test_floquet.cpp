@@ -16,6 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/gears/gear_pair.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -191,4 +192,67 @@ TEST(Floquet, EigenvaluesOfAMonodromyMatrixWithRepeatedPairs) {
     EXPECT_LT(Eigen::JacobiSVD<Eigen::MatrixXcd>(D).singularValues().minCoeff(), 1e-7 * Phi.norm()) << "mu = " << mu[i];
     EXPECT_LT(std::abs(mu[i]), 0.97);
   }
+}
+
+namespace {
+// max relative difference of the period maps (x, v at T and the monodromy) of the
+// diagonalised and the Pade propagators from one initial state
+double spectral_vs_pade(const HarmonicBalance& hb, const VectorXd& X, double w, int* spectral_states = nullptr) {
+  VectorXd x0, v0;
+  hb_initial_state(hb, X, w, x0, v0);
+  std::vector<double> nodes;
+  for (int j = 0; j < 64; ++j) nodes.push_back(2.0 * M_PI / w * j / 64);
+  PiecewiseLinearFlow fast(hb, true), pade(hb, false);
+  VectorXd xa, va, xb, vb;
+  MatrixXd Pa, Pb;
+  fast.period_map(x0, v0, w, nodes, xa, va, Pa);
+  pade.period_map(x0, v0, w, nodes, xb, vb, Pb);
+  if (spectral_states) *spectral_states = fast.spectral_states();
+  EXPECT_EQ(pade.spectral_states(), 0);
+  const double dx = (xa - xb).cwiseAbs().maxCoeff() / xb.cwiseAbs().maxCoeff();
+  const double dv = (va - vb).cwiseAbs().maxCoeff() / vb.cwiseAbs().maxCoeff();
+  const double dP = (Pa - Pb).cwiseAbs().maxCoeff() / Pb.cwiseAbs().maxCoeff();
+  return std::max({dx, dv, dP});
+}
+}  // namespace
+
+// The diagonalised propagators (floquet.hpp) against Eigen's Pade exponentials on
+// the same states: NLvib ex. 03 (open and closed generators, 2 contact switches per
+// period) and the chapter 6 gear pair (15 x 15 generators, stiffness 1e8 N/m
+// beside masses of 0.4 kg) with the mesh opening and closing.
+TEST(Floquet, SpectralPropagatorsMatchPadeExponentials) {
+  const HarmonicBalance ex03 = test_models::nlvib_ex03(21);
+  for (double w : {0.55, 0.65, 0.75}) {
+    int used = 0;
+    EXPECT_LT(spectral_vs_pade(ex03, 4.0 * ex03.closed_contact_solution(w), w, &used), 1e-11) << "omega = " << w;
+    EXPECT_EQ(used, 2);   // both contact states diagonalised
+  }
+  GearPairParameters g;
+  g.kc = 5e8;
+  const HarmonicBalance gear(gear_pair_system(g), {gear_pair_mesh(g)},
+                             Excitation{gear_pair_static_torque(g, 1e3), VectorXd::Constant(6, 1e4), VectorXd::Zero(6)}, 10);
+  for (double w : {5000.0, 7600.0, 14000.0}) {
+    int used = 0;
+    EXPECT_LT(spectral_vs_pade(gear, gear.open_contact_solution(w), w, &used), 1e-10) << "omega = " << w;
+    EXPECT_GE(used, 1);
+  }
+}
+
+// Balancing (core balance(), Parlett & Reinsch): [[1, 1e4], [1e-4, 1]] has eigenvalues
+// 0 and 2 (det 0, trace 2); balanced, its off-diagonal entries are within a factor 4
+// of each other, D is a power of 2 (so D B D^-1 gives A back exactly) and the
+// eigenvalues are unchanged.
+TEST(Floquet, BalancingEqualisesRowsAndColumnsExactly) {
+  MatrixXd A(2, 2);
+  A << 1, 1e4, 1e-4, 1;
+  MatrixXd B = A;
+  const VectorXd d = balance(B);
+  EXPECT_LE(std::max(std::fabs(B(0, 1) / B(1, 0)), std::fabs(B(1, 0) / B(0, 1))), 4.0);
+  EXPECT_EQ(MatrixXd(d.asDiagonal() * B * d.cwiseInverse().asDiagonal()), A);
+  for (Eigen::Index i = 0; i < 2; ++i) EXPECT_EQ(std::exp2(std::round(std::log2(d[i]))), d[i]);
+  const Eigen::VectorXcd mu = general_eigenvalues(B, "balanced");
+  std::vector<double> re{mu[0].real(), mu[1].real()};
+  std::sort(re.begin(), re.end());
+  EXPECT_NEAR(re[0], 0.0, 1e-12);
+  EXPECT_NEAR(re[1], 2.0, 1e-12);
 }

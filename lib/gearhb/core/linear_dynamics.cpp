@@ -48,4 +48,30 @@ Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string
                            std::to_string(A.rows()) + " x " + std::to_string(A.cols()) + " matrix)");
 }
 
+Eigen::VectorXd balance(Eigen::MatrixXd& A) {
+  const Eigen::Index n = A.rows();
+  Eigen::VectorXd d = Eigen::VectorXd::Ones(n);
+  if (!A.allFinite()) return d;
+  for (int sweep = 0; sweep < 100; ++sweep) {
+    bool done = true;
+    for (Eigen::Index i = 0; i < n; ++i) {
+      double c = A.col(i).cwiseAbs().sum() - std::fabs(A(i, i));
+      double r = A.row(i).cwiseAbs().sum() - std::fabs(A(i, i));
+      if (c == 0.0 || r == 0.0) continue;
+      const double s = c + r;
+      double f = 1.0;
+      while (c < 0.5 * r) c *= 4.0, f *= 2.0;
+      while (c >= 2.0 * r) c *= 0.25, f *= 0.5;
+      if ((c + r) / f < 0.95 * s) {
+        done = false;
+        d[i] *= f;
+        A.row(i) /= f;
+        A.col(i) *= f;
+      }
+    }
+    if (done) break;
+  }
+  return d;
+}
+
 }  // namespace gearhb

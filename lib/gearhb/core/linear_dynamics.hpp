@@ -41,4 +41,11 @@ Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
 // Throws std::runtime_error("<where>: eigensolver failed ...") if both fail.
 Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string& where);
 
+// Balancing (Parlett & Reinsch 1969, as LAPACK's dgebal without permutation):
+// replaces A by D^-1 A D, D = diag(d) with powers of 2, so that the off-diagonal
+// norms of every row and its column are within a factor 2; returns d. Eigenvalues
+// are unchanged and the eigenvectors of a matrix that mixes units (metres beside
+// metres per second beside unit oscillators) are well scaled.
+Eigen::VectorXd balance(Eigen::MatrixXd& A);
+
 }  // namespace gearhb

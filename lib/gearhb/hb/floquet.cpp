@@ -15,8 +15,8 @@
 
 namespace gearhb {
 
-PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb)
-    : hb_(hb), n_(hb.dofs()), Minv_(hb.system().M.inverse()) {
+PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb, bool spectral)
+    : hb_(hb), n_(hb.dofs()), spectral_(spectral), Minv_(hb.system().M.inverse()) {
   harmonics_.push_back(1);
   const int H = hb.harmonics();
   for (int k = 2; k <= H; ++k) {
@@ -30,6 +30,7 @@ PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb)
   for (const auto& ct : hb.contacts())
     if (ct.stiffness_profile)
       throw std::invalid_argument("PiecewiseLinearFlow: a time-varying contact stiffness has no piecewise-constant flow");
+  for (std::size_t i = 0; i < hb.contacts().size(); ++i) rows_.push_back(contact_row(i));
 }
 
 Eigen::RowVectorXd PiecewiseLinearFlow::contact_row(std::size_t i) const {
@@ -76,37 +77,115 @@ Eigen::MatrixXd PiecewiseLinearFlow::generator(unsigned S, double w) const {
   return A;
 }
 
-namespace {
-
-// Root in (0, h] of f(s) = r' exp(A s) z where the sign of f leaves `inside`
-// (f > 0 == inside at s -> 0+, not at s = h): safeguarded Newton with
-// f'(s) = r' A exp(A s) z, bracket kept by the sign test.
-double switch_time(const Eigen::MatrixXd& A, const Eigen::RowVectorXd& r, const Eigen::VectorXd& z, double h,
-                   bool inside, double fh, double tol) {
-  double lo = 0.0, hi = h, s = h;
-  double fs = fh;
-  // secant-like first guess from f(0) and f(h)
-  const double f0 = r.dot(z);
-  if ((f0 > 0.0) == inside && fh != f0) s = std::clamp(h * f0 / (f0 - fh), 0.0, h);
-  else s = 0.5 * h;
-  for (int it = 0; it < 100 && hi - lo > tol; ++it) {
-    const Eigen::MatrixXd E = (A * s).exp();
-    const Eigen::VectorXd zs = E * z;
-    fs = r.dot(zs);
-    const double dfs = r.dot(A * zs);
-    ((fs > 0.0) == inside ? lo : hi) = s;
-    double next = s - fs / dfs;
-    if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
-    if (std::fabs(next - s) < 0.25 * tol) {
-      s = next;
-      break;
-    }
-    s = next;
+// The flow of one contact state: z(s) = exp(A s) z(0) (see floquet.hpp).
+class PiecewiseLinearFlow::Propagator {
+ public:
+  Propagator(Eigen::MatrixXd A, const std::vector<Eigen::RowVectorXd>& rows, bool try_spectral) : A_(std::move(A)) {
+    // A = D B D^-1 with B balanced (generators mix metres, metres per second and unit
+    // oscillators: unbalanced, the Pade exponential of a gear pair's loses 1e-7)
+    B_ = A_;
+    d_ = balance(B_);
+    if (!try_spectral || !A_.allFinite()) return;
+    // B = W diag(lambda) W^-1: V = D W, V^-1 = W^-1 D^-1
+    Eigen::EigenSolver<Eigen::MatrixXd> es(B_);
+    if (es.info() != Eigen::Success) return;
+    const Eigen::MatrixXcd W = es.eigenvectors();
+    const Eigen::MatrixXcd Winv = Eigen::PartialPivLU<Eigen::MatrixXcd>(W).inverse();
+    const double cond = W.cwiseAbs().colwise().sum().maxCoeff() * Winv.cwiseAbs().colwise().sum().maxCoeff();
+    if (!(cond <= 1e4) || !Winv.allFinite()) return;
+    spectral_ = true;
+    lambda_ = es.eigenvalues();
+    V_ = d_.cast<std::complex<double>>().asDiagonal() * W;
+    Vinv_ = Winv * d_.cwiseInverse().cast<std::complex<double>>().asDiagonal();
+    for (const auto& r : rows) rV_.push_back(r.cast<std::complex<double>>() * V_);
   }
-  return std::clamp(s, lo, hi);
+  bool spectral() const { return spectral_; }
+  const Eigen::MatrixXd& generator() const { return A_; }
+
+  // exp(A s)
+  Eigen::MatrixXd exponential(double s) const {
+    if (spectral_) return (V_ * exps(s).asDiagonal() * Vinv_).real();
+    return d_.asDiagonal() * Eigen::MatrixXd((B_ * s).exp()) * d_.cwiseInverse().asDiagonal();
+  }
+  // The same, kept for the next call with the same s (the uniform steps of a period).
+  const Eigen::MatrixXd& step_exponential(double s) const {
+    if (!(std::fabs(s - s_cached_) <= 1e-12 * s)) {
+      s_cached_ = s;
+      E_cached_ = exponential(s);
+    }
+    return E_cached_;
+  }
+  // Root in (0, h] of u_i(s) = r_i' exp(A s) z where the sign leaves `inside`
+  // (u_i > 0 == inside at s -> 0+, not at s = h; fh = u_i(h)): safeguarded
+  // Newton with u_i'(s) = r_i' A exp(A s) z, the bracket kept by the sign test.
+  double switch_time(std::size_t i, const Eigen::RowVectorXd& r, const Eigen::VectorXd& z, double h, bool inside,
+                     double fh, double tol) const {
+    Eigen::VectorXcd alpha;
+    if (spectral_) alpha = rV_[i].transpose().cwiseProduct(Vinv_ * z.cast<std::complex<double>>());
+    auto value = [&](double s, double& f, double& df) {
+      if (spectral_) {
+        const Eigen::VectorXcd e = alpha.cwiseProduct(exps(s));
+        f = e.sum().real();
+        df = e.cwiseProduct(lambda_).sum().real();
+      } else {
+        const Eigen::VectorXd zs = exponential(s) * z;
+        f = r.dot(zs);
+        df = r.dot(A_ * zs);
+      }
+    };
+    double lo = 0.0, hi = h, s = h;
+    const double f0 = r.dot(z);
+    // secant-like first guess from f(0) and f(h)
+    if ((f0 > 0.0) == inside && fh != f0) s = std::clamp(h * f0 / (f0 - fh), 0.0, h);
+    else s = 0.5 * h;
+    for (int it = 0; it < 100 && hi - lo > tol; ++it) {
+      double fs = 0.0, dfs = 0.0;
+      value(s, fs, dfs);
+      ((fs > 0.0) == inside ? lo : hi) = s;
+      double next = s - fs / dfs;
+      if (!(next > lo && next < hi) || !std::isfinite(next)) next = 0.5 * (lo + hi);
+      if (std::fabs(next - s) < 0.25 * tol) {
+        s = next;
+        break;
+      }
+      s = next;
+    }
+    return std::clamp(s, lo, hi);
+  }
+
+ private:
+  Eigen::MatrixXd A_, B_;   // generator, balanced generator D^-1 A D
+  Eigen::VectorXd d_;       // D
+  bool spectral_ = false;
+  Eigen::VectorXcd lambda_;
+  Eigen::MatrixXcd V_, Vinv_;
+  std::vector<Eigen::RowVectorXcd> rV_;
+  mutable double s_cached_ = NAN;
+  mutable Eigen::MatrixXd E_cached_;
+  Eigen::VectorXcd exps(double s) const { return (lambda_ * s).array().exp().matrix(); }
+};
+
+const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned S, double w) const {
+  if (!(w == cache_omega_)) {
+    cache_.clear();
+    cache_omega_ = w;
+  }
+  if (cache_.size() <= S) cache_.resize(std::size_t(S) + 1);
+  if (!cache_[S]) cache_[S] = std::make_shared<Propagator>(generator(S, w), rows_, spectral_);
+  return *cache_[S];
 }
 
-}  // namespace
+int PiecewiseLinearFlow::spectral_states() const {
+  int k = 0;
+  for (const auto& p : cache_) k += p && p->spectral();
+  return k;
+}
+
+int PiecewiseLinearFlow::pade_states() const {
+  int k = 0;
+  for (const auto& p : cache_) k += p && !p->spectral();
+  return k;
+}
 
 void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
                                      const std::vector<double>& nodes, Eigen::VectorXd& xT,
@@ -114,8 +193,6 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
   const int n = n_, m = 2 * n_;
   const double T = 2.0 * M_PI / w;
   const std::size_t nc = hb_.contacts().size();
-  std::vector<Eigen::RowVectorXd> rows(nc);
-  for (std::size_t i = 0; i < nc; ++i) rows[i] = contact_row(i);
   Eigen::VectorXd z = Eigen::VectorXd::Zero(dim_);
   z.head(n) = x0;
   z.segment(n, n) = v0;
@@ -123,25 +200,7 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
   for (std::size_t j = 0; j < harmonics_.size(); ++j) z[m + 1 + 2 * int(j)] = 1.0;   // cos(0)
   unsigned S = 0;
   for (std::size_t i = 0; i < nc; ++i)
-    if (rows[i].dot(z) > 0.0) S |= 1u << i;
-  // Generators and uniform-step exponentials, cached per contact state.
-  std::vector<std::pair<unsigned, Eigen::MatrixXd>> gen, expo;
-  double h_cached = -1.0;
-  auto generator_of = [&](unsigned s) -> const Eigen::MatrixXd& {
-    for (const auto& g : gen) if (g.first == s) return g.second;
-    gen.emplace_back(s, generator(s, w));
-    return gen.back().second;
-  };
-  auto exp_of = [&](unsigned s, double h) -> Eigen::MatrixXd {
-    if (std::fabs(h - h_cached) <= 1e-15 * T) {
-      for (const auto& e : expo) if (e.first == s) return e.second;
-      expo.emplace_back(s, (generator_of(s) * h).exp());
-      return expo.back().second;
-    }
-    return (generator_of(s) * h).exp();
-  };
-  // the most common step
-  if (nodes.size() > 1) h_cached = nodes[1] - nodes[0];
+    if (rows_[i].dot(z) > 0.0) S |= 1u << i;
   Phi = Eigen::MatrixXd::Identity(m, m);
   if (xs) xs->resize(n, Eigen::Index(nodes.size()));
   const double tol = 1e-14 * T;
@@ -151,16 +210,17 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
     int guard = 0;
     while (h > 0.0) {
       if (++guard > 1000) throw std::runtime_error("PiecewiseLinearFlow: too many contact switches in one step");
-      const Eigen::MatrixXd E = exp_of(S, h);
+      const Propagator& P = propagator(S, w);
+      const Eigen::MatrixXd& E = P.step_exponential(h);
       const Eigen::VectorXd zb = E * z;
       // contacts whose state at the end of the step differs from S: the earliest switch
       double s_first = h;
       std::size_t i_first = nc;
       for (std::size_t i = 0; i < nc; ++i) {
         const bool inside = S >> i & 1u;
-        const double fb = rows[i].dot(zb);
+        const double fb = rows_[i].dot(zb);
         if ((fb > 0.0) == inside) continue;
-        const double s = switch_time(generator_of(S), rows[i], z, h, inside, fb, tol);
+        const double s = P.switch_time(i, rows_[i], z, h, inside, fb, tol);
         if (s < s_first || i_first == nc) { s_first = s; i_first = i; }
       }
       if (i_first == nc) {
@@ -168,7 +228,7 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
         Phi = E.topLeftCorner(m, m) * Phi;
         break;
       }
-      const Eigen::MatrixXd Es = (generator_of(S) * s_first).exp();
+      const Eigen::MatrixXd Es = P.exponential(s_first);
       z = Es * z;
       Phi = Es.topLeftCorner(m, m) * Phi;
       S ^= 1u << i_first;

@@ -26,7 +26,9 @@
 // integrates the variational equation Phi' = A(t) Phi over one period with GSL's
 // rk8pd, segment by segment between optional breakpoints where A may jump.
 #include <complex>
+#include <cmath>
 #include <functional>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -56,9 +58,21 @@ struct FloquetResult {
 };
 
 // The exact piecewise-linear flow of an HB model (see above).
+//
+// Propagators. Each contact state's generator A_S is diagonalised once per
+// omega (A_S = V diag(lambda) V^-1, Eigen's EigenSolver) when its eigenvector
+// matrix is well conditioned (cond_1(V) <= 1e4, so exp(A_S s) = V diag(e^{lambda s}) V^-1
+// is good to ~1e-12): a step costs a matrix-vector product, a switch function
+// r' exp(A_S s) z = sum_j (r'V)_j (V^-1 z)_j e^{lambda_j s} costs O(dim) per Newton
+// iteration. Otherwise (a defective or nearly defective A_S: an undamped resonance
+// with a forcing harmonic, a free rigid-body mode) every exponential is Eigen's
+// scaling-and-squaring Pade (MatrixFunctions), as with spectral = false. Both work
+// on the balanced generator (core balance()): a gear pair's generator mixes
+// stiffness/mass ~1e9 with unit entries, and unbalanced the Pade exponential of one
+// step loses 1e-7 relative (balanced: 1e-15, against a long-double Taylor product).
 class PiecewiseLinearFlow {
  public:
-  explicit PiecewiseLinearFlow(const HarmonicBalance& hb);
+  explicit PiecewiseLinearFlow(const HarmonicBalance& hb, bool spectral = true);
   // Period map from (x0, v0) at phase 0 over one forcing period 2 pi / omega,
   // with the monodromy matrix. `nodes` are the times (in [0, T), ascending, 0
   // first) at which the flow is restarted and its contact state checked;
@@ -67,14 +81,23 @@ class PiecewiseLinearFlow {
                   const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                   Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr) const;
   int augmented_size() const { return dim_; }
+  // States of the last omega whose propagator is diagonalised / uses Pade exponentials.
+  int spectral_states() const;
+  int pade_states() const;
 
  private:
+  class Propagator;
   const HarmonicBalance& hb_;
   int n_, dim_;
+  bool spectral_;
   std::vector<int> harmonics_;       // oscillator harmonics k (k = 1 first)
+  std::vector<Eigen::RowVectorXd> rows_;   // u_i = r_i' z
   Eigen::MatrixXd Minv_;
+  mutable std::vector<std::shared_ptr<Propagator>> cache_;   // per contact state, at cache_omega_
+  mutable double cache_omega_ = NAN;
   Eigen::MatrixXd generator(unsigned state, double omega) const;   // A_S
   Eigen::RowVectorXd contact_row(std::size_t i) const;            // u_i = r_i' z
+  const Propagator& propagator(unsigned state, double omega) const;
 };
 
 // Multipliers of the HB point (X, omega) after correcting the orbit by shooting.
