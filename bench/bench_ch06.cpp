@@ -1,0 +1,55 @@
+// Chapter 6: the Fig. 40 curve of the gear pair (kc = 5e8 N/m, Fi = 1e5 N m,
+// Fa = 1e4, H = 10, 2000-62000 rad/s, ds_max 0.005 as the chapter runs it) with
+// the Floquet stability of every point and the bifurcations located; and the
+// Floquet multipliers of one point of it. Times go to the chapter README.
+//   build/bin/gearhb_bench --benchmark_filter=ch06
+#include <benchmark/benchmark.h>
+
+#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+
+using namespace gearhb;
+
+namespace {
+HarmonicBalance fig40_model() {
+  const GearPairParameters g;   // thesis values, kc = 5e8 N/m
+  Eigen::VectorXd F(6);
+  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
+  return HarmonicBalance(gear_pair_system(g), {gear_pair_mesh(g)},
+                         Excitation{gear_pair_static_torque(g, 1e5), F, Eigen::VectorXd::Zero(6)}, 10);
+}
+SweepOptions fig40_sweep(bool stability) {
+  SweepOptions o;
+  o.omega_min = 2000.0;
+  o.omega_max = 62000.0;
+  o.continuation.ds_max = 0.005;
+  o.continuation.tolerance = 1e-9;
+  o.continuation.corrector_max_iterations = 12;
+  o.continuation.ds_min = 1e-8;
+  o.stability = stability ? StabilityMethod::floquet : StabilityMethod::none;
+  return o;
+}
+}  // namespace
+
+// stability: 0 none, 1 Floquet of every point and the bifurcations located.
+static void BM_ch06_fig40_curve(benchmark::State& state) {
+  const HarmonicBalance hb = fig40_model();
+  const SweepOptions o = fig40_sweep(state.range(0) != 0);
+  for (auto _ : state) {
+    const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+    state.counters["points"] = double(c.branch.points.size());
+    state.counters["bifurcations"] = double(c.bifurcations.size());
+  }
+}
+BENCHMARK(BM_ch06_fig40_curve)->Arg(0)->Arg(1)->ArgNames({"stability"})->Unit(benchmark::kMillisecond);
+
+// One point near the first resonance (shooting correction + diagonalised propagators).
+static void BM_ch06_floquet_point(benchmark::State& state) {
+  const HarmonicBalance hb = fig40_model();
+  SweepOptions o = fig40_sweep(false);
+  o.omega_max = 9000.0;
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+  const auto& p = c.branch.points[c.branch.points.size() / 2];
+  for (auto _ : state) benchmark::DoNotOptimize(floquet_of_hb_orbit(hb, p.X, p.omega, c.scaling.x[0]).modulus);
+}
+BENCHMARK(BM_ch06_floquet_point)->Unit(benchmark::kMicrosecond);
