@@ -53,3 +53,33 @@ static void BM_ch06_floquet_point(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(floquet_of_hb_orbit(hb, p.X, p.omega, c.scaling.x[0]).modulus);
 }
 BENCHMARK(BM_ch06_floquet_point)->Unit(benchmark::kMicrosecond);
+
+// One corrector step's linear algebra on the gear pair (n = 6 DOFs, one contact) against
+// H: linearise and solve one bordered system, condensed (HarmonicBalance::linearize:
+// an LU of 2H+2 rows) or dense (DenseLinearization: an LU of 6(2H+1)+1 rows).
+static void BM_ch06_bordered_solve(benchmark::State& state) {
+  const int H = int(state.range(0));
+  const GearPairParameters g;
+  Eigen::VectorXd F(6);
+  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
+  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
+                           Excitation{gear_pair_static_torque(g, 1e5), F, Eigen::VectorXd::Zero(6)}, H);
+  const double w = 9000.0;
+  const Scaling s = hb.scaling(2000.0, 62000.0);
+  const Eigen::VectorXd X = 20.0 * hb.closed_contact_solution(w);   // intermittent contact
+  Eigen::VectorXd row = Eigen::VectorXd::Ones(hb.size() + 1), rhs = row, dy, R, dRdw;
+  Eigen::MatrixXd J;
+  for (auto _ : state) {
+    if (state.range(1)) {
+      const auto lin = hb.linearize(X, w, s, R, dRdw);
+      if (!lin->solve_bordered(row, rhs, dy) || !lin->last_solve_structured()) state.SkipWithError("not condensed");
+    } else {
+      hb.evaluate(X, w, R, &J, &dRdw);
+      DenseLinearization(J, dRdw, s).solve_bordered(row, rhs, dy);
+    }
+    benchmark::DoNotOptimize(dy.data());
+  }
+  state.counters["unknowns"] = double(hb.size());
+}
+BENCHMARK(BM_ch06_bordered_solve)->ArgsProduct({{5, 10, 20, 40}, {0, 1}})->ArgNames({"H", "condensed"})
+    ->Unit(benchmark::kMicrosecond);
