@@ -128,7 +128,7 @@ class GearResponse {
   void frequency_responses(Run& run) const;
   DteCurveReport measure(Run& run, const std::string& label, const DteGear& g, DteModel model,
                          const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void time_history(Run& run, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void time_history(Run& run, const DteGear& g, DteModel model, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void peak_check(Run& run, const Case& cs, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void floquet_check(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   DteModel model_of(const Case& cs) const { return cs.parametric ? DteModel::parametric : mesh_model(gear_); }
@@ -254,7 +254,7 @@ void GearResponse::frequency_responses(Run& run) const {
                    long(c.branch.points.size()), long(c.branch.folds.size()), long(c.bifurcations.size()),
                    rep.peak_rms * kUm, hz(rep.peak_omega)});
     if (measures(cs, Measure::time_check)) checks.push_back({cs.label, timed_dte_time_check(run, cs.label, hb, c)});
-    if (measures(cs, Measure::time_history)) time_history(run, g, hb, c);
+    if (measures(cs, Measure::time_history)) time_history(run, g, model, hb, c);
     if (measures(cs, Measure::peak)) peak_check(run, cs, g, hb, c);
     if (measures(cs, Measure::floquet)) floquet_check(run, cs, hb, c);
   }
@@ -280,8 +280,10 @@ DteCurveReport GearResponse::measure(Run& run, const std::string& label, const D
 }
 
 // Supplement: x(t), e(t) and the contact force over two mesh periods at the
-// stable contact-loss point of largest RMS.
-void GearResponse::time_history(Run& run, const DteGear& g, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+// stable contact-loss point of largest RMS. The parametric model's unknown is the
+// mesh deflection d: its dynamic transmission error is x = d - e.
+void GearResponse::time_history(Run& run, const DteGear& g, DteModel model, const HarmonicBalance& hb,
+                                const FrequencyCurve& c) const {
   const ResponseEvaluator ev(hb, kX);
   const auto& P = c.branch.points;
   std::size_t pick = P.size();
@@ -298,7 +300,8 @@ void GearResponse::time_history(Run& run, const DteGear& g, const HarmonicBalanc
   Table t({"t_ms", "x_um", "e_um", "contact_force"});
   for (int period = 0; period < 2; ++period)
     for (int j = 0; j < x.size(); ++j)
-      t.add_row({1e3 * T * (period + double(j) / x.size()), x[j] * kUm, e[j] * kUm, force[j]});
+      t.add_row({1e3 * T * (period + double(j) / x.size()),
+                 (model == DteModel::parametric ? x[j] - e[j] : x[j]) * kUm, e[j] * kUm, force[j]});
   run.write("time_history.csv", t);
   run.key_numbers().add("time_history_f_hz", hz(P[pick].omega), "Hz");
 }
