@@ -82,3 +82,14 @@ TEST(Linearization, RigidBodyModeFallsBackToDense) {
   ASSERT_TRUE(X.allFinite());
   EXPECT_LT(condensed_vs_dense(hb, X, 0.7, s, 3, false), 1e-10);
 }
+
+// No contact at all (a linear model, P = 0): the condensed system is the border row
+// alone, L is solved block by block.
+TEST(Linearization, NoContactIsSolvedByBlocks) {
+  Eigen::MatrixXd K(2, 2);
+  K << 2, -1, -1, 2;
+  const LinearSystem sys{Eigen::MatrixXd::Identity(2, 2), 0.05 * K, K};
+  const HarmonicBalance hb(sys, {}, Excitation{Eigen::Vector2d(0.1, 0), Eigen::Vector2d(0, 1), Eigen::Vector2d(0, 0)}, 4);
+  const Scaling s = hb.scaling(0.5, 2.0);
+  EXPECT_LT(condensed_vs_dense(hb, hb.open_contact_solution(1.1), 1.1, s, 11), 1e-12);
+}

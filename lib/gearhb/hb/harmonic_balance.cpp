@@ -169,8 +169,8 @@ class CondensedLinearization : public Linearization {
   CondensedLinearization(std::vector<Eigen::MatrixXd> blocks, std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu,
                          Eigen::MatrixXd normals, std::vector<Eigen::MatrixXd> G, Eigen::VectorXd dRdw, const Scaling& s)
       : L_(std::move(blocks)), lu_(std::move(lu)), normals_(std::move(normals)), G_(std::move(G)),
-        b_(std::move(dRdw)), s_(s) {
-    const int n = int(normals_.rows()), P = int(normals_.cols()), m = int(G_[0].rows());
+        b_(std::move(dRdw)), s_(s), m_(2 * int(L_.size()) - 1) {
+    const int n = int(normals_.rows()), P = int(normals_.cols()), m = m_;
     for (std::size_t k = 0; k < L_.size(); ++k) offset_.push_back(k == 0 ? 0 : n * (2 * int(k) - 1));
     // the contact coordinates q = (contact i, basis a) and W's columns w_q = L_k^-1 (n_i at basis a)
     for (int i = 0; i < P; ++i)
@@ -197,7 +197,7 @@ class CondensedLinearization : public Linearization {
 
   bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
     const Eigen::Index N = b_.size(), q = Eigen::Index(coords_.size());
-    const int m = int(G_[0].rows());
+    const int m = m_;
     const Eigen::VectorXd f = rhs.head(N) * s_.residual;
     const Eigen::VectorXd c = row.head(N).cwiseQuotient(s_.x);
     const double d = row[N] / s_.omega, g = rhs[N];
@@ -252,6 +252,7 @@ class CondensedLinearization : public Linearization {
   std::vector<Eigen::MatrixXd> G_;
   Eigen::VectorXd b_, Zb_, UZb_;
   Scaling s_;
+  int m_;                       // 2H+1 coefficients per coordinate
   std::vector<Coord> coords_;
   std::vector<Eigen::VectorXd> w_;
   Eigen::MatrixXd SG_;
@@ -272,7 +273,7 @@ class CondensedLinearization : public Linearization {
     return u;
   }
   Eigen::VectorXd times_G(const Eigen::VectorXd& v) const {   // Gc v
-    const Eigen::Index m = G_[0].rows();
+    const Eigen::Index m = m_;
     Eigen::VectorXd out(v.size());
     for (std::size_t i = 0; i < G_.size(); ++i) out.segment(i * m, m) = G_[i] * v.segment(i * m, m);
     return out;
