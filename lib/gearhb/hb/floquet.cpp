@@ -100,7 +100,6 @@ class PiecewiseLinearFlow::Propagator {
     for (const auto& r : rows) rV_.push_back(r.cast<std::complex<double>>() * V_);
   }
   bool spectral() const { return spectral_; }
-  const Eigen::MatrixXd& generator() const { return A_; }
 
   // exp(A s)
   Eigen::MatrixXd exponential(double s) const {
@@ -170,20 +169,22 @@ const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned 
     cache_.clear();
     cache_omega_ = w;
   }
-  if (cache_.size() <= S) cache_.resize(std::size_t(S) + 1);
-  if (!cache_[S]) cache_[S] = std::make_shared<Propagator>(generator(S, w), rows_, spectral_);
-  return *cache_[S];
+  // the states met in one period: a handful of the 2^P possible ones
+  for (const auto& [state, p] : cache_)
+    if (state == S) return *p;
+  cache_.emplace_back(S, std::make_shared<Propagator>(generator(S, w), rows_, spectral_));
+  return *cache_.back().second;
 }
 
 int PiecewiseLinearFlow::spectral_states() const {
   int k = 0;
-  for (const auto& p : cache_) k += p && p->spectral();
+  for (const auto& [state, p] : cache_) k += p->spectral();
   return k;
 }
 
 int PiecewiseLinearFlow::pade_states() const {
   int k = 0;
-  for (const auto& p : cache_) k += p && !p->spectral();
+  for (const auto& [state, p] : cache_) k += !p->spectral();
   return k;
 }
 

@@ -29,6 +29,7 @@
 #include <cmath>
 #include <functional>
 #include <memory>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -93,7 +94,7 @@ class PiecewiseLinearFlow {
   std::vector<int> harmonics_;       // oscillator harmonics k (k = 1 first)
   std::vector<Eigen::RowVectorXd> rows_;   // u_i = r_i' z
   Eigen::MatrixXd Minv_;
-  mutable std::vector<std::shared_ptr<Propagator>> cache_;   // per contact state, at cache_omega_
+  mutable std::vector<std::pair<unsigned, std::shared_ptr<Propagator>>> cache_;   // (contact state, its propagator) at cache_omega_
   mutable double cache_omega_ = NAN;
   Eigen::MatrixXd generator(unsigned state, double omega) const;   // A_S
   Eigen::RowVectorXd contact_row(std::size_t i) const;            // u_i = r_i' z
