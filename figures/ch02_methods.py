@@ -70,16 +70,22 @@ def cost_growth(data_dir, fig_dir):
         idx = [i for i in range(len(d["n"])) if int(d["n"][i]) == n]
         ax.plot([d["unknowns"][i] for i in idx], [d["cpu_s_per_step"][i] for i in idx], marker="o", ms=4,
                 color="C%d" % j, label="n = %d DOF (H = %s)" % (n, ", ".join(str(int(d["H"][i])) for i in idx)))
+        if "cpu_s_condensed" in d and n > 1:
+            ax.plot([d["unknowns"][i] for i in idx], [d["cpu_s_condensed"][i] for i in idx], marker="s", ms=3,
+                    mfc="none", ls=":", color="C%d" % j)
     big = max(range(len(d["n"])), key=lambda i: d["unknowns"][i])
     c = d["cpu_s_per_step"][big] / d["unknowns"][big] ** 3
     xs = [10 ** (k / 20) for k in range(0, 61)]
     ax.plot(xs, [c * x ** 3 for x in xs], "k--", lw=1, label="model c (n(2H+1))^3 through the largest point")
     ax.set_xscale("log")
     ax.set_yscale("log")
+    if "cpu_s_condensed" in d:
+        ax.plot([], [], "k:", marker="s", ms=3, mfc="none",
+                label="dotted: condensed on the contact (continuation step, LU of 2H+2 rows)")
     ax.set_xlabel("HB unknowns n(2H+1)")
     ax.set_ylabel("CPU time of one Newton step [s]")
-    ax.set_title("Cost of a Newton step (residual + Jacobian + LU): chain of n masses, one contact")
-    ax.legend(fontsize=7)
+    ax.set_title("Cost of a Newton step (residual + Jacobian + LU): chain of n masses, one contact", fontsize=9)
+    ax.legend(fontsize=6.5)
     return save(fig, fig_dir / "figM2_cost_per_point.png")
 
 

@@ -28,6 +28,7 @@
 #include <cmath>
 #include <complex>
 #include <cstdio>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -472,10 +473,22 @@ void Methods::speed_ups(Run& run, const std::vector<CostRow>& rows) const {
 
 // --- step 4: cost of one Newton step against H and n --------------------------------
 // A chain of n unit masses (springs 1 between neighbours and to the walls, damping
-// 0.02 K, force on the last, a contact on the first): one residual + Jacobian
-// evaluation and one LU solve, repeated until 0.02 s of CPU time.
+// 0.02 K, force on the last, a contact on the first), each step repeated until 0.02 s
+// of CPU time:
+//  - dense: one residual + Jacobian evaluation and one LU solve of n(2H+1) unknowns;
+//  - condensed: one linearisation and one bordered solve as the continuation's
+//    corrector does it (HarmonicBalance::linearize: an LU of 2H+2 rows, one contact).
 void Methods::cost_growth(Run& run) const {
-  Table t({"n", "H", "unknowns", "cpu_s_per_step"});
+  Table t({"n", "H", "unknowns", "cpu_s_per_step", "cpu_s_condensed"});
+  auto seconds_per_call = [](const std::function<void()>& step) {
+    const double t0 = cpu_seconds();
+    int reps = 0;
+    do {
+      step();
+      ++reps;
+    } while (cpu_seconds() - t0 < 0.02 || reps < 3);
+    return (cpu_seconds() - t0) / reps;
+  };
   for (int n : {1, 2, 4, 8, 16})
     for (int H : {1, 2, 4, 8, 16, 32, 64}) {
       const int unknowns = n * (2 * H + 1);
@@ -491,16 +504,20 @@ void Methods::cost_growth(Run& run) const {
       const HarmonicBalance hb(LinearSystem{MatrixXd::Identity(n, n), 0.02 * K, K}, {UnilateralContact{e1, 10.0, -0.5, {}}},
                                Excitation{VectorXd::Zero(n), fc, VectorXd::Zero(n)}, H);
       const double w = 0.3;
-      VectorXd X = hb.open_contact_solution(w) * 3.0, R, dX;
+      const Scaling sc = hb.scaling(0.5 * w, 2.0 * w);
+      const VectorXd X = hb.open_contact_solution(w) * 3.0;
+      const VectorXd border = VectorXd::Ones(hb.size() + 1);
+      VectorXd R, dX, dRdw;
       MatrixXd J;
-      const double t0 = cpu_seconds();
-      int reps = 0;
-      do {
+      const double dense = seconds_per_call([&] {
         hb.evaluate(X, w, R, &J, nullptr);
         dX = J.partialPivLu().solve(R);
-        ++reps;
-      } while (cpu_seconds() - t0 < 0.02 || reps < 3);
-      t.add_row({long(n), long(H), long(unknowns), (cpu_seconds() - t0) / reps});
+      });
+      const double condensed = seconds_per_call([&] {
+        const auto lin = hb.linearize(X, w, sc, R, dRdw);
+        lin->solve_bordered(border, border, dX);
+      });
+      t.add_row({long(n), long(H), long(unknowns), dense, condensed});
     }
   run.write("cost_per_point.csv", t);
 }
