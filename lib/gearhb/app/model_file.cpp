@@ -8,6 +8,7 @@
 #include "gearhb/app/cli.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/core/text_file.hpp"
 
 namespace gearhb {
 
@@ -43,6 +44,10 @@ double number(const json& j, const std::string& file, const std::string& key) {
   if (!j.is_number()) fail(file, key, "must be a number");
   const double v = j.get<double>();
   if (!std::isfinite(v)) fail(file, key, "must be finite");
+  // Every quantity of a model in any consistent units lies far inside this; beyond
+  // it products of two entries leave double precision and the solver sees inf or 0.
+  if (v != 0.0 && (std::fabs(v) < 1e-150 || std::fabs(v) > 1e150))
+    fail(file, key, "must be 0 or of magnitude between 1e-150 and 1e150");
   return v;
 }
 
@@ -87,19 +92,21 @@ void symmetric(const Eigen::MatrixXd& m, const std::string& file, const std::str
 
 // A periodic gap from a CSV `phase,gap`: its first H harmonics, [0, a1, b1, ...].
 Eigen::VectorXd read_gap_file(const std::string& path, const std::string& key, int H) {
-  std::ifstream in(path);
-  if (!in) fail(path, key, "cannot be opened");
-  std::string line;
-  std::getline(in, line);
-  if (line != "phase,gap" && line != "phase,gap\r") fail(path, key, "needs the header 'phase,gap'");
+  std::vector<std::string> lines;
+  try {
+    lines = read_text_lines(path);
+  } catch (const TextFileError& e) {
+    fail(path, key, e.what());
+  }
+  if (lines.empty() || lines[0] != "phase,gap") fail(path, key, "needs the header 'phase,gap'");
   std::vector<double> phase, gap;
-  int row = 1;
-  while (std::getline(in, line)) {
-    ++row;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    const std::string row = std::to_string(i + 1);
     if (line.empty()) continue;
     const auto comma = line.find(',');
-    if (comma == std::string::npos) fail(path, key, "row " + std::to_string(row) + ": expected phase,gap");
-    const std::string where = path + " row " + std::to_string(row);
+    if (comma == std::string::npos) fail(path, key, "row " + row + ": expected phase,gap");
+    const std::string where = path + " row " + row;
     phase.push_back(parse_decimal(line.substr(0, comma), where + " phase"));
     gap.push_back(parse_decimal(line.substr(comma + 1), where + " gap"));
   }
@@ -122,21 +129,46 @@ Eigen::VectorXd read_gap_file(const std::string& path, const std::string& key, i
   return c;
 }
 
-json load(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError(path + ": cannot be opened");
+}  // namespace
+
+json read_json_file(const std::string& path) {
+  std::string text;
   try {
-    return json::parse(in);
+    text = read_text_file(path);
+  } catch (const TextFileError& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+  // Refuse deep nesting while parsing (the parser itself is iterative, but copying or
+  // destroying a deeply nested value recurses) and duplicate keys (the last would win).
+  std::vector<std::vector<std::string>> keys;   // the keys of each open object
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
+        depth >= max_json_depth)
+      throw UsageError(path + ": nested deeper than " + std::to_string(max_json_depth) + " levels");
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      for (const auto& seen : keys.back())
+        if (seen == k) throw UsageError(path + ": key '" + k + "' appears twice in one object");
+      keys.back().push_back(k);
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
   } catch (const json::exception& e) {
     throw UsageError(path + ": not valid JSON (" + std::string(e.what()) + ")");
   }
 }
 
+namespace {
+
 }  // namespace
 
 ModelFile read_model_file(const std::string& path,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
-  json j = load(path);
+  json j = read_json_file(path);
   only_keys(j, path, "", {"name", "mass", "stiffness", "damping", "rayleigh", "contacts", "forcing", "harmonics",
                           "samples", "omega", "output", "solver"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
@@ -144,9 +176,13 @@ ModelFile read_model_file(const std::string& path,
     if (!j.contains(k)) fail(path, k, "is missing");
   ModelFile m;
   m.resolved = j;
+  if (j.contains("name") && !j["name"].is_string()) fail(path, "name", "must be a text in quotes");
   m.name = j.value("name", std::string("model"));
   if (!j["mass"].is_array() || j["mass"].empty()) fail(path, "mass", "must be a non-empty list of rows");
   const int n = int(j["mass"].size());
+  if (max_harmonics(n) < 1)
+    fail(path, "mass", "has " + std::to_string(n) + " DOFs: too many for any number of harmonics (at most " +
+                           std::to_string(max_hb_unknowns / 3) + " DOFs)");
   LinearSystem& s = m.system;
   s.M = matrix(j["mass"], path, "mass", n);
   s.K = matrix(j["stiffness"], path, "stiffness", n);
