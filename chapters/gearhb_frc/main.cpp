@@ -15,7 +15,7 @@
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
+#include <stdexcept>
 #include <string>
 
 #include "gearhb/app/model_file.hpp"
@@ -99,15 +99,15 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
   run.say(model_.name + ": " + c.branch.summary());
-  if (!c.complete) run.say("INCOMPLETE branch, points so far written: " + c.failure);
+  if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
   run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
   run.write("bifurcations.csv", bifurcation_table(c));
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   const ResponseEvaluator ev(hb, model_.output);
-  double peak = -1e300;
+  double peak = ev.summarize(c.branch.points.front().X).x_max;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
   KeyNumbers& key = run.key_numbers();
-  key.add("complete", c.complete ? 1.0 : 0.0, "-");
+  key.add("complete", 1.0, "-");
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");
@@ -116,8 +116,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
   const std::string script = std::string(GEARHB_FIGURES_DIR) + "/frc.py";
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
-  if (std::string(GEARHB_FIGURES_DIR).empty() || std::system(cmd.c_str()) != 0)
+  if (std::string(GEARHB_FIGURES_DIR).empty() || !run_program_quietly({"/usr/bin/python3", script, run.staging_path()}))
     run.say("frc.png not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
 }
 
