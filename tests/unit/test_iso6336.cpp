@@ -20,7 +20,7 @@
 //    sum of shifts that gives exactly 500 mm is 0.14522 (the pinion shift ISO/TR 6336-30
 //    prints in its 2022 edition). We use the given a_w (as the TR does).
 //  * tip diameters: with d_a = d + 2 m_n (1 + x) unrounded (159.66011 / 872.35480 mm)
-//    eps_alpha = 1.549342, which moves c_gamma_alpha by +1.2e-4 relative; with the tip
+//    eps_alpha = 1.549342, which moves c_gamma_alpha by +1.34e-4 relative; with the tip
 //    diameters rounded to 0.01 mm as a drawing gives them (159.66 / 872.35 mm)
 //    eps_alpha = 1.549090, the implied value. So the example's eps_alpha is the one of the
 //    rounded tip diameters, and the check below uses them.
