@@ -219,3 +219,16 @@ TEST(PotentialEnergy, RossTestGearCrossCode) {
     EXPECT_LT(k, 1.1 * 409.7e6);
   }
 }
+
+TEST(PotentialEnergy, LoadAngleAndFilletLengthsAtThePitchPoint) {
+  // Thesis gear (x = 0) loaded on the pitch circle: the contact point sits pi/(2z) = 1.8 deg
+  // off the centre line, so alpha_m = 20 - 1.8 = 18.2 deg; the line of action cuts the centre
+  // line at 75 cos(1.8 deg) - 75 sin(1.8 deg) tan(18.2 deg) = 74.188442 mm, u_f = that - 71.25
+  // = 2.938442 mm; S_f = 2 rf theta_f = 142.5 mm * 0.0602575928 = 8.586707 mm (hand computed).
+  PeGear g;
+  g.bore_radius = 0.025;
+  const PeToothCompliance p = pe_tooth_compliance(g, 0.075);
+  EXPECT_NEAR(p.load_angle / deg, 18.2, 1e-12);
+  EXPECT_NEAR(p.u_f, 2.938442e-3, 1e-9);
+  EXPECT_NEAR(p.S_f, 8.586707e-3, 1e-9);
+}

@@ -34,7 +34,7 @@
 //     1/k_s = int_root^x_c 1.2 cos^2(alpha_m) / (G A(x)) dx          (1.2 = 1/kappa, kappa = 5/6)
 //     1/k_a = int_root^x_c sin^2(alpha_m) / (E' A(x)) dx
 // D. C. H. Yang, J. Y. Lin, J. Mech. Transm. Autom. Des. 109 (1987) 189-196 (bending,
-// Hertz); X. Tian, MSc thesis, Univ. of Alberta (2004) (shear, axial compression);
+// axial compression, Hertz); X. Tian, MSc thesis, Univ. of Alberta (2004) (shear added);
 // F. Chaari, T. Fakhfakh, M. Haddar, Eur. J. Mech. A/Solids 28 (2009) 461-468 (the same
 // integrals with the fillet foundation). The integrals are taken by Gauss-Legendre
 // quadrature (GSL glfixed) on each piece of the tooth, in the variable a on the involute
