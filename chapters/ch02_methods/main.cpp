@@ -596,7 +596,7 @@ void Methods::hill_vs_floquet(Run& run) const {
           const MatrixXd J = linear_periodic_jacobian(one, zero, zero, one, eq.coefficients(a, q, kHillH[h]), eq.omega, kHillH[h]);
           const bool hs = hill_stability(J, one, zero, eq.omega, kHillH[h]).stable;
           disagree[h] += hs != fl;
-          row.push_back(long(hs));
+          row.emplace_back(std::in_place_type<long>, long(hs));
         }
         ++points;
         t.add_row(row);

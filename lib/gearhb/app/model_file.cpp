@@ -266,7 +266,7 @@ std::string model_file_help() {
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"
          "  unknowns: densely when the contacts touch every DOF (1 DOF: about 0.15 s a point at H = 255,\n"
-         "  0.5 s at H = 511, 4 s at H = 1023, 35 s at H = 2047 on 2 cores), otherwise H+1 blocks of\n"
+         "  0.5 s at H = 511, 4 s at H = 1023, 40 s at H = 2047 on 2 cores), otherwise H+1 blocks of\n"
          "  2n x 2n and the contact coordinates (n = 200, H = 5, one contact: about 70 ms a point). The\n"
          "  number of points grows with the resonances in the range.\n";
 }
