@@ -150,39 +150,62 @@ TEST(PairSte, DifferentGearsOnePairZone) {
   EXPECT_GT(single, 5);
 }
 
-// Tip relief physics (Harris 1958; GEARS.md §3): a long linear relief on both gears
-// (start at the lowest point of single contact: relief length = pb) whose amount is
-// the single-pair deflection at a design torque flattens the STE there: its
-// peak-to-peak falls well below the unmodified one, and over torque (the Harris map)
-// the peak-to-peak is smallest near the design torque. The Hertz approach must take
-// part in closing the reliefs (`consistent`): in the thesis' equal-split reading the
-// Hertz term depends only on how many pairs carry load, so a relief sized to the
-// whole deflection would be 7 times too large for the elastic gap closure it sees.
-TEST(PairSte, LongReliefFlattensTheSteAtTheDesignTorque) {
+// Tip relief physics (Harris 1958; GEARS.md §3). Linear theory (linear pair
+// springs k, single-pair deflection delta = F/k at the design load, relief on both
+// gears, R(s) the sum of both reliefs at a contact point, eps the contact ratio):
+// two pairs share with X = (R(s) + R(s + pb) + delta) / 2, one pair X = R(s) + delta.
+//  * short relief (each from the highest point of single contact to its tip, length
+//    (eps - 1) pb): R(s) + R(s + pb) = Ca in the two-pair zones, R = 0 in the one-pair
+//    zone, so Ca = delta makes X constant: the STE is flat at the design load;
+//  * long relief (from the lowest point of single contact, length pb): R = Ca (2 - eps)
+//    in the one-pair zone and R(s) + R(s + pb) = Ca (3 - eps), flat when
+//    Ca (eps - 1) = delta: with Ca = delta(T_d) the flat load is where
+//    delta(T) = (eps - 1) delta(T_d), T ~ (eps - 1) T_d = 0.755 T_d for the thesis gear.
+// The Hertz approach must take part in closing the reliefs (`consistent`): in the
+// thesis' equal-split reading the Hertz term depends only on how many pairs carry
+// load. Here: the Palmgren law (F^0.9) and the fused/cantilever stiffnesses are not
+// linear springs, so the minimum is expected near, not at, the linear prediction.
+namespace {
+double ptp(const PairSteModel& mm, double T) {
+  const auto v = ste_of(pair_ste(mm, mesh_phases(mm, 64), T));
+  return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+}
+double harris_minimum(const PairSteModel& mm) {
+  const auto phases = mesh_phases(mm, 64);
+  double best = 1e9, at = 0;
+  for (double T = 50; T <= 500; T += 10) {
+    const auto v = ste_of(pair_ste(mm, phases, T));
+    const double p = *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
+    if (p < best) best = p, at = T;
+  }
+  return at;
+}
+}  // namespace
+
+TEST(PairSte, TipReliefHarrisMap) {
   PairSteModel m;
   m.pair_hertz = TwoPairHertz::consistent;
   const PathOfContact path = m.path();
+  const double eps = path.contact_ratio;
   // Single-pair deflection at 300 N m: one pair at the pitch point C (elastic + Hertz).
-  const double F = m.force(300.0);
-  const double design = single_pair_ste(SteModel(), tooth_beam(SteModel()), path.AC, F);
+  const double design = single_pair_ste(m, path.AC, 300.0);
   EXPECT_NEAR(design * 1e6, 13.9165, 1e-3);   // the amount of thesis_pair_relief.json
-  for (TipRelief* r : {&m.relief1, &m.relief2})
+  EXPECT_NEAR(design, single_pair_ste(SteModel(), tooth_beam(SteModel()), path.AC, m.force(300.0)), 1e-12 * design);
+  PairSteModel plain = m, longr = m, shortr = m;
+  for (TipRelief* r : {&longr.relief1, &longr.relief2})
     *r = tip_relief(m.gear1, design, ReliefStart::length, path.base_pitch, ReliefShape::linear);
-  PairSteModel plain;
-  plain.pair_hertz = TwoPairHertz::consistent;
-  auto ptp = [](const PairSteModel& mm, double T) {
-    const auto v = ste_of(pair_ste(mm, mesh_phases(mm, 64), T));
-    return *std::max_element(v.begin(), v.end()) - *std::min_element(v.begin(), v.end());
-  };
-  const double relieved = ptp(m, 300.0), unmodified = ptp(plain, 300.0);
-  EXPECT_LT(relieved, 0.3 * unmodified);
-  // Harris map: the minimum over 50..500 N m lies within 25 % of 300 N m, and the
-  // relief costs at low torque (there the relief itself is the transmission error).
-  double best = 1e9, at = 0;
-  for (double T = 50; T <= 500; T += 25) {
-    const double p = ptp(m, T);
-    if (p < best) best = p, at = T;
-  }
-  EXPECT_NEAR(at, 300.0, 75.0);
-  EXPECT_GT(ptp(m, 50.0), ptp(plain, 50.0));
+  for (TipRelief* r : {&shortr.relief1, &shortr.relief2})
+    *r = tip_relief(m.gear1, design, ReliefStart::length, path.AE - path.base_pitch, ReliefShape::linear);
+  // At the design torque both reliefs cut the peak-to-peak well below the unmodified one.
+  EXPECT_LT(ptp(longr, 300.0), 0.3 * ptp(plain, 300.0));
+  EXPECT_LT(ptp(shortr, 300.0), 0.3 * ptp(plain, 300.0));
+  // Harris map minima: short relief near T_d, long relief near (eps - 1) T_d.
+  EXPECT_NEAR(harris_minimum(shortr), 300.0, 0.15 * 300.0);
+  EXPECT_NEAR(harris_minimum(longr), (eps - 1) * 300.0, 0.15 * (eps - 1) * 300.0);
+  // Long relief sized by the linear rule Ca = delta / (eps - 1): minimum near T_d again.
+  PairSteModel sized = longr;
+  sized.relief1.amount = sized.relief2.amount = design / (eps - 1);
+  EXPECT_NEAR(harris_minimum(sized), 300.0, 0.15 * 300.0);
+  // Below the design load the relief itself becomes the transmission error.
+  EXPECT_GT(ptp(longr, 50.0), ptp(plain, 50.0));
 }

@@ -75,6 +75,10 @@ double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam
   return G.inverse()(0, 0);
 }
 
+double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2) {
+  return 1.0 / (tooth_flexibility(driving, a1)(0, 0) + tooth_flexibility(driven, a2)(0, 0));
+}
+
 double single_pair_elastic(const SteModel& m, const ToothBeam& tooth, double s, double F) {
   const ContactRadii r = contact_radii(m.gear, m.gear, s);
   const double rf = m.gear.root_radius();
@@ -193,7 +197,7 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, c
   const PairStiffnessFn beams = [&](double r1, double r2, bool sharing) {
     const double a1 = r1 - rf1, a2 = r2 - rf2;
     if (sharing && m.pair_stiffness == PairStiffness::fused) return fused_pair_stiffness(t1, a1, t2, a2);
-    return 1.0 / (tooth_flexibility(t1, a1)(0, 0) + tooth_flexibility(t2, a2)(0, 0));
+    return cantilever_pair_stiffness(t1, a1, t2, a2);
   };
   const PairStiffnessFn& k = stiffness ? stiffness : beams;
   // A contact point from the radii on both gears; separation from both reliefs.
@@ -265,6 +269,19 @@ std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<Mesh
     out.push_back(std::move(p));
   }
   return out;
+}
+
+double single_pair_ste(const PairSteModel& m, double s, double torque) {
+  PairSteModel alone = m;
+  alone.relief1.amount = alone.relief2.amount = 0.0;
+  alone.positions_per_base_pitch = 0;
+  const int ne = alone.elements();
+  const ToothBeam t1 = tooth_beam(alone.gear1, alone.youngs_modulus1, ne, alone.thickness_at);
+  const ToothBeam t2 = tooth_beam(alone.gear2, alone.youngs_modulus2, ne, alone.thickness_at);
+  const PathOfContact path = alone.path();
+  const ContactRadii r = contact_radii(alone.gear1, alone.gear2, path, s);
+  const double k = cantilever_pair_stiffness(t1, r.r1 - alone.gear1.root_radius(), t2, r.r2 - alone.gear2.root_radius());
+  return share_load({{k, 0.0}}, alone.force(torque), alone.hertz, alone.pair_hertz, alone.contact_length()).ste;
 }
 
 double loaded_contact_ratio(const std::vector<PairStePoint>& cycle) {

@@ -57,6 +57,9 @@ Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a);
 // Stiffness V/X of the fused pair (driving tooth loaded at a1, driven at a2).
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2);
 double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2);
+// The two teeth as cantilevers in series (roots clamped, rotations free at the
+// contact): 1 / (G1_ww(a1) + G2_ww(a2)) [N/m] (ch. 7's one-pair model, §7.4).
+double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2);
 
 // One pair alone touching at the point s from A of the path of contact (0 <= s <= AE):
 // the deflections of both teeth (roots clamped) at their load heights under F [m],
@@ -158,6 +161,11 @@ struct PairStePoint {
 };
 // The STE over the phases for gear 1's torque T1 [N m].
 std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<MeshPhase>& phases, double torque);
+
+// One pair alone touching at s from A (no relief, no neighbour): its STE [m] under
+// gear 1's torque T1 (the one-pair stiffness of the model's reading + its Hertz):
+// at the pitch point (s = AC) the "single-pair deflection" that sizes a Harris relief.
+double single_pair_ste(const PairSteModel& m, double s, double torque);
 
 // Loaded contact ratio: the mean number of loaded pairs over the phases (1 + the
 // fraction of the cycle with two pairs loaded when at most two touch).
