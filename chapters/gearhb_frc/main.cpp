@@ -15,7 +15,6 @@
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <string>
 
 #include "gearhb/app/model_file.hpp"
@@ -50,12 +49,7 @@ class FrequencyResponseFromFile {
 };
 
 FrequencyResponseFromFile::FrequencyResponseFromFile(Study& study) : study_(study) {
-  ParameterSet& P = study.parameters();
-  P.keep_unregistered();   // --set PATH=VALUE addresses the model file
-  P.group("program");
-  P.add("plot", &plot_, "-", "1 draw DIR/frc.png (needs python3-matplotlib), 0 data only", Range::between(0, 1));
-  study.positional("MODEL.json");
-  study.check([this](const Selection&) { read_model(); });
+  file_program(study, "MODEL.json", &plot_, [this] { read_model(); });
 }
 
 void FrequencyResponseFromFile::run(Run& run) {
@@ -115,10 +109,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
-  const std::string script = std::string(GEARHB_FIGURES_DIR) + "/frc.py";
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
-  if (std::string(GEARHB_FIGURES_DIR).empty() || std::system(cmd.c_str()) != 0)
-    run.say("frc.png not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
+  draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
 
 }  // namespace

@@ -23,7 +23,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <numeric>
 #include <string>
 
@@ -66,12 +65,7 @@ class GearPairFromFile {
 };
 
 GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
-  ParameterSet& P = study.parameters();
-  P.keep_unregistered();   // --set PATH=VALUE addresses the gear file
-  P.group("program");
-  P.add("plot", &plot_, "-", "1 draw DIR/*.png (needs python3-matplotlib), 0 data only", Range::between(0, 1));
-  study.positional("GEAR.json");
-  study.check([this](const Selection&) { read_gear(); });
+  file_program(study, "GEAR.json", &plot_, [this] { read_gear(); });
 }
 
 void GearPairFromFile::run(Run& run) {
@@ -243,10 +237,7 @@ void GearPairFromFile::harris_map(Run& run) const {
 
 // Step 6: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
 void GearPairFromFile::draw(Run& run) const {
-  const std::string script = std::string(GEARHB_FIGURES_DIR) + "/gearhb_gear.py";
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
-  if (std::string(GEARHB_FIGURES_DIR).empty() || std::system(cmd.c_str()) != 0)
-    run.say("figures not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips them)");
+  draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/gearhb_gear.py", "the figures");
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "gearhb/app/study.hpp"
 
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -207,6 +208,21 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   std::printf("%s: done in %.1f s, data in %s\n", program_.c_str(), secs, p.out.c_str());
   return 0;
+}
+
+void file_program(Study& study, const std::string& what, int* plot, std::function<void()> read) {
+  ParameterSet& P = study.parameters();
+  P.keep_unregistered();   // --set PATH=VALUE addresses the file
+  P.group("program");
+  P.add("plot", plot, "-", "1 draw the figures into DIR (needs python3-matplotlib), 0 data only", Range::between(0, 1));
+  study.positional(what);
+  study.check([read = std::move(read)](const Selection&) { read(); });
+}
+
+void draw_with_script(const Run& run, const std::string& script, const std::string& what) {
+  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
+  if (script.empty() || std::system(cmd.c_str()) != 0)
+    run.say(what + " not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
 }
 
 }  // namespace gearhb
