@@ -106,7 +106,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     G.profile_shift = r.optional(g, w, "x", 0.0, -1.0, 2.0, "[-1, 2]");
     G.face_width = r.number(g, w, "b", 1e-4, 10.0, "[1e-4, 10] m");
     *E[i] = r.number(g, w, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
-    f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5) ");
+    f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
     f.gear[i].inertia = r.optional(g, w, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
     f.gear[i].rim_radius = r.optional(g, w, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
@@ -157,8 +157,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
           : 0;
   if (f.pair.positions_per_base_pitch == 1) fail_key(path, "model.positions_per_base_pitch", "must be 0 or in [2, 128]");
   f.pair.tooth_elements =
-      model.contains("tooth_elements") ? json_whole(model["tooth_elements"], path, "model.tooth_elements", 0, 256) : 0;
-  if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 256]");
+      model.contains("tooth_elements") ? json_whole(model["tooth_elements"], path, "model.tooth_elements", 0, 64) : 0;
+  if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 64]");
   f.pair.thickness_at = ThicknessAt(r.choice(model, "model", "thickness_at", {"root_node", "midpoint", "tip_node"}, 0));
   f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"}, 2));
   f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 0));
@@ -178,7 +178,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   const GeometryProblem problem = gear_pair_problem(f.pair.gear1, f.pair.gear2, p, f.pair.relief1, f.pair.relief2);
   if (!problem.key.empty()) fail_key(path, problem.key, problem.why);
   const int ne = f.pair.elements();
-  if (ne < 2 || ne > 256) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..256");
+  if (ne < 2 || ne > 64) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..64");
   const int P = f.pair.positions_per_base_pitch;
   if (P > 0) {
     if (f.pair.gear1.teeth != f.pair.gear2.teeth || f.pair.gear1.profile_shift != f.pair.gear2.profile_shift ||
