@@ -33,50 +33,68 @@ std::pair<int, double> locate(const ToothBeam& t, double a) {
   return {e, (a - t.x[e]) / (t.x[e + 1] - t.x[e])};
 }
 
-// Nodal (w, theta) of the element e for a cantilever loaded by the nodal loads
-// `load` (4 values on the element's DOFs).
-Eigen::Vector4d loaded_element(const ToothBeam& t, int e, const Eigen::Vector4d& load) {
-  BeamModel m;
-  const int b = m.add_beam(t.x, t.EI);
-  m.clamp(m.node(b, 0));
-  m.add_force(m.node(b, e), load[0]);
-  m.add_moment(m.node(b, e), load[1]);
-  m.add_force(m.node(b, e + 1), load[2]);
-  m.add_moment(m.node(b, e + 1), load[3]);
-  const BeamModel::Solution s = m.solve();
-  const int n1 = m.node(b, e), n2 = m.node(b, e + 1);
-  return {s.Q[BeamModel::w_dof(n1)], s.Q[BeamModel::theta_dof(n1)], s.Q[BeamModel::w_dof(n2)],
-          s.Q[BeamModel::theta_dof(n2)]};
-}
-
 }  // namespace
 
-Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a) {
+ToothCompliance::ToothCompliance(const ToothBeam& tooth) : tooth_(tooth) {
   if (tooth.x.size() < 2) throw std::invalid_argument("tooth_flexibility: the beam needs an element");
+  BeamModel m;
+  m.add_beam(tooth.x, tooth.EI);
+  const Eigen::MatrixXd K = m.stiffness();
+  const int n = int(K.rows()) - 2;   // root node clamped: its w and theta removed
+  ldlt_.compute(K.bottomRightCorner(n, n));
+  if (ldlt_.info() != Eigen::Success) throw std::runtime_error("tooth_flexibility: the cantilever is singular");
+}
+
+Eigen::Matrix2d ToothCompliance::at(double a) const {
+  const ToothBeam& tooth = tooth_;
   if (!(a > 0.0) || a > tooth.x.back() * (1 + 1e-12))
     throw std::invalid_argument("tooth_flexibility: load height " + std::to_string(a) +
                                 " m is not on the tooth (0, " + std::to_string(tooth.x.back()) + "]");
   const auto [e, xi] = locate(tooth, a);
   const double L = tooth.x[e + 1] - tooth.x[e];
   const Eigen::Vector4d N = shape(xi, L), dN = shape_dx(xi, L);
-  const Eigen::Vector4d qF = loaded_element(tooth, e, N), qM = loaded_element(tooth, e, dN);
+  // Consistent nodal loads of a unit force (N) and a unit moment (N') on element e,
+  // DOFs 2e..2e+3 of the beam, 2 less in the clamped system.
+  const int n = int(ldlt_.rows());
+  Eigen::MatrixXd f = Eigen::MatrixXd::Zero(n, 2);
+  for (int k = 0; k < 4; ++k) {
+    const int d = 2 * e + k - 2;
+    if (d < 0) continue;
+    f(d, 0) = N[k];
+    f(d, 1) = dN[k];
+  }
+  const Eigen::MatrixXd q = ldlt_.solve(f);
+  Eigen::Matrix<double, 4, 2> qe = Eigen::Matrix<double, 4, 2>::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const int d = 2 * e + k - 2;
+    if (d >= 0) qe.row(k) = q.row(d);
+  }
   Eigen::Matrix2d G;
-  G << N.dot(qF), N.dot(qM), dN.dot(qF), dN.dot(qM);
+  G << N.dot(qe.col(0)), N.dot(qe.col(1)), dN.dot(qe.col(0)), dN.dot(qe.col(1));
   return G;
 }
+
+Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a) { return ToothCompliance(tooth).at(a); }
 
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2) {
   return fused_pair_stiffness(tooth, a1, tooth, a2);
 }
 
 double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2) {
+  return fused_pair_stiffness(tooth_flexibility(driving, a1), tooth_flexibility(driven, a2));
+}
+
+double fused_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2) {
   const Eigen::Matrix2d D = Eigen::Vector2d(1.0, -1.0).asDiagonal();
-  const Eigen::Matrix2d G = tooth_flexibility(driving, a1) + D * tooth_flexibility(driven, a2) * D;
-  return G.inverse()(0, 0);
+  return (G1 + D * G2 * D).inverse()(0, 0);
 }
 
 double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2) {
-  return 1.0 / (tooth_flexibility(driving, a1)(0, 0) + tooth_flexibility(driven, a2)(0, 0));
+  return cantilever_pair_stiffness(tooth_flexibility(driving, a1), tooth_flexibility(driven, a2));
+}
+
+double cantilever_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2) {
+  return 1.0 / (G1(0, 0) + G2(0, 0));
 }
 
 double single_pair_elastic(const SteModel& m, const ToothBeam& tooth, double s, double F) {
@@ -194,10 +212,11 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, c
   const PathOfContact path = m.path();
   const double rf1 = m.gear1.root_radius(), rf2 = m.gear2.root_radius();
   const double rb1 = m.gear1.base_radius(), pb = path.base_pitch;
+  const ToothCompliance c1(t1), c2(t2);   // each cantilever factorised once
   const PairStiffnessFn beams = [&](double r1, double r2, bool sharing) {
-    const double a1 = r1 - rf1, a2 = r2 - rf2;
-    if (sharing && m.pair_stiffness == PairStiffness::fused) return fused_pair_stiffness(t1, a1, t2, a2);
-    return cantilever_pair_stiffness(t1, a1, t2, a2);
+    const Eigen::Matrix2d G1 = c1.at(r1 - rf1), G2 = c2.at(r2 - rf2);
+    if (sharing && m.pair_stiffness == PairStiffness::fused) return fused_pair_stiffness(G1, G2);
+    return cantilever_pair_stiffness(G1, G2);
   };
   const PairStiffnessFn& k = stiffness ? stiffness : beams;
   // A contact point from the radii on both gears; separation from both reliefs.

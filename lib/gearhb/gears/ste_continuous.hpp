@@ -53,6 +53,17 @@ namespace gearhb {
 // Flexibility of a tooth (root clamped) at height a above the root circle:
 // [[w/F, w/M], [theta/F, theta/M]] by the FE with Hermite shape functions.
 Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a);
+// The same with the clamped cantilever's stiffness factorised once (LDLT), for many
+// load heights on one tooth: at(a) == tooth_flexibility(tooth, a) up to round-off.
+class ToothCompliance {
+ public:
+  explicit ToothCompliance(const ToothBeam& tooth);
+  Eigen::Matrix2d at(double a) const;
+
+ private:
+  ToothBeam tooth_;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+};
 
 // Stiffness V/X of the fused pair (driving tooth loaded at a1, driven at a2).
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2);
@@ -60,6 +71,9 @@ double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam
 // The two teeth as cantilevers in series (roots clamped, rotations free at the
 // contact): 1 / (G1_ww(a1) + G2_ww(a2)) [N/m] (ch. 7's one-pair model, §7.4).
 double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2);
+// Both from the two flexibilities at the load points.
+double fused_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2);
+double cantilever_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2);
 
 // One pair alone touching at the point s from A of the path of contact (0 <= s <= AE):
 // the deflections of both teeth (roots clamped) at their load heights under F [m],
