@@ -78,7 +78,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   for (std::size_t i = 0; i < j["torques"].size(); ++i) {
     const std::string key = "torques." + std::to_string(i);
     const double T = json_number(j["torques"][i], path, key);
-    if (!(T > 0.0 && T <= 1e7)) fail_key(path, key, "must be in (0, 1e7] N m");
+    if (!(T >= 1e-3 && T <= 1e7)) fail_key(path, key, "must be in [1e-3, 1e7] N m");
     f.torques.push_back(T);
   }
 
@@ -168,8 +168,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   const json harris = j.value("harris", json::object());
   only_keys(harris, path, "harris", {"from", "to", "points"});
   const double Tmax = *std::max_element(f.torques.begin(), f.torques.end());
-  f.harris_from = r.optional(harris, "harris", "from", Tmax / 6.0, 1e-6, 1e7, "(0, 1e7] N m");
-  f.harris_to = r.optional(harris, "harris", "to", 5.0 * Tmax / 3.0, 1e-6, 1e7, "(0, 1e7] N m");
+  f.harris_from = r.optional(harris, "harris", "from", std::max(1e-3, Tmax / 6.0), 1e-3, 1e7, "[1e-3, 1e7] N m");
+  f.harris_to = r.optional(harris, "harris", "to", 5.0 * Tmax / 3.0, 1e-3, 1e7, "[1e-3, 1e7] N m");
   f.harris_points = harris.contains("points") ? json_whole(harris["points"], path, "harris.points", 2, 200) : 19;
   if (!(f.harris_to > f.harris_from)) fail_key(path, "harris.to", "must exceed harris.from");
 
@@ -203,7 +203,7 @@ std::string gear_file_help() {
          "  centre_distance              a [m]; 0 or absent: from the shifts,\n"
          "                               inv(alpha_w) = inv(alpha) + 2 tan(alpha) (x1 + x2)/(z1 + z2)\n"
          "  backlash                     normal backlash j_n [m] (recorded; the STE is computed without)\n"
-         "  torques                      list of 1..16 driver torques T1 [N m]\n"
+         "  torques                      list of 1..16 driver torques T1 [N m], each in [1e-3, 1e7]\n"
          "  gears[i].z                   teeth (whole, 5..1000); i = 0 driver, 1 driven\n"
          "  gears[i].x                   profile shift coefficient (default 0, in [-1, 2])\n"
          "  gears[i].b                   face width [m]\n"
