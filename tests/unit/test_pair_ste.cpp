@@ -209,3 +209,63 @@ TEST(PairSte, TipReliefHarrisMap) {
   // Below the design load the relief itself becomes the transmission error.
   EXPECT_GT(ptp(longr, 50.0), ptp(plain, 50.0));
 }
+
+// The seam for another tooth model: a PairStiffnessFn replaces the beams. With a
+// constant pair stiffness k and no Hertz, the STE is F / (n k) with n the pairs on
+// the path (no relief): exactly, in every zone, also where three pairs touch
+// (a long-addendum pair, eps_alpha > 2).
+TEST(PairSte, StiffnessSeamAndThreePairs) {
+  PairSteModel m;
+  for (GearGeometry* g : {&m.gear1, &m.gear2}) {
+    g->addendum = 1.3 * g->module;
+    g->dedendum = 1.55 * g->module;
+  }
+  m.hertz = HertzCount::none;
+  const double eps = m.path().contact_ratio;
+  ASSERT_GT(eps, 2.0);
+  const double k = 3e8;
+  int calls = 0;
+  const PairStiffnessFn constant = [&](double r1, double r2, bool) {
+    ++calls;
+    EXPECT_GE(r1, m.gear1.base_radius());
+    EXPECT_LE(r2, m.gear2.tip_radius() * (1 + 1e-12));
+    return k;
+  };
+  const auto phases = mesh_phases(m, 64, constant);
+  EXPECT_GT(calls, 0);
+  const double F = m.force(300.0);
+  int three = 0;
+  for (const auto& p : pair_ste(m, phases, 300.0)) {
+    const int n = int(p.mesh.pairs.size());
+    three += n == 3;
+    EXPECT_EQ(p.loaded, n);
+    EXPECT_NEAR(p.ste, F / (n * k), 1e-15 * F / k);
+  }
+  // Three pairs on the path for a fraction eps - 2 of the cycle.
+  EXPECT_NEAR(three / 64.0, eps - 2.0, 1.0 / 64.0);
+}
+
+// Below the base circle the beam keeps s(rb) (FZG type C pinion: rf = 31.19 mm < rb =
+// 33.83 mm); above it the involute s(r) of the shifted gear.
+TEST(PairSte, ToothBeamBelowTheBaseCircle) {
+  GearGeometry g;
+  g.module = 4.5e-3;
+  g.teeth = 16;
+  g.addendum = 4.5e-3;
+  g.dedendum = 1.25 * 4.5e-3;
+  g.face_width = 14e-3;
+  g.profile_shift = 0.1817;
+  ASSERT_LT(g.root_radius(), g.base_radius());
+  const ToothBeam t = tooth_beam(g, 206e9, 14, ThicknessAt::element_root_node);
+  int below = 0;
+  for (std::size_t e = 0; e < t.s.size(); ++e) {
+    const double r = g.root_radius() + t.x[e];
+    if (r < g.base_radius()) {
+      ++below;
+      EXPECT_DOUBLE_EQ(t.s[e], tooth_thickness(g, g.base_radius()));
+    } else {
+      EXPECT_DOUBLE_EQ(t.s[e], tooth_thickness(g, r));
+    }
+  }
+  EXPECT_GE(below, 4);   // (rb - rf) / (h / 14) = 2.64 mm / 0.72 mm
+}
