@@ -57,6 +57,7 @@ def ste_figure(d_dir, params, kn, torques, ste):
     ax.set_xlabel("mesh phase [mesh cycles] (0: a pair enters at A)")
     ax.set_ylabel("static transmission error STE [um]")
     ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)   # from zero: the mean is part of the STE, the ripple is read against it
     title(ax, params, kn, "loaded STE over one mesh cycle")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
     save(fig, d_dir / "ste.png")
