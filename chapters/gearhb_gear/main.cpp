@@ -111,6 +111,7 @@ void GearPairFromFile::geometry(Run& run) const {
     }
   }
   key.add("undercut", undercut, "-");
+  key.add("normal_backlash_m", file_.backlash, "m");
   key.add("tooth_elements", m.elements(), "-");
   // The points of the path: distance from T1 and the radius on each gear.
   Table t({"point", "T1_distance_m", "s_from_A_m", "r1_m", "r2_m"});

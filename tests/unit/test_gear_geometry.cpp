@@ -271,3 +271,19 @@ TEST(Geometry, GearPairChecks) {
   // Centre distance pulled in: no tip clearance.
   EXPECT_EQ(gear_pair_problem(g, g, path_of_contact(g, g, 0.1485), {}, {}).key, "centre_distance");
 }
+
+// Normal backlash from tooth-thickness allowances. At the centre distance the shifts
+// imply, j_n = -(A_s1 + A_s2) cos(alpha) (the base-circle thickness reductions). Moving
+// the centre distance out by da opens it by 2 da sin(alpha_w) to first order (the
+// gears part along the line of action on both flanks: d j_n / da = 2 sin(alpha_w),
+// from d(inv alpha_w)/da = tan^2(alpha_w) d(alpha_w)/da and cos(alpha_w) = (rb1 + rb2)/a).
+TEST(Geometry, NormalBacklashFromAllowances) {
+  const GearGeometry g1 = fzg(16, 0.1817), g2 = fzg(24, 0.1715);
+  const PathOfContact p0 = path_of_contact(g1, g2);
+  const double c = std::cos(20 * M_PI / 180);
+  EXPECT_NEAR(normal_backlash(g1, g2, p0, -50e-6, -70e-6), 120e-6 * c, 1e-15);
+  EXPECT_NEAR(normal_backlash(g1, g2, p0, 0.0, 0.0), 0.0, 1e-15);
+  const double da = 1e-6;
+  const PathOfContact p1 = path_of_contact(g1, g2, p0.mesh.centre_distance + da);
+  EXPECT_NEAR(normal_backlash(g1, g2, p1, 0.0, 0.0), 2 * da * std::sin(p0.mesh.pressure_angle), 1e-3 * 2 * da);
+}

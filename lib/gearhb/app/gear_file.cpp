@@ -95,7 +95,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   for (int i = 0; i < 2; ++i) {
     const std::string w = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
-    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "tip_relief"});
+    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief"});
     GearGeometry& G = *geo[i];
     G.module = m;
     G.pressure_angle_deg = alpha;
@@ -109,6 +109,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
     f.gear[i].inertia = r.optional(g, w, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
     f.gear[i].rim_radius = r.optional(g, w, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
+    f.gear[i].thickness_allowance = r.optional(g, w, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
       fail_key(path, w + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
     if (G.root_radius() <= 0.0) fail_key(path, w + ".z", "gives no root circle (rf <= 0)");
@@ -177,6 +178,17 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   const PathOfContact p = f.pair.path();
   const GeometryProblem problem = gear_pair_problem(f.pair.gear1, f.pair.gear2, p, f.pair.relief1, f.pair.relief2);
   if (!problem.key.empty()) fail_key(path, problem.key, problem.why);
+  // Normal backlash: given, or from the tooth-thickness allowances at this centre distance.
+  const bool allowances = j["gears"][0].contains("thickness_allowance") || j["gears"][1].contains("thickness_allowance");
+  if (allowances && j.contains("backlash"))
+    fail_key(path, "backlash", "is given twice: give either backlash or the gears' thickness_allowance");
+  if (allowances) {
+    f.backlash = normal_backlash(f.pair.gear1, f.pair.gear2, p, f.gear[0].thickness_allowance,
+                                 f.gear[1].thickness_allowance);
+    if (!(f.backlash >= 0.0))
+      fail_key(path, "gears.0.thickness_allowance", "gives a negative normal backlash (" + mm(f.backlash) +
+                                                        ") at this centre distance: the teeth would interpenetrate");
+  }
   const int ne = f.pair.elements();
   if (ne < 2 || ne > 64) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..64");
   const int P = f.pair.positions_per_base_pitch;
@@ -202,7 +214,9 @@ std::string gear_file_help() {
          "  basic_rack.root_radius       rho_f* (default 0.38; used for the undercut limit)\n"
          "  centre_distance              a [m]; 0 or absent: from the shifts,\n"
          "                               inv(alpha_w) = inv(alpha) + 2 tan(alpha) (x1 + x2)/(z1 + z2)\n"
-         "  backlash                     normal backlash j_n [m] (recorded; the STE is computed without)\n"
+         "  backlash                     normal backlash j_n [m] (recorded; the STE is computed without), or:\n"
+         "  gears[i].thickness_allowance A_sn [m] <= 0 on the reference circle: j_n follows exactly,\n"
+         "                               m cos a [(z1+z2)(inv a_w - inv a) - 2 tan a (x1+x2)] - (A_sn1+A_sn2) cos a\n"
          "  torques                      list of 1..16 driver torques T1 [N m], each in [1e-3, 1e7]\n"
          "  gears[i].z                   teeth (whole, 5..1000); i = 0 driver, 1 driven\n"
          "  gears[i].x                   profile shift coefficient (default 0, in [-1, 2])\n"

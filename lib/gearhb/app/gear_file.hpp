@@ -10,7 +10,8 @@
 //     "basic_rack": {"addendum": 1.0, "dedendum": 1.25, "root_radius": 0.38},
 //                                              ha*, hf*, rho_f* (units of m)
 //     "centre_distance": 0.15,                 a [m]; absent or 0: the one the shifts imply
-//     "backlash": 0,                           normal backlash j_n [m] (recorded; the STE has none)
+//     "backlash": 0,                           normal backlash j_n [m] (recorded; the STE has none),
+//                                              or from "thickness_allowance" A_sn [m] per gear
 //     "torques": [100, 200, 300],              T1 [N m], one or several
 //     "gears": [ {                             gear 1 (driver), then gear 2
 //        "z": 50, "x": 0, "b": 0.02,           teeth, profile shift coefficient, face width [m]
@@ -44,6 +45,7 @@ struct GearFileGear {
   double poisson_ratio = 0.3;      // nu
   double inertia = 0.0;            // [kg m^2]
   double rim_radius = 0.0;         // [m], 0 = solid
+  double thickness_allowance = 0.0;   // A_sn [m] <= 0 on the reference circle
 };
 
 struct GearFile {
@@ -51,7 +53,7 @@ struct GearFile {
   PairSteModel pair;               // geometry, materials, reliefs, the model's reading
   GearFileGear gear[2];
   double dedendum_coefficient = 1.25, root_radius_coefficient = 0.38;   // hf*, rho_f*
-  double backlash = 0.0;           // j_n [m]
+  double backlash = 0.0;           // j_n [m], given or from the thickness allowances
   std::vector<double> torques;     // T1 [N m]
   int phases = 64;                 // phases per mesh cycle (continuous reading)
   double harris_from = 0, harris_to = 0;   // [N m]

@@ -152,6 +152,15 @@ std::string num(double v) {
 }
 }  // namespace
 
+double normal_backlash(const GearGeometry& g1, const GearGeometry& g2, const PathOfContact& path, double A1,
+                       double A2) {
+  const double a = g1.pressure_angle_rad(), aw = path.mesh.pressure_angle, m = g1.module;
+  return m * std::cos(a) *
+             (double(g1.teeth + g2.teeth) * (involute(aw) - involute(a)) -
+              2.0 * std::tan(a) * (g1.profile_shift + g2.profile_shift)) -
+         (A1 + A2) * std::cos(a);
+}
+
 double undercut_limit_teeth(double dedendum_coefficient, double root_radius_coefficient, double profile_shift,
                             double pressure_angle_deg) {
   const double a = pressure_angle_deg * M_PI / 180.0, s = std::sin(a);

@@ -110,6 +110,18 @@ ContactRadii contact_radii(const GearGeometry& g1, const GearGeometry& g2, doubl
 ContactRadii contact_radii(const GearGeometry& g1, const GearGeometry& g2, const PathOfContact& path,
                            double s_from_A);
 
+// Normal backlash (along the line of action) of two gears at the pair's centre
+// distance, from the tooth-thickness allowances A_s1, A_s2 on the reference circles
+// (<= 0: thinner teeth; DIN 3967 / ISO 21771 vocabulary). Exact for involutes: with
+// s_i = m (pi/2 + 2 x_i tan alpha) + A_si, the space left on the operating pitch circle
+// p_w - s_w1 - s_w2, times cos(alpha_w), is
+//     j_n = m cos(alpha) [(z1 + z2)(inv alpha_w - inv alpha) - 2 tan(alpha)(x1 + x2)]
+//           - (A_s1 + A_s2) cos(alpha),
+// the bracket vanishing at the centre distance the shifts imply (then
+// j_n = -(A_s1 + A_s2) cos alpha). Negative: the teeth would interpenetrate.
+double normal_backlash(const GearGeometry& g1, const GearGeometry& g2, const PathOfContact& path,
+                       double thickness_allowance1, double thickness_allowance2);
+
 // Undercut by the generating rack (ISO 21771, Niemann & Winter §21.2): the rack's
 // straight flank reaches h* = hf* - rho_f* (1 - sin(alpha)) (in module units) below
 // the pitch line, so the involute is undercut when
