@@ -23,7 +23,10 @@ import subprocess
 import sys
 
 NASTY = ["0", "-1", "1e308", "-1e308", "1e-320", "nan", "inf", "-inf", "1e9", "-1e9", "0x10",
-         "1e400", "abc", "", " 1", "2147483648", "3.5", "1e-300", "-0", "+5", "1.", ".5", "5e"]
+         "1e400", "abc", "", " 1", "2147483648", "3.5", "1e-300", "-0", "+5", "1.", ".5", "5e",
+         "4.9e-324", "2.2250738585072014e-308", "1.7e308", "1\n2", "/dev/zero", "."]
+# Output folder names: every third run's holds shell metacharacters (nothing may run them).
+OUT_NAMES = ["run%03d", "run%03d o'; touch INJECTED; echo '", "run%03d $(touch INJECTED)"]
 
 
 def parameters(prog):
@@ -81,20 +84,21 @@ def main():
     params = file_numbers(a.file) if a.file else parameters(a.program)
     if not params:
         sys.exit("no parameters found in %s --help" % a.program)
-    work = pathlib.Path(a.work)
+    work = pathlib.Path(a.work).resolve()
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
     counts, failures = {}, []
     for i in range(a.runs):
-        out = work / ("run%03d" % i)
-        staging = work / (".run%03d.staging" % i)
+        name = OUT_NAMES[i % len(OUT_NAMES)] % i
+        out = work / name
+        staging = work / ("." + name + ".staging")
         sets = []
         for name, default in rng.sample(params, min(len(params), rng.randint(1, 3))):
             sets += ["--set", "%s=%s" % (name, value_for(rng, default))]
         head = [a.program, a.file, "--set", "plot=0"] if a.file else [a.program, "--case", "own"]
         cmd = head + ["--quiet", "--out", str(out)] + sets
         try:
-            p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout)
+            p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout, cwd=work)
         except subprocess.TimeoutExpired:
             counts["timeout"] = counts.get("timeout", 0) + 1
             if out.exists():
@@ -120,6 +124,8 @@ def main():
             failures.append("%s: exit status %d (signal or crash): %s" % (what, s, p.stderr.strip()[-300:]))
         if staging.exists():
             failures.append("%s: staging folder left behind" % what)
+        if list(work.rglob("INJECTED")) or pathlib.Path("INJECTED").exists():
+            failures.append("%s into %r: a command in the output path ran" % (what, name))
     print("%s: %d runs: %s" % (pathlib.Path(a.program).name, a.runs,
                                ", ".join("%s: %d" % (k, v) for k, v in sorted(counts.items(), key=str))))
     for f in failures:

@@ -103,7 +103,7 @@ class MassAgainstWall {
 MassAgainstWall::MassAgainstWall(Study& study) {
   ParameterSet& P = study.parameters();
   P.group("oscillator");
-  P.add("m", &osc_.m, "kg", "mass", Range::positive());
+  P.add("m", &osc_.m, "kg", "mass", Range::mass());
   P.add("c", &osc_.c, "N s/m", "viscous damping", Range::nonnegative());
   P.add("k", &osc_.k, "N/m", "spring to ground", Range::positive());
   P.add("kc", &osc_.kc, "N/m", "contact stiffness", Range::nonnegative());

@@ -120,7 +120,7 @@ class TwoMassesChapter {
 TwoMassesChapter::TwoMassesChapter(Study& study) {
   ParameterSet& P = study.parameters();
   P.group("two masses");
-  P.add("m", &sys_.m, "kg", "each mass", Range::positive());
+  P.add("m", &sys_.m, "kg", "each mass", Range::mass());
   P.add("k", &sys_.k, "N/m", "each support spring to ground", Range::positive());
   P.add("kc", &sys_.kc, "N/m", "contact stiffness on x1 - x2", Range::nonnegative());
   P.add("alpha", &sys_.alpha, "1/s", "Rayleigh damping, mass-proportional", Range::nonnegative());

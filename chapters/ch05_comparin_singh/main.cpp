@@ -316,8 +316,8 @@ class ComparinSingh {
 ComparinSingh::ComparinSingh(Study& study) {
   ParameterSet& P = study.parameters();
   P.group("impact pair");
-  P.add("m1", &pair_.m1, "kg", "mass 1 (carries Fm + Fp cos Wt)", Range::positive());
-  P.add("m2", &pair_.m2, "kg", "mass 2 (carries -Fm)", Range::positive());
+  P.add("m1", &pair_.m1, "kg", "mass 1 (carries Fm + Fp cos Wt)", Range::mass());
+  P.add("m2", &pair_.m2, "kg", "mass 2 (carries -Fm)", Range::mass());
   P.add("k", &pair_.k, "N/m", "linear spring between the masses", Range::positive());
   P.add("kc", &pair_.kc, "N/m", "contact stiffness", Range::nonnegative());
   P.add("c", &pair_.c, "N s/m", "viscous damper between the masses", Range::positive());

@@ -158,7 +158,7 @@ class GearPairChapter {
 
 // Physical bounds of the gear pair's data (SI units): wide enough for any gear, narrow
 // enough that M, K and the mesh terms stay finite in double precision.
-const Range kMass = Range::between(1e-9, 1e9);        // [kg], [kg m^2]
+const Range kMass = Range::mass();                     // [kg], [kg m^2]
 const Range kLength = Range::between(1e-6, 1e3);      // [m]
 const Range kStiffness = Range::between(1e-6, 1e15);  // [N/m], [N m/rad]
 

@@ -172,7 +172,7 @@ void GearResponse::check(const Selection& sel) {
       ParameterSet::require(!parametric || eh.minCoeff() > 0.0,
                             own_.ste_file + ": model=parametric needs the STE cut to H harmonics > 0 over the cycle");
     } catch (const SteFileError& e) {
-      throw UsageError(e.what());
+      throw UsageError("parameter 'ste_file': " + std::string(e.what()));
     }
   }
 }

@@ -15,6 +15,7 @@
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "gearhb/app/model_file.hpp"
@@ -93,15 +94,15 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
   run.say(model_.name + ": " + c.branch.summary());
-  if (!c.complete) run.say("INCOMPLETE branch, points so far written: " + c.failure);
+  if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
   run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
   run.write("bifurcations.csv", bifurcation_table(c));
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   const ResponseEvaluator ev(hb, model_.output);
-  double peak = -1e300;
+  double peak = ev.summarize(c.branch.points.front().X).x_max;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
   KeyNumbers& key = run.key_numbers();
-  key.add("complete", c.complete ? 1.0 : 0.0, "-");
+  key.add("complete", 1.0, "-");
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");

@@ -110,8 +110,8 @@ void ParameterSet::set(const std::string& assignment) {
   }
   const double v = parse_decimal(text, "parameter '" + key + "'");
   if (e->i) {
-    if (v != std::floor(v) || std::fabs(v) > 2e9)
-      throw UsageError("parameter '" + key + "': '" + text + "' is not a whole number");
+    if (v != std::floor(v)) throw UsageError("parameter '" + key + "': '" + text + "' is not a whole number");
+    if (std::fabs(v) > 2e9) throw UsageError("parameter '" + key + "': '" + text + "' is too large");
     *e->i = int(v);
   } else {
     *e->d = v;

@@ -35,6 +35,10 @@ struct Range {
   static Range nonnegative() { return {Kind::nonnegative}; }
   static Range at_least(double v) { return {Kind::at_least, v}; }
   static Range between(double a, double b) { return {Kind::between, a, b}; }
+  // A mass [kg] or polar inertia [kg m^2]: 1e-9 ... 1e9 holds every machine part and
+  // keeps a model's natural frequencies inside double precision (a denormal mass
+  // would make them inf).
+  static Range mass() { return between(1e-9, 1e9); }
   // Empty string when v is admissible, otherwise what is wrong ("must be > 0").
   std::string violation(double v) const;
 };

@@ -50,7 +50,7 @@ std::string mm(double v) {
 }  // namespace
 
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
-  json j = load_json_file(path);
+  json j = read_json_file(path);
   only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "basic_rack", "centre_distance", "backlash",
                           "torques", "gears", "model", "harris"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);

@@ -10,8 +10,8 @@ DteModel mesh_model(const GearMeshParameters& g) {
 
 void add_gear_mesh_parameters(ParameterSet& P, GearMeshParameters& g) {
   P.group("gear pair (thesis §8.1)");
-  P.add("I1", &g.I1, "kg m^2", "inertia of wheel 1", Range::positive());
-  P.add("I2", &g.I2, "kg m^2", "inertia of wheel 2", Range::positive());
+  P.add("I1", &g.I1, "kg m^2", "inertia of wheel 1", Range::mass());
+  P.add("I2", &g.I2, "kg m^2", "inertia of wheel 2", Range::mass());
   P.add("zeta", &g.zeta, "-", "damping ratio, c = 2 zeta sqrt(kc me)", Range::between(1e-4, 1.0));
   P.group("static transmission error (thesis ch. 7 model)");
   P.add("ste_samples", &g.ste_samples, "-", "phases per mesh cycle of the continuous STE", Range::between(16, 4096));

@@ -1,20 +1,41 @@
 #include "gearhb/app/json_file.hpp"
 
 #include <cmath>
-#include <fstream>
 #include <sstream>
 
 #include "gearhb/app/cli.hpp"
+#include "gearhb/core/text_file.hpp"
 
 namespace gearhb {
 
 using nlohmann::json;
 
-json load_json_file(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw UsageError(path + ": cannot be opened");
+json read_json_file(const std::string& path) {
+  std::string text;
   try {
-    return json::parse(in);
+    text = read_text_file(path);
+  } catch (const TextFileError& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+  // Refuse deep nesting while parsing (the parser itself is iterative, but copying or
+  // destroying a deeply nested value recurses) and duplicate keys (the last would win).
+  std::vector<std::vector<std::string>> keys;   // the keys of each open object
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
+        depth >= max_json_depth)
+      throw UsageError(path + ": nested deeper than " + std::to_string(max_json_depth) + " levels");
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      for (const auto& seen : keys.back())
+        if (seen == k) throw UsageError(path + ": key '" + k + "' appears twice in one object");
+      keys.back().push_back(k);
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
   } catch (const json::exception& e) {
     throw UsageError(path + ": not valid JSON (" + std::string(e.what()) + ")");
   }
@@ -46,6 +67,10 @@ double json_number(const json& j, const std::string& file, const std::string& ke
   if (!j.is_number()) fail_key(file, key, "must be a number");
   const double v = j.get<double>();
   if (!std::isfinite(v)) fail_key(file, key, "must be finite");
+  // Every quantity of a model in any consistent units lies far inside this; beyond
+  // it products of two entries leave double precision and the solver sees inf or 0.
+  if (v != 0.0 && (std::fabs(v) < 1e-150 || std::fabs(v) > 1e150))
+    fail_key(file, key, "must be 0 or of magnitude between 1e-150 and 1e150");
   return v;
 }
 

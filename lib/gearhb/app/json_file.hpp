@@ -10,8 +10,11 @@
 
 namespace gearhb {
 
-// Parse the file; "cannot be opened" / "not valid JSON" as a UsageError.
-nlohmann::json load_json_file(const std::string& path);
+// A JSON input file (a model file, a gear file): a regular file of at most 16 MiB,
+// nested at most max_json_depth levels, no key twice in one object. Throws
+// UsageError naming the path and what is wrong.
+constexpr int max_json_depth = 32;
+nlohmann::json read_json_file(const std::string& path);
 
 [[noreturn]] void fail_key(const std::string& file, const std::string& key, const std::string& why);
 
@@ -19,7 +22,8 @@ nlohmann::json load_json_file(const std::string& path);
 // index: `contacts.0.kc`, `gears.1.tip_relief.amount`); only numbers the file has.
 void apply_override(nlohmann::json& root, const std::string& file, const std::string& path, const std::string& text);
 
-// A finite number.
+// A finite number, 0 or of magnitude in [1e-150, 1e150] (beyond it products of two
+// entries leave double precision).
 double json_number(const nlohmann::json& j, const std::string& file, const std::string& key);
 // A whole number in [lo, hi].
 int json_whole(const nlohmann::json& j, const std::string& file, const std::string& key, int lo, int hi);

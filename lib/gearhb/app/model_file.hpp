@@ -34,6 +34,8 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "gearhb/app/json_file.hpp"   // read_json_file, max_json_depth
+
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {

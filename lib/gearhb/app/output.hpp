@@ -16,6 +16,11 @@ namespace gearhb {
 // Creates the parent folders. Throws std::runtime_error on I/O failure.
 void write_file_atomic(const std::string& path, const std::string& content);
 
+// Run a helper program (e.g. a figure script) with its arguments passed as they are:
+// no shell, so no character of a path can become a command. Its stdout and stderr go
+// to /dev/null. Returns true when it ran and exited with status 0.
+bool run_program_quietly(const std::vector<std::string>& argv);
+
 // A CSV table: named columns, rows of numbers or short strings.
 class Table {
  public:

@@ -6,7 +6,7 @@ int max_harmonics(int dofs) { return (max_hb_unknowns / (dofs > 0 ? dofs : 1) - 
 
 void add_solver_parameters(ParameterSet& params, SolverSettings& s, int dofs) {
   params.group("solver");
-  params.add("H", &s.H, "-", "number of harmonics", Range::between(1, max_harmonics(dofs)));
+  params.add("H", &s.H, "-", "number of harmonics (time per point grows as H^3: README 'Cost of a run')", Range::between(1, max_harmonics(dofs)));
   params.add("N", &s.N, "-", "AFT time samples per period (0 = 4(2H+1); else >= 4H+2)",
              Range::between(0, max_aft_samples));
   params.add("exact_contact", &s.exact_contact, "-", "1 exact projection of the contact law, 0 sampled AFT",

@@ -1,7 +1,13 @@
 #include "gearhb/app/study.hpp"
 
+#include <fcntl.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <iostream>
 #include <new>
@@ -135,25 +141,88 @@ Parsed parse(int argc, char** argv, ParameterSet& params, const std::vector<std:
   return p;
 }
 
-// The staging folder beside the output folder: ".<name>.staging".
-fs::path staging_for(const fs::path& out) {
-  fs::path abs = fs::absolute(out).lexically_normal();
-  if (abs.filename().empty()) abs = abs.parent_path();
-  if (abs.filename().empty() || abs == abs.root_path())
-    throw UsageError("--out '" + out.string() + "' does not name a folder");
-  return abs.parent_path() / ("." + abs.filename().string() + ".staging");
+// A message is one line: a control character of the user's input (a newline in a
+// value) is shown escaped, never printed.
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (const unsigned char c : message) {
+    if (c >= 0x20 && c != 0x7f) {
+      out.push_back(char(c));
+    } else if (c == '\n') {
+      out += "\\n";
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", unsigned(c));
+      out += buf;
+    }
+  }
+  return out;
 }
 
-// Move every staged file into the output folder (each a rename, atomic), then remove staging.
-void publish(const fs::path& staging, const fs::path& out) {
-  fs::create_directories(out);
-  for (const auto& entry : fs::recursive_directory_iterator(staging)) {
-    if (!entry.is_regular_file()) continue;
-    const fs::path target = out / fs::relative(entry.path(), staging);
-    fs::create_directories(target.parent_path());
-    fs::rename(entry.path(), target);
+// The output folder as an absolute, normalised path without a trailing separator.
+fs::path output_folder(const std::string& out) {
+  fs::path abs = fs::absolute(out).lexically_normal();
+  if (abs.filename().empty()) abs = abs.parent_path();
+  if (abs.filename().empty() || abs == abs.root_path() || abs.filename() == "." || abs.filename() == "..")
+    throw UsageError("--out '" + out + "' does not name a folder");
+  return abs;
+}
+
+// The staging folder beside the output folder: ".<name>.staging".
+fs::path staging_for(const fs::path& folder) {
+  return folder.parent_path() / ("." + folder.filename().string() + ".staging");
+}
+
+// DIR is replaced as a whole by a run, so it must be empty or hold an earlier run's
+// output (its key_numbers.json): a user's folder of other files is never swept away.
+void check_replaceable(const fs::path& folder, const std::string& out) {
+  std::error_code ec;
+  const auto status = fs::symlink_status(folder, ec);
+  if (ec || status.type() == fs::file_type::not_found) return;
+  if (status.type() != fs::file_type::directory)
+    throw UsageError("--out '" + out + "' is not a folder");
+  if (!fs::is_empty(folder, ec) && !fs::exists(folder / "key_numbers.json"))
+    throw UsageError("--out '" + out + "' holds files that are not a gearhb run's output (no key_numbers.json): "
+                     "choose an empty or new folder");
+}
+
+// Test hook (tests/publish_kill.sh): GEARHB_PUBLISH_KILL_AT=staged|swapped kills the
+// process with SIGKILL at that point of publish(), to show DIR is never half written.
+void kill_point(const char* where) {
+  const char* at = std::getenv("GEARHB_PUBLISH_KILL_AT");
+  if (at != nullptr && std::strcmp(at, where) == 0) std::raise(SIGKILL);
+}
+
+void sync_folder(const fs::path& folder) {
+  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
+  if (fd < 0) return;
+  ::fsync(fd);
+  ::close(fd);
+}
+
+// Publish the whole staging folder as DIR in one atomic step, so that DIR is always
+// exactly one run's complete output: rename it onto a DIR that does not exist, or
+// swap the two folders (Linux renameat2 RENAME_EXCHANGE) and remove the old output,
+// now in the staging folder's place. Where the file system cannot swap, DIR is moved
+// aside first (a kill between the two renames leaves no DIR, never a mixed one).
+void publish(const fs::path& staging, const fs::path& folder) {
+  sync_folder(staging);
+  kill_point("staged");
+  std::error_code ec;
+  if (!fs::exists(fs::symlink_status(folder, ec))) {
+    fs::rename(staging, folder);
+  } else if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) != 0) {
+    if (errno != EINVAL && errno != ENOSYS)
+      throw std::runtime_error("cannot publish " + folder.string() + ": " + std::strerror(errno));
+    const fs::path aside = folder.parent_path() / ("." + folder.filename().string() + ".old");
+    fs::remove_all(aside, ec);
+    fs::rename(folder, aside);
+    fs::rename(staging, folder);
+    fs::rename(aside, staging);
   }
-  fs::remove_all(staging);
+  sync_folder(folder.parent_path());
+  kill_point("swapped");
+  fs::remove_all(staging);   // the previous output
 }
 
 }  // namespace
@@ -161,7 +230,7 @@ void publish(const fs::path& staging, const fs::path& out) {
 int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   const std::string default_out = "build/data/" + program_;
   Parsed p;
-  fs::path staging;
+  fs::path folder, staging;
   try {
     p = parse(argc, argv, params_, labels_, default_out, positional_name_);
     positional_ = p.positional;
@@ -170,21 +239,20 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
       return 0;
     }
     if (checks_) checks_(p.selection);
-    staging = staging_for(p.out);
-    // The output folder must be writable: try the staging folder now (removed again).
+    folder = output_folder(p.out);
+    check_replaceable(folder, p.out);
+    staging = staging_for(folder);
+    // The output folder must be writable: make the staging folder now (a killed run's is removed).
     std::error_code ec;
     fs::remove_all(staging, ec);
+    fs::remove_all(folder.parent_path() / ("." + folder.filename().string() + ".old"), ec);
     fs::create_directories(staging, ec);
     if (ec) throw UsageError("--out '" + p.out + "': cannot write there (" + ec.message() + ")");
-    if (fs::exists(p.out) && !fs::is_directory(p.out)) {
-      fs::remove_all(staging, ec);
-      throw UsageError("--out '" + p.out + "' is a file, not a folder");
-    }
   } catch (const UsageError& e) {
-    std::cerr << program_ << ": error: " << e.what() << "\n";
+    std::cerr << program_ << ": error: " << one_line(e.what()) << "\n";
     return 2;
   } catch (const std::exception& e) {   // a check that failed for another reason
-    std::cerr << program_ << ": failed: " << e.what() << "\n";
+    std::cerr << program_ << ": failed: " << one_line(e.what()) << "\n";
     return 1;
   }
   const auto t0 = std::chrono::steady_clock::now();
@@ -195,14 +263,14 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
     steps(run);
     run.key_numbers().write((staging / "key_numbers.json").string());
     run.write("timings.csv", run.timings_);
-    publish(staging, p.out);
+    publish(staging, folder);
   } catch (const std::exception& e) {
     std::error_code ec;
     fs::remove_all(staging, ec);
     const bool usage = dynamic_cast<const UsageError*>(&e) != nullptr;
     const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
     std::cerr << program_ << (usage ? ": error: " : ": failed: ")
-              << (memory ? "out of memory (reduce H, N or the number of points)" : e.what()) << "\n";
+              << (memory ? "out of memory (reduce H, N or the number of points)" : one_line(e.what())) << "\n";
     return usage ? 2 : 1;
   }
   const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -220,8 +288,7 @@ void file_program(Study& study, const std::string& what, int* plot, std::functio
 }
 
 void draw_with_script(const Run& run, const std::string& script, const std::string& what) {
-  const std::string cmd = "/usr/bin/python3 '" + script + "' '" + run.staging_path() + "' >/dev/null 2>&1";
-  if (script.empty() || std::system(cmd.c_str()) != 0)
+  if (script.empty() || !run_program_quietly({"/usr/bin/python3", script, run.staging_path()}))
     run.say(what + " not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
 }
 

@@ -22,6 +22,11 @@ DteGear dte_gear(const std::vector<double>& ste, double torque, double r, double
   DteGear g;
   g.F0 = torque / r;
   g.me = equivalent_mass(I1, I2, r, r);
+  for (std::size_t j = 0; j < ste.size(); ++j)
+    if (!(ste[j] > 0.0))
+      throw std::runtime_error("the static transmission error is " + std::to_string(ste[j] * 1e6) +
+                               " um at mesh phase " + std::to_string(double(j) / double(ste.size())) +
+                               ": the mesh stiffness F / STE does not exist (a backlash of 0 clips the STE to 0?)");
   g.kc = mean_stiffness(ste, g.F0);
   g.c = mesh_damping(zeta, g.kc, g.me);
   g.ste = periodic_fourier(ste, ste_harmonics);

@@ -1,9 +1,10 @@
 #include "gearhb/gears/ste_file.hpp"
 
+#include "gearhb/core/text_file.hpp"
+
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <sstream>
 
 namespace gearhb {
@@ -32,13 +33,17 @@ double number(const std::string& path, int line, const std::string& field, const
 }  // namespace
 
 SteFile read_ste_file(const std::string& path, int min_rows, bool require_positive) {
-  std::ifstream in(path);
-  if (!in) fail(path, 0, "cannot be opened");
+  std::vector<std::string> text_lines;
+  try {
+    text_lines = read_text_lines(path);
+  } catch (const TextFileError& e) {
+    fail(path, 0, e.what());
+  }
   SteFile f;
   std::vector<int> lines;
-  std::string text;
   bool header = false;
-  for (int line = 1; std::getline(in, text); ++line) {
+  for (int line = 1; line <= int(text_lines.size()); ++line) {
+    const std::string& text = text_lines[std::size_t(line - 1)];
     const std::string t = trim(text);
     if (t.empty() || t[0] == '#') continue;
     std::vector<std::string> fields;

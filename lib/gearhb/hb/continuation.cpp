@@ -256,6 +256,7 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
   double lo = 0.0, hi = 1.0, w = a.omega;
   while ((hi - lo) * (yb - ya).norm() * s.omega > opt.tolerance) {
     const double mid = 0.5 * (lo + hi);
+    if (!(mid > lo && mid < hi)) break;   // the chord's resolution in double precision (omega ~ 1e100)
     Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
     int iters = 0;
     double res = 0.0;

@@ -366,6 +366,9 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
     if (!dy.allFinite()) break;
     y += dy;
   }
+  if (ybest.size() == 0)   // the first residual was already not finite: no orbit to report
+    throw std::runtime_error("Floquet: the exact period map of the harmonic-balance orbit is not finite at omega = " +
+                             std::to_string(w) + " rad/s (a parameter far outside the model's scale?)");
   r.shooting_residual = best;
   r.x0 = ybest.head(n);
   r.v0 = ybest.tail(n);

@@ -138,7 +138,13 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   c.natural = opt.natural;
   c.stability = opt.stability;
   c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
-  if (!(c.scaling.x[0] >= 1e-150 && c.scaling.x[0] <= 1e150 && std::isfinite(c.scaling.residual))) {
+  if (!std::isfinite(c.scaling.residual)) {
+    std::ostringstream os;
+    os << "case " << label << ": the model's stiffness scale is " << c.scaling.residual
+       << " (a stiffness or contact stiffness that is not finite)";
+    throw std::invalid_argument(os.str());
+  }
+  if (!(c.scaling.x[0] >= 1e-150 && c.scaling.x[0] <= 1e150)) {
     std::ostringstream os;
     os << "case " << label << ": the model's characteristic displacement over the range is " << c.scaling.x[0]
        << " (loads or stiffnesses beyond double precision: the response must lie within 1e-150 ... 1e150)";
@@ -224,9 +230,8 @@ namespace {
 std::function<bool(const Eigen::VectorXd&)> state_predicate(const HarmonicBalance& hb,
                                                             ContactState not_this) {
   // The state does not depend on the plotted coordinate; 256 samples per period.
-  return [&hb, not_this](const Eigen::VectorXd& X) {
-    return ResponseEvaluator(hb, Eigen::VectorXd::Zero(hb.dofs()), 256).summarize(X).contact != not_this;
-  };
+  const auto ev = std::make_shared<const ResponseEvaluator>(hb, Eigen::VectorXd::Zero(hb.dofs()), 256);
+  return [ev, not_this](const Eigen::VectorXd& X) { return ev->summarize(X).contact != not_this; };
 }
 }  // namespace
 
