@@ -139,8 +139,8 @@ n["contact_ratio"]["note"] = ("ours 1.462446 at a = 91.5 mm; the published 1.462
 n.update(iso_numbers("fzg_c"))
 for k in ("iso6336_c_prime_th", "iso6336_c_prime", "iso6336_c_gamma_alpha"):
     n[k]["note"] = ("shifted gears: needs the q' shift terms as ISO 6336-1 Table 9 pairs them (C4 x1, C5 x1/zn1, "
-                    "C6 x2, C7 x2/zn2), fixed on branch issue20-pe (5f4444b); before that merge lib/iso6336.cpp "
-                    "pairs C4..C7 with the wrong variables and this check fails (ours was 39.70 for c'_th)")
+                    "C6 x2, C7 x2/zn2), fixed by issue20-pe (5f4444b); before it lib/iso6336.cpp paired C4..C7 with "
+                    "the wrong variables and this check failed (c'_th 39.70)")
 n.update(ste_numbers("fzg_c", [1, 2, 3]))
 write("fzg_c", "fzg_c.json", ["--set", "plot=0"], n)
 
@@ -153,8 +153,8 @@ for k, v in tr.items():
     n[k]["published_source"] = "ISO/TR 6336-30:2017 Example 01 (helical, beta = 15.8 deg)"
     n[k]["note"] = ("not comparable to the published helical value: this file is the spur pair beta = 0 (z, not "
                     "z_n = 18.905/114.543; no cos(beta); a from the shifts, 481.15 mm, not a_w = 500 mm; "
-                    "eps_alpha of the spur pair). The helical example itself is checked on branch issue20-pe. Shifted "
-                    "gear: needs the q' fix of issue20-pe (5f4444b), see fzg_c.")
+                    "eps_alpha of the spur pair). The helical example itself is checked by tests/unit/test_iso6336.cpp "
+                    "(issue20-pe). Shifted gear: needs the q' fix of issue20-pe (5f4444b), see fzg_c.")
 n.update(ste_numbers("iso_tr_6336_30_ex01", [1]))
 write("iso_tr_6336_30_ex01", "iso_tr_6336_30_ex01.json", ["--set", "plot=0"], n)
 print("wrote", sorted(p.name for p in OUT.glob("*.json")))

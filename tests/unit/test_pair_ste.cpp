@@ -8,6 +8,7 @@
 #include "gearhb/gears/gear_geometry.hpp"
 #include "gearhb/gears/hertz.hpp"
 #include "gearhb/gears/load_sharing.hpp"
+#include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 
@@ -268,4 +269,26 @@ TEST(PairSte, ToothBeamBelowTheBaseCircle) {
     }
   }
   EXPECT_GE(below, 4);   // (rb - rf) / (h / 14) = 2.64 mm / 0.72 mm
+}
+
+// The seam with the potential-energy method of issue20-pe (potential_energy.hpp): its
+// pair stiffness plugs in as the PairStiffnessFn unchanged; with Hertz left to that
+// function (model hertz = none) the one-pair STE is F / k_PE at the same contact radii.
+TEST(PairSte, PotentialEnergySeam) {
+  PairSteModel m;
+  m.hertz = HertzCount::none;
+  m.pair_stiffness = PairStiffness::cantilevers;
+  PeGear pe;   // the thesis gear in the PE vocabulary
+  pe.youngs_modulus = m.youngs_modulus1;
+  pe.bore_radius = 0.025;   // any bore inside Sainsot's fitted range (h_f = rf / r_int = 2.85)
+  const PairStiffnessFn k_pe = [&](double r1, double r2, bool) { return pe_pair_stiffness(pe, pe, r1, r2); };
+  const double F = m.force(300.0);
+  int single = 0;
+  for (const auto& p : pair_ste(m, mesh_phases(m, 64, k_pe), 300.0)) {
+    if (p.mesh.pairs.size() != 1) continue;
+    ++single;
+    const PairContact& c = p.mesh.pairs[0];
+    EXPECT_NEAR(p.ste, F / pe_pair_stiffness(pe, pe, c.r1, c.r2), 1e-14 * p.ste);
+  }
+  EXPECT_GT(single, 10);
 }
