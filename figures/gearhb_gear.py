@@ -77,6 +77,7 @@ def stiffness_figure(d_dir, params, kn, torques, ste):
     ax.set_xlabel("mesh phase [mesh cycles] (0: a pair enters at A)")
     ax.set_ylabel("mesh stiffness k = F / STE [MN/m]")
     ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)   # from zero: the note below sits under every curve, none is clipped
     title(ax, params, kn, "mesh stiffness over one mesh cycle")
     if any(g.get("tip_relief", {}).get("amount", 0) > 0 for g in params["gears"]):
         ax.text(0.01, 0.02, "with tip relief the STE includes the relief separations:\n"
