@@ -171,14 +171,14 @@ void GearPairFromFile::transmission_error(Run& run) const {
     key.add("ste_ptp_um_" + n, peak_to_peak(ste) * 1e6, "um");
     key.add("ste_mean_um_" + n, mean * 1e6, "um");
     key.add("mesh_stiffness_mean_N_per_m_" + n, mean_stiffness(ste, F), "N/m");
-    key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c), "-");
+    key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c, path), "-");
     key.add("single_pair_deflection_um_" + n, single_pair_ste(m, path.AC, T) * 1e6, "um");
     spectrum_columns.push_back("amplitude_um_" + n);
     spectra.push_back(periodic_fourier(ste, H));
     char line[160];
     std::snprintf(line, sizeof line, "T1 = %g N m: max STE %.4f um, peak-to-peak %.4f um, mean k %.2f MN/m, loaded contact ratio %.4f",
                   T, *std::max_element(ste.begin(), ste.end()) * 1e6, peak_to_peak(ste) * 1e6,
-                  mean_stiffness(ste, F) / 1e6, loaded_contact_ratio(c));
+                  mean_stiffness(ste, F) / 1e6, loaded_contact_ratio(c, path));
     run.say(line);
   }
   // Amplitude per mesh order k (order 0: the mean), sqrt(a_k^2 + b_k^2).
@@ -228,7 +228,7 @@ void GearPairFromFile::harris_map(Run& run) const {
     const double ptp = peak_to_peak(v);
     v.clear();
     for (const auto& p : pair_ste(plain, unmodified, T)) v.push_back(p.ste);
-    t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, loaded_contact_ratio(c)});
+    t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, loaded_contact_ratio(c, file_.pair.path())});
     if (ptp < best) best = ptp, at = T;
   }
   run.write("harris.csv", t);

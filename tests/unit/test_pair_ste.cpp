@@ -98,7 +98,9 @@ TEST(PairSte, ThesisGearOnChapter7Positions) {
   const auto v = ste_of(c);
   EXPECT_NEAR(*std::max_element(v.begin(), v.end()) * 1e6, 13.75284041, 1e-8 * 13.75);
   EXPECT_NEAR(mean_stiffness(v, m.force(300.0)) / 1e6, 473.2943169, 1e-8 * 473.3);
-  EXPECT_NEAR(loaded_contact_ratio(c), 1.75, 1e-15);   // 6 of 8 positions with two pairs
+  // No relief: every geometric pair carries load, so the loaded contact ratio is the
+  // geometric AE / pb (gear_geometry's closed form), exactly, even from 8 positions.
+  EXPECT_NEAR(loaded_contact_ratio(c, m.path()), m.path().contact_ratio, 1e-12);
 }
 
 // The continuous reading through the pair path is ch. 8's STE (ste_continuous is
@@ -113,8 +115,9 @@ TEST(PairSte, ThesisGearContinuousKeepsChapter8Numbers) {
   EXPECT_NEAR(mean_stiffness(v, m.force(300.0)) / 1e6, 470.97, 0.5e-2);
   const auto old = ste_values(ste_continuous(SteModel(), 300.0, 64));
   for (int j = 0; j < 64; ++j) EXPECT_DOUBLE_EQ(v[j], old[j]);
-  // Loaded contact ratio without relief = the sampled geometric one: 1 + 49/64.
-  EXPECT_NEAR(loaded_contact_ratio(c), 1.0 + 49.0 / 64.0, 1e-15);
+  // Loaded contact ratio without relief = the geometric one (1.754673, not the 1 + 49/64
+  // that counting loaded samples gives).
+  EXPECT_NEAR(loaded_contact_ratio(c, m.path()), m.path().contact_ratio, 1e-12);
 }
 
 // In the one-pair zone the STE is F (C1(a1) + C2(a2)) + n_H delta(F): with loads on
@@ -209,6 +212,21 @@ TEST(PairSte, TipReliefHarrisMap) {
   EXPECT_NEAR(harris_minimum(sized), 300.0, 0.15 * 300.0);
   // Below the design load the relief itself becomes the transmission error.
   EXPECT_GT(ptp(longr, 50.0), ptp(plain, 50.0));
+  // The loaded contact ratio from 64 phases (lift-off located between samples) against
+  // the mean number of loaded pairs counted over 8192 phases (error <= 2 / 8192): the
+  // relief shortens the loaded path at 100 N m; at 300 N m the deflection closes it.
+  for (double T : {100.0, 300.0}) {
+    const double fine = [&] {
+      double n = 0.0;
+      const auto c = pair_ste(longr, mesh_phases(longr, 8192), T);
+      for (const auto& p : c) n += p.loaded;
+      return n / double(c.size());
+    }();
+    EXPECT_NEAR(loaded_contact_ratio(pair_ste(longr, mesh_phases(longr, 64), T), path), fine, 2e-3) << T;
+    if (T < 200.0) {
+      EXPECT_LT(fine, eps - 0.3) << T;
+    }
+  }
 }
 
 // The seam for another tooth model: a PairStiffnessFn replaces the beams. With a

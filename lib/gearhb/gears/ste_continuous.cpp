@@ -303,11 +303,32 @@ double single_pair_ste(const PairSteModel& m, double s, double torque) {
   return share_load({{k, 0.0}}, alone.force(torque), alone.hertz, alone.pair_hertz, alone.contact_length()).ste;
 }
 
-double loaded_contact_ratio(const std::vector<PairStePoint>& cycle) {
-  if (cycle.empty()) return 0.0;
-  double sum = 0.0;
-  for (const auto& p : cycle) sum += p.loaded;
-  return sum / double(cycle.size());
+double loaded_contact_ratio(const std::vector<PairStePoint>& cycle, const PathOfContact& path) {
+  std::vector<std::pair<double, double>> sf;   // (s, force) of every pair at every phase
+  for (const auto& p : cycle)
+    for (const auto& c : p.mesh.pairs) sf.emplace_back(c.s, c.force);
+  if (sf.empty()) return 0.0;
+  std::sort(sf.begin(), sf.end());
+  const auto loaded = [&](std::size_t i) { return sf[i].second > 0.0; };
+  // The end of the loaded stretch that starts or stops between samples i and j = i +- 1
+  // (i loaded, j not): the zero of the line through the loaded samples i and i - (j - i).
+  const auto edge = [&](std::size_t i, std::size_t j) {
+    const std::size_t k = j > i ? i - 1 : i + 1;   // the loaded side's next sample
+    const bool line = k < sf.size() && loaded(k) && sf[k].second != sf[i].second;
+    double t = 0.5;                                // no second loaded sample: the midpoint
+    if (line) t = sf[i].second / (sf[k].second - sf[i].second) * (sf[i].first - sf[k].first) / (sf[j].first - sf[i].first);
+    return std::clamp(t, 0.0, 1.0) * std::fabs(sf[j].first - sf[i].first);
+  };
+  double length = 0.0;
+  if (loaded(0)) length += sf[0].first;                                  // from A
+  if (loaded(sf.size() - 1)) length += path.AE - sf.back().first;       // to E
+  for (std::size_t i = 0; i + 1 < sf.size(); ++i) {
+    const bool a = loaded(i), b = loaded(i + 1);
+    if (a && b) length += sf[i + 1].first - sf[i].first;
+    else if (a) length += edge(i, i + 1);
+    else if (b) length += edge(i + 1, i);
+  }
+  return length / path.base_pitch;
 }
 
 }  // namespace gearhb

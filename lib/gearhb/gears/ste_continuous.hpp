@@ -181,8 +181,15 @@ std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<Mesh
 // at the pitch point (s = AC) the "single-pair deflection" that sizes a Harris relief.
 double single_pair_ste(const PairSteModel& m, double s, double torque);
 
-// Loaded contact ratio: the mean number of loaded pairs over the phases (1 + the
-// fraction of the cycle with two pairs loaded when at most two touch).
-double loaded_contact_ratio(const std::vector<PairStePoint>& cycle);
+// Loaded contact ratio: the length of the path of contact A-E along which a pair
+// carries load, over the base pitch (= the mean number of loaded pairs over a mesh
+// cycle). Over one cycle the pairs' contact points s = (phase + i) pb sweep A-E once,
+// so the samples of all pairs, sorted by s, cover the path with spacing pb / samples.
+// The ends A and E are exact; where a pair lifts off or comes into load between two
+// samples (tip relief), its force is extrapolated linearly from the loaded side to
+// zero (the load share of a pair is linear in s near a lift-off), clipped to the
+// interval. Without relief the result is the geometric contact ratio exactly (a
+// plain count of loaded samples would be off by up to 1 / samples).
+double loaded_contact_ratio(const std::vector<PairStePoint>& cycle, const PathOfContact& path);
 
 }  // namespace gearhb
