@@ -11,7 +11,9 @@
 // load_sharing.hpp), the mesh stiffness k = F / STE, the load share of each pair,
 // the loaded contact ratio, the STE spectrum per mesh order, the Harris map (STE
 // peak-to-peak against torque with and without the file's relief), and ISO 6336-1
-// method B's c'_th, c' and c_gamma_alpha for the same pair.
+// method B's c'_th, c' and c_gamma_alpha for the same pair. model.method chooses the
+// tooth model of the pair stiffness: the beams (default) or the potential-energy
+// method (potential_energy.hpp through mesh_phases' PairStiffnessFn seam).
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
 // written), geometry, transmission_error, iso6336, harris_map, draw.
