@@ -79,7 +79,11 @@ def stiffness_figure(d_dir, params, kn, torques, ste):
     ax.set_xlim(0, 1)
     ax.set_ylim(bottom=0)   # from zero: the note below sits under every curve, none is clipped
     title(ax, params, kn, "mesh stiffness over one mesh cycle")
-    if any(g.get("tip_relief", {}).get("amount", 0) > 0 for g in params["gears"]):
+    relieved = any(g.get("tip_relief", {}).get("amount", 0) > 0 for g in params["gears"])
+    if kn.get("method_potential_energy") == 1 and not relieved and len(torques) > 1:
+        ax.text(0.99, 0.62, "potential-energy method: k does not depend\non the torque, the curves lie on each other",
+                transform=ax.transAxes, ha="right", fontsize=7, bbox=dict(fc="white", ec="0.7"))
+    if relieved:
         ax.text(0.01, 0.02, "with tip relief the STE includes the relief separations:\n"
                 "F / STE is a secant value, not the stiffness of the teeth", transform=ax.transAxes,
                 fontsize=7, va="bottom", bbox=dict(fc="white", ec="0.7"))

@@ -8,7 +8,9 @@ Figures land in build/figures/figNN_*.png, named after the thesis figure number.
 Then, if build/bin/gearhb_gear exists, every gear-pair example of
 chapters/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
 draws its own figures there) and its figures are copied to
-build/figures/gear_<example>_<figure>.png; build/figures/index.html (figures/report.py)
+build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the beam /
+potential-energy comparison from those folders (build/figures/gear_methods*.png);
+build/figures/index.html (figures/report.py)
 links them all.
 """
 import argparse
@@ -67,6 +69,10 @@ def main():
             subprocess.run([str(gear), str(example), "--quiet", "--out", str(out)], check=True)
             for png in sorted(out.glob("*.png")):
                 shutil.copy(png, fig_dir / ("gear_%s_%s" % (example.stem, png.name)))
+        # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
+        import gear_methods
+        for png in gear_methods.draw(build / "data" / "gearhb_gear", fig_dir):
+            print("[figures]   %s" % png, flush=True)
     import report
     print("[figures] report: %s" % report.write(build))
 

@@ -11,7 +11,9 @@
 // load_sharing.hpp), the mesh stiffness k = F / STE, the load share of each pair,
 // the loaded contact ratio, the STE spectrum per mesh order, the Harris map (STE
 // peak-to-peak against torque with and without the file's relief), and ISO 6336-1
-// method B's c'_th, c' and c_gamma_alpha for the same pair.
+// method B's c'_th, c' and c_gamma_alpha for the same pair. model.method chooses the
+// tooth model of the pair stiffness: the beams (default) or the potential-energy
+// method (potential_energy.hpp through mesh_phases' PairStiffnessFn seam).
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
 // written), geometry, transmission_error, iso6336, harris_map, draw.
@@ -29,6 +31,7 @@
 #include "gearhb/app/gear_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
@@ -56,6 +59,9 @@ class GearPairFromFile {
   int plot_ = 1;
   GearFile file_;
 
+  // The pair stiffness of model.method: empty for the beams (mesh_phases' own), the
+  // potential-energy pair stiffness otherwise (its linear Hertz inside; model.hertz none).
+  PairStiffnessFn stiffness() const;
   void read_gear();
   void geometry(Run& run) const;
   void transmission_error(Run& run) const;
@@ -80,6 +86,12 @@ void GearPairFromFile::run(Run& run) {
 // Step 1 (in the checks, before anything is written): the file, the overrides, every check.
 void GearPairFromFile::read_gear() {
   file_ = read_gear_file(study_.positional(), study_.parameters().unregistered());
+}
+
+PairStiffnessFn GearPairFromFile::stiffness() const {
+  if (file_.method == ToothModel::beam) return {};
+  const PeGear g1 = file_.pe[0], g2 = file_.pe[1];
+  return [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
 }
 
 // Step 2: the involute geometry of the pair; path_of_contact.csv, key numbers.
@@ -111,6 +123,21 @@ void GearPairFromFile::geometry(Run& run) const {
     }
   }
   key.add("undercut", undercut, "-");
+  key.add("method_potential_energy", file_.method == ToothModel::potential_energy ? 1 : 0, "-");
+  if (file_.method == ToothModel::potential_energy) {
+    // Sainsot's fillet fit holds for 1.4 <= h_f = rf / r_int <= 7, 0.01 <= theta_f <= 0.12 rad.
+    for (int i = 0; i < 2; ++i) {
+      const PeToothGeometry t = pe_tooth_geometry(file_.pe[i]);
+      const bool in = pe_fillet_in_range(t.h_f, t.theta_f);
+      const std::string n = std::to_string(i + 1);
+      key.add("pe_fillet_h_f_" + n, t.h_f, "-");
+      key.add("pe_fillet_in_range_" + n, in ? 1 : 0, "-");
+      if (!in)
+        run.say("WARNING gear " + n + ": h_f = rf / rim_radius = " + std::to_string(t.h_f) + ", theta_f = " +
+                std::to_string(t.theta_f) + " rad lie outside Sainsot's fitted range (1.4..7, 0.01..0.12): the " +
+                "fillet-foundation term is extrapolated");
+    }
+  }
   key.add("normal_backlash_m", file_.backlash, "m");
   key.add("tooth_elements", m.elements(), "-");
   // The points of the path: distance from T1 and the radius on each gear.
@@ -122,14 +149,14 @@ void GearPairFromFile::geometry(Run& run) const {
     t.add_row({std::string(name), T1P, T1P - p.T1A, r.r1, r.r2});
   }
   run.write("path_of_contact.csv", t);
-  run.say(file_.name + ": a = " + std::to_string(p.mesh.centre_distance * 1e3) + " mm, alpha_w = " +
+  run.say(file_.name + (file_.method == ToothModel::beam ? " [beam model]" : " [potential-energy method]") + ": a = " + std::to_string(p.mesh.centre_distance * 1e3) + " mm, alpha_w = " +
           std::to_string(p.mesh.pressure_angle * 180 / M_PI) + " deg, eps_alpha = " + std::to_string(p.contact_ratio));
 }
 
 // Step 3: STE(theta), k(theta) and the load shares per torque; the spectrum.
 void GearPairFromFile::transmission_error(Run& run) const {
   const PairSteModel& m = file_.pair;
-  const std::vector<MeshPhase> phases = run.timed("mesh_phases", [&] { return mesh_phases(m, file_.phases); });
+  const std::vector<MeshPhase> phases = run.timed("mesh_phases", [&] { return mesh_phases(m, file_.phases, stiffness()); });
   std::size_t pairs = 0;
   for (const auto& ph : phases) pairs = std::max(pairs, ph.pairs.size());
   const int H = std::min(kMaxOrders, (int(phases.size()) - 2) / 2);
@@ -172,7 +199,7 @@ void GearPairFromFile::transmission_error(Run& run) const {
     key.add("ste_mean_um_" + n, mean * 1e6, "um");
     key.add("mesh_stiffness_mean_N_per_m_" + n, mean_stiffness(ste, F), "N/m");
     key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c, path), "-");
-    key.add("single_pair_deflection_um_" + n, single_pair_ste(m, path.AC, T) * 1e6, "um");
+    key.add("single_pair_deflection_um_" + n, single_pair_ste(m, path.AC, T, stiffness()) * 1e6, "um");
     spectrum_columns.push_back("amplitude_um_" + n);
     spectra.push_back(periodic_fourier(ste, H));
     char line[160];
@@ -216,8 +243,9 @@ void GearPairFromFile::iso6336(Run& run) const {
 void GearPairFromFile::harris_map(Run& run) const {
   PairSteModel plain = file_.pair;
   plain.relief1.amount = plain.relief2.amount = 0.0;
-  const auto relieved = run.timed("harris_phases", [&] { return mesh_phases(file_.pair, file_.phases); });
-  const auto unmodified = mesh_phases(plain, file_.phases);
+  const PairStiffnessFn k = stiffness();
+  const auto relieved = run.timed("harris_phases", [&] { return mesh_phases(file_.pair, file_.phases, k); });
+  const auto unmodified = mesh_phases(plain, file_.phases, k);
   Table t({"torque_Nm", "ste_ptp_um", "ste_ptp_um_unmodified", "loaded_contact_ratio"});
   double best = 1e300, at = 0.0;
   for (int j = 0; j < file_.harris_points; ++j) {

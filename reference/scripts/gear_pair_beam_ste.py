@@ -3,7 +3,8 @@
 
 Run:  /usr/bin/python3 reference/scripts/gear_pair_beam_ste.py
 Prints "example key value" for the STE key numbers of every example file in
-chapters/gearhb_gear/examples/ (and of thesis_pair on ch. 7's 8 node positions,
+chapters/gearhb_gear/examples/ with model.method beam (the potential-energy files are
+gear_pair_pe_ste.py's) (and of thesis_pair on ch. 7's 8 node positions,
 as "thesis_pair_p8"). Nothing here calls gearhb: the same model, written again
 with numpy (dense FE) and scipy (brentq), to check the C++ implementation:
 
@@ -215,6 +216,8 @@ def evaluate(f, positions=0, n_phases=None):
 def main():
     for path in sorted(EXAMPLES.glob("*.json")):
         f = json.load(open(path))
+        if f.get("model", {}).get("method", "beam") != "beam":
+            continue   # gear_pair_pe_ste.py
         for k, v in evaluate(f).items():
             print("%s %s %.16g" % (path.stem, k, v))
         # The loaded contact ratio converged in the phases: counted over 2048 phases

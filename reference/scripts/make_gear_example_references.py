@@ -5,7 +5,7 @@ Run:  /usr/bin/python3 reference/scripts/make_gear_example_references.py
 Every "value" comes from a script that does not call gearhb:
   * geometry and ISO 6336-1 method B: gear_pair_closed_forms.py (closed forms);
   * the loaded STE numbers: gear_pair_beam_ste.py (the beam model written again in
-    numpy / scipy), and for ch. 7's 8 node positions also the independent stepped-beam
+    numpy / scipy), gear_pair_pe_ste.py for the potential-energy files, and for ch. 7's 8 node positions also the independent stepped-beam
     integrals of ch07_closed_form_ste.py (reference/ch07_ste.json);
 plus the published values (FZG type C, ISO/TR 6336-30 Ex. 01, the thesis) recorded
 beside ours as "published_value" / "thesis_value" with the reason for any gap.
@@ -29,6 +29,7 @@ def run(script):
 
 GEO = run("gear_pair_closed_forms.py")
 STE = run("gear_pair_beam_ste.py")
+PE = run("gear_pair_pe_ste.py")
 UNITS = {"N_per_m": "N/m", "_um": "um", "_deg": "deg", "_m": "m"}
 CLOSED = "reference/scripts/gear_pair_closed_forms.py (ISO 21771 involute closed forms, no gearhb)"
 ISO = "reference/scripts/gear_pair_closed_forms.py: ISO 6336-1:2006 clause 9 method B written out (C9 x2^2), spur"
@@ -64,6 +65,19 @@ def iso_numbers(name):
             for k in ("iso6336_c_prime_th", "iso6336_c_prime", "iso6336_c_gamma_alpha")}
 
 
+def loaded_ratio_entry(k, fine, source, name):
+    """The loaded contact ratio: with tip relief a 2048-phase count of the independent model
+    (`fine`), without it the geometric AE / pb of the closed forms (every pair on A-E loaded)."""
+    if fine:
+        return entry(k, fine[k], source + "; loaded pairs counted over 2048 phases", {"abs": 3e-3},
+                     "the count converges as 2 / 2048 (two lift-off points a cycle); gearhb locates the "
+                     "lift-off between its 64 phases by linear extrapolation of the pair force")
+    geo = GEO.get(name) or GEO[name.rsplit("_", 1)[0]]   # thesis_pair_p8: the thesis pair's geometry
+    return entry(k, geo["contact_ratio"], CLOSED, {"abs": 1e-12},
+                 "no tip relief: every pair on A-E is loaded, so the loaded contact ratio is the geometric "
+                 "AE / pb, found exactly from the samples (ends A and E exact)")
+
+
 def ste_numbers(name, torques, source_name=None):
     src = STE[source_name or name]
     out = {}
@@ -74,16 +88,28 @@ def ste_numbers(name, torques, source_name=None):
                            "two implementations of one model: dense solves and Brent (1e-14) differ by round-off "
                            "(measured 1e-14); 1e-9 leaves margin, far below any modelling effect")
         k = "loaded_contact_ratio_%d" % i
-        fine = STE.get((source_name or name) + "_fine")
-        if fine:   # tip relief: the loaded path is shorter than A-E
-            out[k] = entry(k, fine[k], BEAM + "; loaded pairs counted over 2048 phases", {"abs": 3e-3},
-                           "the count converges as 2 / 2048 (two lift-off points a cycle); gearhb locates the "
-                           "lift-off between its 64 phases by linear extrapolation of the pair force")
-        else:      # no relief: every geometric pair carries load, the ratio is AE / pb
-            geo = GEO["thesis_pair" if (source_name or name).startswith("thesis_pair") else name]
-            out[k] = entry(k, geo["contact_ratio"], CLOSED, {"abs": 1e-12},
-                           "no tip relief: every pair on A-E is loaded, so the loaded contact ratio is the geometric "
-                           "AE / pb, found exactly from the samples (ends A and E exact)")
+        out[k] = loaded_ratio_entry(k, STE.get((source_name or name) + "_fine"), BEAM, source_name or name)
+    return out
+
+
+PE_SOURCE = ("reference/scripts/gear_pair_pe_ste.py: the potential-energy tooth of tests/pe_independent_check.py "
+             "(Simpson in the centre-line coordinate, not the library's Gauss-Legendre in the pressure angle), "
+             "linear Hertz, exact linear sharing; no gearhb")
+
+
+def pe_numbers(name, torques):
+    src = PE[name]
+    out = {"method_potential_energy": entry("method_potential_energy", 1.0, "the file's model.method", {"abs": 0},
+                                            "a flag")}
+    for i in torques:
+        for k in ("ste_max_um_%d" % i, "ste_ptp_um_%d" % i, "mesh_stiffness_mean_N_per_m_%d" % i,
+                  "single_pair_deflection_um_%d" % i):
+            out[k] = entry(k, src[k], PE_SOURCE, {"rel": 1e-9},
+                           "two quadratures of one model (Gauss-Legendre 24 points in the pressure angle against "
+                           "Simpson 20000 intervals in x): measured 2e-13 worst (FZG pinion, root below the base "
+                           "circle), 1e-15 elsewhere; 1e-9 leaves margin, far below any modelling effect")
+        k = "loaded_contact_ratio_%d" % i
+        out[k] = loaded_ratio_entry(k, PE.get(name + "_fine"), PE_SOURCE, name)
     return out
 
 
@@ -166,4 +192,16 @@ for k, v in tr.items():
                     "(issue20-pe). Shifted gear: needs the q' fix of issue20-pe (5f4444b), see fzg_c.")
 n.update(ste_numbers("iso_tr_6336_30_ex01", [1]))
 write("iso_tr_6336_30_ex01", "iso_tr_6336_30_ex01.json", ["--set", "plot=0"], n)
+# --- the ROSS test gear (petrobras/ross; GEARS.md), beam model, consistent reading ------------------
+n = geometry_numbers("ross_pair", GEOM_KEYS)
+n["contact_ratio"]["published_value"] = 1.7897798668
+n["contact_ratio"]["published_source"] = "GEARS.md (ROSS test gear: z 62/62, m 2 mm, 20 deg, ha* 1)"
+n.update(iso_numbers("ross_pair"))
+n.update(ste_numbers("ross_pair", [1, 2, 3]))
+write("ross_pair", "ross_pair.json", ["--set", "plot=0"], n)
+
+# --- the potential-energy method (model.method = potential_energy) ---------------------------------
+for name in ("thesis_pair_pe", "thesis_pair_relief_pe", "ross_pair_pe", "fzg_c_pe"):
+    write(name, name + ".json", ["--set", "plot=0"], pe_numbers(name, [1, 2, 3]))
+
 print("wrote", sorted(p.name for p in OUT.glob("*.json")))

@@ -310,3 +310,28 @@ TEST(PairSte, PotentialEnergySeam) {
   }
   EXPECT_GT(single, 10);
 }
+
+// The single-pair deflection through the seam: one pair alone at s, no relief, no Palmgren
+// term (hertz none), is F / k(r1(s), r2(s)) exactly (the seam's stiffness, sharing = false).
+TEST(PairSte, SinglePairSteThroughTheSeam) {
+  PairSteModel m;
+  m.hertz = HertzCount::none;
+  m.relief1 = tip_relief(m.gear1, 10e-6, ReliefStart::length, 5e-3, ReliefShape::linear);   // ignored: one pair alone
+  PeGear pe;
+  pe.youngs_modulus = m.youngs_modulus1;
+  pe.bore_radius = 0.025;
+  bool sharing_seen = true;
+  const PairStiffnessFn k_pe = [&](double r1, double r2, bool sharing) {
+    sharing_seen = sharing;
+    return pe_pair_stiffness(pe, pe, r1, r2);
+  };
+  const PathOfContact p = m.path();
+  for (double s : {0.0, p.AC, p.AE}) {
+    const ContactRadii r = contact_radii(m.gear1, m.gear2, p, s);
+    EXPECT_NEAR(single_pair_ste(m, s, 300.0, k_pe), m.force(300.0) / pe_pair_stiffness(pe, pe, r.r1, r.r2),
+                1e-15 * 2e-5);
+    EXPECT_FALSE(sharing_seen);
+  }
+  // Without the seam: the beams (a different number).
+  EXPECT_GT(std::fabs(single_pair_ste(m, p.AC, 300.0) - single_pair_ste(m, p.AC, 300.0, k_pe)), 1e-7);
+}

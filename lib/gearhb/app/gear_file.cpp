@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 
 #include "gearhb/app/json_file.hpp"
 
@@ -45,6 +46,49 @@ std::string mm(double v) {
   char b[48];
   std::snprintf(b, sizeof b, "%.6g mm", v * 1e3);
   return b;
+}
+
+// Method potential_energy: each gear in the PE vocabulary, its bore radius the file's rim
+// radius (Sainsot's fillet foundation is clamped there: required); the teeth must be a
+// valid PE tooth and the extrapolated fillet fit must stay a compliance (> 0) at both ends
+// of each gear's contact.
+void check_potential_energy(GearFile& f, const std::string& path, const PathOfContact& p) {
+  const GearGeometry* geo[2] = {&f.pair.gear1, &f.pair.gear2};
+  const double E[2] = {f.pair.youngs_modulus1, f.pair.youngs_modulus2};
+  const ContactRadii lowest = contact_radii(f.pair.gear1, f.pair.gear2, p, 0.0);
+  const ContactRadii highest = contact_radii(f.pair.gear1, f.pair.gear2, p, p.AE);
+  const double r_low[2] = {lowest.r1, highest.r2}, r_tip[2] = {highest.r1, lowest.r2};
+  for (int i = 0; i < 2; ++i) {
+    const std::string w = "gears." + std::to_string(i);
+    const GearGeometry& G = *geo[i];
+    PeGear& g = f.pe[i];
+    g.teeth = G.teeth;
+    g.module = G.module;
+    g.pressure_angle = G.pressure_angle_deg * M_PI / 180.0;
+    g.profile_shift = G.profile_shift;
+    g.addendum_coefficient = G.addendum / G.module;
+    g.dedendum_coefficient = f.dedendum_coefficient;
+    g.root_radius_coefficient = f.root_radius_coefficient;
+    g.face_width = G.face_width;
+    g.youngs_modulus = E[i];
+    g.poisson_ratio = f.gear[i].poisson_ratio;
+    g.bore_radius = f.gear[i].rim_radius;
+    if (!(g.bore_radius > 0.0))
+      fail_key(path, w + ".rim_radius",
+               "is needed by method potential_energy (the bore radius of Sainsot's fillet foundation) and is missing or 0");
+    for (double r_c : {r_low[i], r_tip[i]}) {
+      PeToothCompliance c;
+      try {
+        c = pe_tooth_compliance(g, r_c);
+      } catch (const std::exception& e) {
+        fail_key(path, w + ".z", std::string("is not a tooth of the potential-energy method: ") + e.what());
+      }
+      if (!(c.fillet > 0.0) || !std::isfinite(c.total()))
+        fail_key(path, w + ".rim_radius", "takes Sainsot's fillet fit so far out of its range (h_f = rf / rim_radius = " +
+                                              std::to_string(G.root_radius() / g.bore_radius) +
+                                              ", fitted 1.4..7) that it gives no positive compliance");
+    }
+  }
 }
 
 }  // namespace
@@ -149,8 +193,9 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
 
   // --- the reading of the beam model ------------------------------------------------
   const json model = j.value("model", json::object());
-  only_keys(model, path, "model", {"phases", "positions_per_base_pitch", "tooth_elements", "thickness_at", "hertz",
-                                   "pair_hertz", "pair_stiffness", "tooth_force"});
+  only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
+                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force"});
+  f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy"}, 0));
   f.phases = model.contains("phases") ? json_whole(model["phases"], path, "model.phases", 16, 4096) : 64;
   f.pair.positions_per_base_pitch =
       model.contains("positions_per_base_pitch")
@@ -161,7 +206,12 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
       model.contains("tooth_elements") ? json_whole(model["tooth_elements"], path, "model.tooth_elements", 0, 64) : 0;
   if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 64]");
   f.pair.thickness_at = ThicknessAt(r.choice(model, "model", "thickness_at", {"root_node", "midpoint", "tip_node"}, 0));
-  f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"}, 2));
+  f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"},
+                                      f.method == ToothModel::potential_energy ? 0 : 2));
+  // The PE pair stiffness holds its own (linear, Yang & Sun) Hertz: a Palmgren term on top
+  // would count the contact twice.
+  if (f.method == ToothModel::potential_energy && f.pair.hertz != HertzCount::none)
+    fail_key(path, "model.hertz", "must be none with method potential_energy (its linear Hertz is inside the pair stiffness)");
   f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 0));
   f.pair.pair_stiffness = PairStiffness(r.choice(model, "model", "pair_stiffness", {"fused", "cantilevers"}, 0));
   f.pair.tooth_force = ToothForce(r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, 0));
@@ -189,6 +239,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
       fail_key(path, "gears.0.thickness_allowance", "gives a negative normal backlash (" + mm(f.backlash) +
                                                         ") at this centre distance: the teeth would interpenetrate");
   }
+  if (f.method == ToothModel::potential_energy) check_potential_energy(f, path, p);
   const int ne = f.pair.elements();
   if (ne < 2 || ne > 64) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..64");
   const int P = f.pair.positions_per_base_pitch;
@@ -198,6 +249,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
       fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) needs two identical gears");
     if (f.pair.relief1.amount > 0.0 || f.pair.relief2.amount > 0.0)
       fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) cannot carry a tip relief");
+    if (f.method != ToothModel::beam)
+      fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading of the beams) needs method beam");
     if (ne < P || ne >= 2 * P)
       fail_key(path, "model.positions_per_base_pitch", "needs P <= tooth elements (" + std::to_string(ne) + ") < 2 P");
   }
@@ -224,17 +277,24 @@ std::string gear_file_help() {
          "  gears[i].E, gears[i].nu      Young's modulus [Pa], Poisson's ratio (nu recorded only: the\n"
          "                               Palmgren Hertz law is for steel)\n"
          "  gears[i].inertia             polar moment of inertia [kg m^2] (recorded, for the dynamics)\n"
-         "  gears[i].rim_radius          rim/bore radius [m] (recorded; the tooth root is clamped)\n"
+         "  gears[i].rim_radius          rim/bore radius [m] (beam: recorded, the tooth root is clamped;\n"
+         "                               potential_energy: required, the fillet foundation's bore)\n"
          "  gears[i].tip_relief.amount   Ca [m] at the tip circle (0: none)\n"
          "  gears[i].tip_relief.start    exactly one of {roll_angle_deg: xi [deg]}, {diameter: d [m]},\n"
          "                               {length: L [m] along the path of contact, measured from the tip}\n"
          "  gears[i].tip_relief.shape    linear (default) | parabolic\n"
+         "  model.method                 beam (default: thesis ch. 7's beams) | potential_energy (bending, shear,\n"
+         "                               compression of the involute tooth, Sainsot's fillet foundation clamped at\n"
+         "                               gears[i].rim_radius, which it needs; linear Hertz inside the pair stiffness,\n"
+         "                               so model.hertz must be none, its default then; tooth_elements, thickness_at,\n"
+         "                               pair_stiffness and pair_hertz do not apply; no node reading)\n"
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"
          "  model.tooth_elements         beam elements per tooth (0 = floor(8 eps_alpha): 14 for the thesis)\n"
          "  model.thickness_at           root_node (default) | midpoint | tip_node: where s(r) is read per element\n"
-         "  model.hertz                  per_tooth (default, thesis) | per_contact | none\n"
+         "  model.hertz                  per_tooth (default, thesis) | per_contact | none (method potential_energy:\n"
+         "                               none only)\n"
          "  model.pair_hertz             equal_split (default, thesis) | fe_split_mean | consistent (Hertz inside\n"
          "                               the load sharing: use it with tip relief)\n"
          "  model.pair_stiffness         fused (default, thesis section 7.2) | cantilevers\n"

@@ -23,7 +23,8 @@
 //                                              "diameter" [m], "length" [m] along the path
 //                                              from the tip; shape linear | parabolic
 //       }, {...} ],
-//     "model": {...},                          the reading of the beam model (gear_file_help)
+//     "model": {...},                          method beam | potential_energy, and the reading
+//                                              of the beam model (gear_file_help)
 //     "harris": {"from": 50, "to": 500, "points": 19}   torques of the Harris map [N m]
 //   }
 //
@@ -37,6 +38,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 
 namespace gearhb {
@@ -48,8 +50,15 @@ struct GearFileGear {
   double thickness_allowance = 0.0;   // A_sn [m] <= 0 on the reference circle
 };
 
+// The tooth model of the pair stiffness (`model.method`): chapter 7's beams (the
+// thesis) or the potential-energy method (potential_energy.hpp, through the
+// PairStiffnessFn seam of mesh_phases; its linear Hertz is inside the pair stiffness).
+enum class ToothModel : int { beam = 0, potential_energy = 1 };
+
 struct GearFile {
   std::string name;
+  ToothModel method = ToothModel::beam;
+  PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
   PairSteModel pair;               // geometry, materials, reliefs, the model's reading
   GearFileGear gear[2];
   double dedendum_coefficient = 1.25, root_radius_coefficient = 0.38;   // hf*, rho_f*

@@ -290,10 +290,15 @@ std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<Mesh
   return out;
 }
 
-double single_pair_ste(const PairSteModel& m, double s, double torque) {
+double single_pair_ste(const PairSteModel& m, double s, double torque, const PairStiffnessFn& stiffness) {
   PairSteModel alone = m;
   alone.relief1.amount = alone.relief2.amount = 0.0;
   alone.positions_per_base_pitch = 0;
+  if (stiffness) {
+    const ContactRadii r = contact_radii(alone.gear1, alone.gear2, alone.path(), s);
+    return share_load({{stiffness(r.r1, r.r2, false), 0.0}}, alone.force(torque), alone.hertz, alone.pair_hertz,
+                      alone.contact_length()).ste;
+  }
   const int ne = alone.elements();
   const ToothBeam t1 = tooth_beam(alone.gear1, alone.youngs_modulus1, ne, alone.thickness_at);
   const ToothBeam t2 = tooth_beam(alone.gear2, alone.youngs_modulus2, ne, alone.thickness_at);

@@ -179,7 +179,8 @@ std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<Mesh
 // One pair alone touching at s from A (no relief, no neighbour): its STE [m] under
 // gear 1's torque T1 (the one-pair stiffness of the model's reading + its Hertz):
 // at the pitch point (s = AC) the "single-pair deflection" that sizes a Harris relief.
-double single_pair_ste(const PairSteModel& m, double s, double torque);
+// With `stiffness` (the seam of mesh_phases) that pair stiffness, sharing = false, in place of the beams.
+double single_pair_ste(const PairSteModel& m, double s, double torque, const PairStiffnessFn& stiffness = {});
 
 // Loaded contact ratio: the length of the path of contact A-E along which a pair
 // carries load, over the base pitch (= the mean number of loaded pairs over a mesh
