@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "gearhb/hb/first_point.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
@@ -163,9 +164,47 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
       return code;
     };
   }
-  const Eigen::VectorXd X0 = linear_first_guess(hb, co.omega_start);
-  c.branch = opt.natural ? natural_continuation(hb, X0, c.scaling, co)
-                         : arc_length_continuation(hb, X0, c.scaling, co);
+  // The first point: Newton from the linear guess inside the continuation (as always);
+  // if that fails, find_first_point's contact sets and forcing-amplitude continuation
+  // (first_point.hpp), and the continuation again from what it found.
+  auto run = [&](const Eigen::VectorXd& X0) {
+    return opt.natural ? natural_continuation(hb, X0, c.scaling, co) : arc_length_continuation(hb, X0, c.scaling, co);
+  };
+  bool started = false;
+  try {
+    c.branch = run(linear_first_guess(hb, co.omega_start));
+    started = !c.branch.points.empty();
+  } catch (const std::invalid_argument&) {
+    // neither linear guess is finite (K singular under a static load): find_first_point
+  }
+  if (!started) {
+    FirstPointOptions fo;
+    fo.newton.tolerance = co.tolerance;
+    fo.continuation = co;
+    fo.continuation.progress = nullptr;
+    const FirstPoint fp = find_first_point(hb, co.omega_start, c.scaling, fo);
+    if (!fp.found) {
+      std::ostringstream os;
+      os << "case " << label << ": the sweep cannot start: no periodic solution found at omega = " << co.omega_start
+         << " (" << fp.failure << ")";
+      c.branch = Branch{};
+      c.failure = os.str();
+      return c;
+    }
+    c.first_point = fp.method;
+    c.branch = run(fp.X);
+  }
+  // A first point on a fold pair whose branch leaves the range at its start (the
+  // stable low-amplitude orbit of a clearance oscillator below a superharmonic fold):
+  // follow the branch outside the range by up to a quarter of the range, where it may
+  // turn at the pair's other fold and come back through the start.
+  if (!opt.natural && !c.branch.complete && !c.branch.failures.empty() && co.start_excursion == 0.0 &&
+      c.branch.failures.back().what == "branch turned back out of the range at its start") {
+    ContinuationOptions wide = co;
+    wide.start_excursion = 0.25 * (opt.omega_max - opt.omega_min);
+    Branch again = arc_length_continuation(hb, c.branch.points.front().X, c.scaling, wide);
+    if (again.complete) c.branch = std::move(again);
+  }
   c.complete = c.branch.complete;
   if (!c.complete) c.failure = "case " + label + ": " + failure_report(hb, c.branch);
   const auto& P = c.branch.points;
