@@ -143,7 +143,8 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   // The lowest frequency of the curve where a contact first closes (if any does).
   const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
-  run.say(model_.name + ": " + c.branch.summary() + "; first point by " + to_string(c.first_point));
+  run.say(model_.name + ": " + c.branch.summary() +
+          (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
   if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
   run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
   run.write("bifurcations.csv", bifurcation_table(c));

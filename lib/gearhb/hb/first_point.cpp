@@ -132,7 +132,7 @@ FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scali
     fp.method = FirstPointMethod::contact_set;
     return fp;
   }
-  why << "; Newton from the linear solutions of " << cands.size() << " other contact sets failed";
+  why << "; Newton from the linear solution of each of the " << cands.size() << " other contact sets failed";
   // 3. Continuation in the forcing amplitude from the static problem.
   const AmplitudeHomotopy homotopy(hb, omega);
   if (!opt.amplitude_continuation || !homotopy.forced()) {
