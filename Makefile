@@ -1,6 +1,7 @@
 # gearhb: the two commands a user needs.
 #   make figures   build (Release), run every chapter, draw every thesis figure
 #   make test      build, then run the whole CTest suite
+#   (make docs     regenerate the console output quoted in the chapter READMEs)
 # Both first make sure the Debian packages are present (apt-get when root,
 # otherwise the exact command is printed and make stops).
 
@@ -14,7 +15,7 @@ PACKAGES := cmake g++ make pkg-config libeigen3-dev libfftw3-dev libgsl-dev \
             libgtest-dev libbenchmark-dev nlohmann-json3-dev python3-matplotlib \
             python3-scipy
 
-.PHONY: all deps configure build figures test bench clean
+.PHONY: all deps configure build figures test bench docs clean
 
 all: build
 
@@ -45,6 +46,10 @@ figures: build
 
 test: build
 	@cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# Regenerate the console output quoted in the chapter READMEs (CTest checks it).
+docs: build
+	@$(PYTHON) tests/readme_console.py --write $(BUILD) chapters/*/README.md
 
 bench: build
 	@$(BUILD)/bin/gearhb_bench

@@ -4,13 +4,18 @@
 For each chapter program build/bin/chNN_name:
   1. run it:  build/bin/chNN_name --out build/data/chNN_name   (two programs at a time)
   2. draw:    figures/chNN_name.py  (its draw(data_dir, fig_dir) function)
-Figures land in build/figures/figNN_*.png, named after the thesis figure number;
-then build/figures/index.html (figures/report.py) links them all.
+Figures land in build/figures/figNN_*.png, named after the thesis figure number.
+Then, if build/bin/gearhb_gear exists, every gear-pair example of
+chapters/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
+draws its own figures there) and its figures are copied to
+build/figures/gear_<example>_<figure>.png; build/figures/index.html (figures/report.py)
+links them all.
 """
 import argparse
 import concurrent.futures
 import importlib.util
 import pathlib
+import shutil
 import subprocess
 import sys
 import time
@@ -54,6 +59,14 @@ def main():
             spec.loader.exec_module(mod)
             made = mod.draw(data_dir, fig_dir)
             print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
+    gear = build / "bin" / "gearhb_gear"
+    if gear.is_file() and not args.only:
+        for example in sorted((HERE.parent / "chapters" / "gearhb_gear" / "examples").glob("*.json")):
+            out = build / "data" / "gearhb_gear" / example.stem
+            print("[figures] %s %s --out %s" % (gear, example.name, out), flush=True)
+            subprocess.run([str(gear), str(example), "--quiet", "--out", str(out)], check=True)
+            for png in sorted(out.glob("*.png")):
+                shutil.copy(png, fig_dir / ("gear_%s_%s" % (example.stem, png.name)))
     import report
     print("[figures] report: %s" % report.write(build))
 

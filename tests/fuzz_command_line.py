@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """Hostile command lines against one program (README "Running a chapter").
 
-    fuzz_command_line.py PROGRAM WORK_DIR [--runs N] [--seed S] [--timeout T]
+    fuzz_command_line.py PROGRAM WORK_DIR [--runs N] [--seed S] [--timeout T] [--file FILE.json]
 
-Reads the program's parameters from --help, then runs it N times with one to three
-random `--set key=value` overrides (extreme, malformed, non-finite, huge or scaled
-values) on `--case own`, each into a fresh output folder, and asserts the classes:
+Reads the program's parameters from --help (or, with --file, the numbers of the input
+file by their dotted paths, for a program that reads a file: gearhb_frc, gearhb_gear),
+then runs it N times with one to three random `--set key=value` overrides (extreme,
+malformed, non-finite, huge or scaled values) on `--case own` (or on the file, with
+plot=0), each into a fresh output folder, and asserts the classes:
   exit 0  the folder holds key_numbers.json, no data file holds inf or nan, no staging left;
   exit 1  one line on stderr, the output folder was not created, no staging left;
   exit 2  one line on stderr, nothing written;
@@ -40,6 +42,24 @@ def parameters(prog):
     return params
 
 
+def file_numbers(path):
+    """The numbers of a JSON file as (dotted path, value) pairs."""
+    import json
+
+    def walk(node, prefix):
+        if isinstance(node, dict):
+            items = node.items()
+        elif isinstance(node, list):
+            items = enumerate(node)
+        else:
+            return [(prefix, str(node))] if isinstance(node, (int, float)) and not isinstance(node, bool) else []
+        out = []
+        for k, v in items:
+            out += walk(v, "%s.%s" % (prefix, k) if prefix else str(k))
+        return out
+    return walk(json.load(open(path)), "")
+
+
 def value_for(rng, default):
     r = rng.random()
     if r < 0.6:
@@ -58,9 +78,10 @@ def main():
     ap.add_argument("--runs", type=int, default=40)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--timeout", type=float, default=3.0)
+    ap.add_argument("--file", help="the program reads this file; fuzz its numbers")
     a = ap.parse_args()
     rng = random.Random(a.seed)
-    params = parameters(a.program)
+    params = file_numbers(a.file) if a.file else parameters(a.program)
     if not params:
         sys.exit("no parameters found in %s --help" % a.program)
     work = pathlib.Path(a.work).resolve()
@@ -74,7 +95,8 @@ def main():
         sets = []
         for name, default in rng.sample(params, min(len(params), rng.randint(1, 3))):
             sets += ["--set", "%s=%s" % (name, value_for(rng, default))]
-        cmd = [a.program, "--case", "own", "--quiet", "--out", str(out)] + sets
+        head = [a.program, a.file, "--set", "plot=0"] if a.file else [a.program, "--case", "own"]
+        cmd = head + ["--quiet", "--out", str(out)] + sets
         try:
             p = subprocess.run(cmd, capture_output=True, text=True, timeout=a.timeout, cwd=work)
         except subprocess.TimeoutExpired:

@@ -759,9 +759,9 @@ void StaticTransmissionError::readings(Run& run) const {
         std::vector<MeshPosition> c;
         for (std::size_t i = 0; i < kTorques.size(); ++i) {
           c = ste_over_mesh_cycle(m, torque(int(i)));
-          row.push_back(max_ste(c) * um);
+          row.emplace_back(std::in_place_type<double>, max_ste(c) * um);
         }
-        row.push_back(mean_mesh_stiffness(c, m.force(loads_.torque_3)) / 1e6);   // c: the last torque, torque_3
+        row.emplace_back(std::in_place_type<double>, mean_mesh_stiffness(c, m.force(loads_.torque_3)) / 1e6);   // c: the last torque, torque_3
         t.add_row(row);
       }
   });

@@ -52,12 +52,7 @@ class FrequencyResponseFromFile {
 };
 
 FrequencyResponseFromFile::FrequencyResponseFromFile(Study& study) : study_(study) {
-  ParameterSet& P = study.parameters();
-  P.keep_unregistered();   // --set PATH=VALUE addresses the model file
-  P.group("program");
-  P.add("plot", &plot_, "-", "1 draw DIR/frc.png (needs python3-matplotlib), 0 data only", Range::between(0, 1));
-  study.positional("MODEL.json");
-  study.check([this](const Selection&) { read_model(); });
+  file_program(study, "MODEL.json", &plot_, [this] { read_model(); });
 }
 
 void FrequencyResponseFromFile::run(Run& run) {
@@ -172,9 +167,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
-  const std::string script = std::string(GEARHB_FIGURES_DIR) + "/frc.py";
-  if (std::string(GEARHB_FIGURES_DIR).empty() || !run_program_quietly({"/usr/bin/python3", script, run.staging_path()}))
-    run.say("frc.png not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
+  draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
 
 }  // namespace

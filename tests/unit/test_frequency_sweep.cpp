@@ -36,7 +36,7 @@ TEST(FrequencySweep, IncompleteBranchKeepsItsPointsAndNamesCaseAndFrequency) {
   EXPECT_FALSE(c.complete);
   EXPECT_EQ(c.branch.points.size(), 6u);   // the first point and the five steps
   EXPECT_EQ(c.stable.size(), c.branch.points.size());
-  for (const std::string& part : {"my_case", "step cap", "omega =", "residual", "step", "hint"})
+  for (const char* part : {"my_case", "step cap", "omega =", "residual", "step", "hint"})
     EXPECT_NE(c.failure.find(part), std::string::npos) << part << " not in: " << c.failure;
   // callers that need the whole range get an error with the same information
   try {

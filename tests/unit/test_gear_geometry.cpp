@@ -129,3 +129,161 @@ TEST(Geometry, InvoluteToothModelProblemsAndAdmissibleTeeth) {
   g.module = 1;
   EXPECT_NE(involute_tooth_model_problem(g).find("contact ratio"), std::string::npos);
 }
+
+// ---------------------------------------------------------------------------
+// Shifted gears, a pair from a drawing (issue 20).
+//
+// FZG type C test gear (GEARS.md §3; Höhn, Oster, Michaelis; DIN ISO 14635-1):
+// m = 4.5 mm, z = 16 / 24, x = 0.1817 / 0.1715, alpha = 20 deg, ha* = 1, hf* = 1.25,
+// rho_f* = 0.38; published a = 91.5 mm, eps_alpha = 1.4625, rb = 33.829 / 50.743 mm,
+// ra = 41.318 / 59.272 mm, path of contact 19.43 mm, pb = 13.285 mm.
+// Closed forms evaluated by hand in Python (bisection for inv^-1, no gearhb):
+//   from the shifts: alpha_w = 22.43891042912648 deg, a = 91.50007859607551 mm,
+//                    g_alpha = 19.427796892816394 mm, eps = 1.4624308892700995;
+//   at the drawing's a = 91.5 mm: alpha_w = 22.438791252720602 deg,
+//                    g_alpha = 19.428002804925376 mm, eps = 1.4624463893409676
+//   (the published 1.4625 is this to 4 digits; the shifts 0.1817 / 0.1715 are
+//   rounded, so the a they imply is 0.08 um off 91.5 mm).
+namespace {
+GearGeometry fzg(int z, double x) {
+  GearGeometry g;
+  g.module = 4.5e-3;
+  g.teeth = z;
+  g.addendum = 4.5e-3;
+  g.dedendum = 1.25 * 4.5e-3;
+  g.face_width = 14e-3;
+  g.profile_shift = x;
+  return g;
+}
+}  // namespace
+
+TEST(Geometry, InverseInvolute) {
+  // Forward residual to the round-off of evaluating tan(a) - a (absolute eps a:
+  // the round trip a -> inv -> a is ill-conditioned at small a, where it cancels).
+  for (double v : {3e-7, 1e-4, 0.014904383867336446, 0.1, 2.0}) {
+    const double a = inverse_involute(v);
+    EXPECT_NEAR(involute(a), v, 4e-16 * (a + std::tan(a)));
+  }
+  EXPECT_NEAR(inverse_involute(involute(20 * M_PI / 180)), 20 * M_PI / 180, 1e-15);
+  EXPECT_EQ(inverse_involute(0.0), 0.0);
+}
+
+TEST(Geometry, FzgTypeCFromTheShifts) {
+  const GearGeometry g1 = fzg(16, 0.1817), g2 = fzg(24, 0.1715);
+  EXPECT_NEAR(g1.base_radius(), 33.8289343482927e-3, 1e-15);   // 33.829 mm published
+  EXPECT_NEAR(g2.base_radius(), 50.74340152243905e-3, 1e-15);  // 50.743
+  EXPECT_NEAR(g1.tip_radius(), 41.31765e-3, 1e-15);            // 41.318
+  EXPECT_NEAR(g2.tip_radius(), 59.27175e-3, 1e-15);            // 59.272
+  EXPECT_NEAR(g1.base_pitch(), 13.284591453420971e-3, 1e-15);  // 13.285
+  const PathOfContact p = path_of_contact(g1, g2);
+  EXPECT_NEAR(p.mesh.pressure_angle * 180 / M_PI, 22.43891042912648, 1e-11);
+  EXPECT_NEAR(p.mesh.centre_distance, 91.50007859607551e-3, 1e-14);
+  EXPECT_NEAR(p.AE, 19.427796892816394e-3, 1e-14);
+  EXPECT_NEAR(p.contact_ratio, 1.4624308892700995, 1e-11);
+  EXPECT_NEAR(p.T1T2, p.mesh.centre_distance * std::sin(p.mesh.pressure_angle), 1e-15);
+  // Operating pitch radii divide a in the ratio of the teeth: rw1 + rw2 = a, rw2/rw1 = z2/z1.
+  EXPECT_NEAR(p.mesh.pitch_radius1 + p.mesh.pitch_radius2, p.mesh.centre_distance, 1e-15);
+  EXPECT_NEAR(p.mesh.pitch_radius2 / p.mesh.pitch_radius1, 1.5, 1e-14);
+  // Single-pair zone B-D: AB = DE = AE - pb, BD = 2 pb - AE.
+  EXPECT_NEAR(p.T1B - p.T1A, p.AE - p.base_pitch, 1e-15);
+  EXPECT_NEAR(p.T1D - p.T1B, 2 * p.base_pitch - p.AE, 1e-15);
+}
+
+TEST(Geometry, FzgTypeCAtTheDrawingsCentreDistance) {
+  const PathOfContact p = path_of_contact(fzg(16, 0.1817), fzg(24, 0.1715), 91.5e-3);
+  EXPECT_NEAR(p.mesh.centre_distance, 91.5e-3, 1e-16);
+  EXPECT_NEAR(p.mesh.pressure_angle * 180 / M_PI, 22.438791252720602, 1e-11);
+  EXPECT_NEAR(p.AE, 19.428002804925376e-3, 1e-14);             // 19.43 mm published
+  EXPECT_NEAR(p.contact_ratio, 1.4624463893409676, 1e-11);
+  // Published 1.4625: the same formula with the published radii rounded to 1 um
+  // (rb 33.829 / 50.743, ra 41.318 / 59.272 mm) gives g_alpha = 19.42885 mm and
+  // eps = 1.46251 (pb exact) or 1.46247 (pb = 13.285 mm): the last digit is rounding.
+  EXPECT_NEAR(p.contact_ratio, 1.4625, 6e-5);
+}
+
+// Tooth thickness with shift: at the pitch circle s0 = m (pi/2 + 2 x tan alpha)
+// (ISO 21771), 7.663783994672554 mm for the FZG pinion; at any r the same
+// involute relation, so s(r)/r - s(r')/r' = 2 (inv a(r') - inv a(r)).
+TEST(Geometry, ToothThicknessWithShift) {
+  const GearGeometry g = fzg(16, 0.1817);
+  EXPECT_NEAR(tooth_thickness(g, g.pitch_radius()), 7.663783994672554e-3, 1e-15);
+  const double r1 = 36.5e-3, r2 = 40e-3;
+  EXPECT_NEAR(tooth_thickness(g, r1) / r1 - tooth_thickness(g, r2) / r2,
+              2 * (involute(pressure_angle_at(g, r2)) - involute(pressure_angle_at(g, r1))), 1e-14);
+  // Tip thickness s_a / m = 0.5814177294402534 (hand formula), above the 0.2 m limit.
+  EXPECT_NEAR(tooth_thickness(g, g.tip_radius()) / g.module, 0.5814177294402534, 1e-12);
+}
+
+// Undercut limit (Niemann & Winter §21.2): z_min = 2 (hf* - rho* (1 - sin a) - x) / sin^2 a;
+// for the standard rack (1.25, 0.38) h* = 1.0000 and z_min(x = 0) = 17.0967 (the
+// textbook 2 / sin^2(20 deg) = 17.097 with ha* = 1).
+TEST(Geometry, UndercutLimit) {
+  EXPECT_NEAR(undercut_limit_teeth(1.25, 0.38, 0.0, 20.0), 17.096711320642623, 1e-12);
+  const double s2 = std::pow(std::sin(20 * M_PI / 180), 2);
+  EXPECT_NEAR(undercut_limit_teeth(1.25, 0.38, 0.3, 20.0), 17.096711320642623 - 0.6 / s2, 1e-12);
+}
+
+TEST(Geometry, TipReliefLaw) {
+  TipRelief r;
+  r.amount = 10e-6;
+  r.start_roll = 20e-3;
+  r.tip_roll = 30e-3;
+  EXPECT_EQ(tip_relief_at(r, 19e-3), 0.0);
+  EXPECT_NEAR(tip_relief_at(r, 25e-3), 5e-6, 1e-18);
+  EXPECT_NEAR(tip_relief_at(r, 30e-3), 10e-6, 1e-18);
+  r.shape = ReliefShape::parabolic;
+  EXPECT_NEAR(tip_relief_at(r, 25e-3), 2.5e-6, 1e-18);
+  const GearGeometry g;   // thesis gear: rb = 70.4769 mm, ra = 78 mm
+  EXPECT_NEAR(relief_start_roll(g, ReliefStart::length, 5e-3), 33.42155e-3 - 5e-3, 1e-8);
+  EXPECT_NEAR(relief_start_roll(g, ReliefStart::diameter, 2 * 76e-3),
+              std::sqrt(76e-3 * 76e-3 - g.base_radius() * g.base_radius()), 1e-15);
+  EXPECT_NEAR(relief_start_roll(g, ReliefStart::roll_angle_deg, 20.0), g.base_radius() * 20 * M_PI / 180, 1e-15);
+}
+
+// The checks name the key of the gear-pair file.
+TEST(Geometry, GearPairChecks) {
+  const GearGeometry g;   // thesis gear: passes
+  const PathOfContact p = path_of_contact(g, g);
+  EXPECT_EQ(gear_pair_problem(g, g, p, {}, {}).key, "");
+  GearGeometry pointed = g;
+  pointed.teeth = 20;
+  pointed.profile_shift = 1.0;   // s(ra) = 0.164 m < 0.2 m (hand formula)
+  EXPECT_EQ(gear_pair_problem(pointed, g, path_of_contact(pointed, g), {}, {}).key, "gears.0.x");
+  GearGeometry short_teeth = g;
+  short_teeth.addendum = 0.4 * g.module;   // eps < 1
+  const PathOfContact ps = path_of_contact(short_teeth, short_teeth);
+  EXPECT_LT(ps.contact_ratio, 1.0);
+  EXPECT_EQ(gear_pair_problem(short_teeth, short_teeth, ps, {}, {}).key, "gears");
+  // Small pinion, large wheel at the standard centre distance: the wheel's tip
+  // reaches beyond T1 (z1 = 10, z2 = 100, x = 0: T1A < 0).
+  GearGeometry pin = g, wheel = g;
+  pin.teeth = 10;
+  wheel.teeth = 100;
+  EXPECT_EQ(gear_pair_problem(pin, wheel, path_of_contact(pin, wheel), {}, {}).key, "gears.1.z");
+  // A relief longer than the path: starts below A on gear 1.
+  TipRelief r;
+  r.amount = 10e-6;
+  r.tip_roll = p.T1E;
+  r.start_roll = p.T1A - 1e-4;
+  EXPECT_EQ(gear_pair_problem(g, g, p, r, {}).key, "gears.0.tip_relief");
+  r.start_roll = p.T1A + 1e-4;
+  EXPECT_EQ(gear_pair_problem(g, g, p, r, {}).key, "");
+  // Centre distance pulled in: no tip clearance.
+  EXPECT_EQ(gear_pair_problem(g, g, path_of_contact(g, g, 0.1485), {}, {}).key, "centre_distance");
+}
+
+// Normal backlash from tooth-thickness allowances. At the centre distance the shifts
+// imply, j_n = -(A_s1 + A_s2) cos(alpha) (the base-circle thickness reductions). Moving
+// the centre distance out by da opens it by 2 da sin(alpha_w) to first order (the
+// gears part along the line of action on both flanks: d j_n / da = 2 sin(alpha_w),
+// from d(inv alpha_w)/da = tan^2(alpha_w) d(alpha_w)/da and cos(alpha_w) = (rb1 + rb2)/a).
+TEST(Geometry, NormalBacklashFromAllowances) {
+  const GearGeometry g1 = fzg(16, 0.1817), g2 = fzg(24, 0.1715);
+  const PathOfContact p0 = path_of_contact(g1, g2);
+  const double c = std::cos(20 * M_PI / 180);
+  EXPECT_NEAR(normal_backlash(g1, g2, p0, -50e-6, -70e-6), 120e-6 * c, 1e-15);
+  EXPECT_NEAR(normal_backlash(g1, g2, p0, 0.0, 0.0), 0.0, 1e-15);
+  const double da = 1e-6;
+  const PathOfContact p1 = path_of_contact(g1, g2, p0.mesh.centre_distance + da);
+  EXPECT_NEAR(normal_backlash(g1, g2, p1, 0.0, 0.0), 2 * da * std::sin(p0.mesh.pressure_angle), 1e-3 * 2 * da);
+}

@@ -23,9 +23,6 @@ std::string Range::violation(double v) const {
     case Kind::nonnegative:
       if (v < 0.0) return "must be >= 0";
       return "";
-    case Kind::at_least:
-      if (v < lo) { os << "must be >= " << lo; return os.str(); }
-      return "";
     case Kind::between:
       if (v < lo || v > hi) { os << "must be in [" << lo << ", " << hi << "]"; return os.str(); }
       return "";
@@ -174,7 +171,6 @@ std::string ParameterSet::help_text() const {
       switch (e.range.kind) {
         case Range::Kind::positive: r << " (> 0)"; break;
         case Range::Kind::nonnegative: r << " (>= 0)"; break;
-        case Range::Kind::at_least: r << " (>= " << e.range.lo << ")"; break;
         case Range::Kind::between: r << " (" << e.range.lo << " to " << e.range.hi << ")"; break;
         default: break;
       }

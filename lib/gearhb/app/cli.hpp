@@ -28,12 +28,11 @@ struct UsageError : std::runtime_error {
 
 // Admissible range of a parameter.
 struct Range {
-  enum class Kind { any, positive, nonnegative, at_least, between } kind = Kind::any;
+  enum class Kind { any, positive, nonnegative, between } kind = Kind::any;
   double lo = 0.0, hi = 0.0;
   static Range any() { return {}; }
   static Range positive() { return {Kind::positive}; }
   static Range nonnegative() { return {Kind::nonnegative}; }
-  static Range at_least(double v) { return {Kind::at_least, v}; }
   static Range between(double a, double b) { return {Kind::between, a, b}; }
   // A mass [kg] or polar inertia [kg m^2]: 1e-9 ... 1e9 holds every machine part and
   // keeps a model's natural frequencies inside double precision (a denormal mass
@@ -76,7 +75,6 @@ class ParameterSet {
   const std::vector<std::pair<std::string, std::string>>& unregistered() const { return unregistered_; }
 
   bool was_set(const std::string& name) const;
-  bool any_set() const { return !overridden_.empty(); }
   std::string help_text() const;     // one line per parameter: name, default, unit, meaning
   nlohmann::json to_json() const;    // {"name": {"value": v, "unit": u}}
 

@@ -34,6 +34,8 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "gearhb/app/json_file.hpp"   // read_json_file, max_json_depth
+
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
@@ -57,12 +59,6 @@ struct ModelFile {
 // the file and the key.
 ModelFile read_model_file(const std::string& path,
                           const std::vector<std::pair<std::string, std::string>>& overrides);
-
-// A JSON input file (a model file, a gear file): a regular file of at most 16 MiB,
-// nested at most max_json_depth levels, no key twice in one object. Throws
-// UsageError naming the path and what is wrong.
-constexpr int max_json_depth = 32;
-nlohmann::json read_json_file(const std::string& path);
 
 // Text for --help: every key, its unit and meaning.
 std::string model_file_help();

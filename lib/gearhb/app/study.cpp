@@ -278,4 +278,18 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   return 0;
 }
 
+void file_program(Study& study, const std::string& what, int* plot, std::function<void()> read) {
+  ParameterSet& P = study.parameters();
+  P.keep_unregistered();   // --set PATH=VALUE addresses the file
+  P.group("program");
+  P.add("plot", plot, "-", "1 draw the figures into DIR (needs python3-matplotlib), 0 data only", Range::between(0, 1));
+  study.positional(what);
+  study.check([read = std::move(read)](const Selection&) { read(); });
+}
+
+void draw_with_script(const Run& run, const std::string& script, const std::string& what) {
+  if (script.empty() || !run_program_quietly({"/usr/bin/python3", script, run.staging_path()}))
+    run.say(what + " not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
+}
+
 }  // namespace gearhb

@@ -119,4 +119,16 @@ class Study {
   std::string help_text() const;
 };
 
+// A program that reads one input file (gearhb_frc's model, gearhb_gear's gear pair):
+// registers the file as the positional argument `what`, lets --set PATH=VALUE address
+// the file (ParameterSet::keep_unregistered), adds the `plot` switch (1 draw the
+// figures, 0 data only) and runs `read` among the study's checks, so a bad file
+// exits 2 before anything is written.
+void file_program(Study& study, const std::string& what, int* plot, std::function<void()> read);
+
+// Draw the figures of a run: /usr/bin/python3 SCRIPT STAGING (the script writes its
+// PNGs into the staging folder). Says `what` was not drawn when the script is empty
+// or fails; never fails the run.
+void draw_with_script(const Run& run, const std::string& script, const std::string& what);
+
 }  // namespace gearhb

@@ -2,12 +2,23 @@
 
 #include <cmath>
 #include <complex>
+#include <mutex>
 #include <stdexcept>
 #include <string>
 
 #include <fftw3.h>
 
 namespace gearhb {
+
+namespace {
+// FFTW's planner is not thread-safe (FFTW manual, "Thread safety": only fftw_execute
+// is); creating and destroying plans is serialised here so that Aft objects, and the
+// models that own them, can be built on several threads at once.
+std::mutex& fftw_planner_mutex() {
+  static std::mutex m;
+  return m;
+}
+}  // namespace
 
 struct Aft::Plans {
   int N = 0;
@@ -18,11 +29,12 @@ struct Aft::Plans {
   explicit Plans(int n) : N(n) {
     real = fftw_alloc_real(N);
     spec = fftw_alloc_complex(N / 2 + 1);
-    // Plan creation is not thread-safe in FFTW; Aft objects are built serially.
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     forward = fftw_plan_dft_r2c_1d(N, real, spec, FFTW_ESTIMATE);
     backward = fftw_plan_dft_c2r_1d(N, spec, real, FFTW_ESTIMATE);
   }
   ~Plans() {
+    const std::lock_guard<std::mutex> lock(fftw_planner_mutex());
     fftw_destroy_plan(forward);
     fftw_destroy_plan(backward);
     fftw_free(real);

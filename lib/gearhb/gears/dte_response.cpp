@@ -5,8 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/Eigenvalues>
-
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -173,8 +172,9 @@ DteFloquetCheck dte_floquet_check(const HarmonicBalance& hb, const FrequencyCurv
     if (i == P.size()) continue;
     Eigen::VectorXd x0, v0;
     hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
-    const Eigen::VectorXcd mu =
-        Eigen::EigenSolver<Eigen::MatrixXd>(ti.monodromy(x0, v0, P[i].omega, opt), false).eigenvalues();
+    const Eigen::VectorXcd mu = general_eigenvalues(ti.monodromy(x0, v0, P[i].omega, opt),
+                                                    "monodromy by time integration at omega = " +
+                                                        std::to_string(P[i].omega) + " rad/s");
     DteFloquetComparison row;
     row.omega = P[i].omega;
     row.contact = ev.summarize(P[i].X).contact;

@@ -1,12 +1,10 @@
 #include "gearhb/gears/ste.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 #include <string>
-
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_roots.h>
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/gsl_errors.hpp"
@@ -27,20 +25,25 @@ double SteModel::force(double torque) const {
 }
 
 ToothBeam tooth_beam(const SteModel& m) {
-  const int ne = m.elements();
+  return tooth_beam(m.gear, m.youngs_modulus, m.elements(), m.thickness_at,
+                    m.constant_thickness ? m.constant_thickness_value : 0.0);
+}
+
+ToothBeam tooth_beam(const GearGeometry& g, double E, int ne, ThicknessAt at, double constant_thickness) {
   if (ne < 2) throw std::invalid_argument("tooth_beam: need at least 2 elements");
-  const double h = m.gear.tooth_height(), L = h / ne, rf = m.gear.root_radius();
-  const double b = m.gear.face_width, E = m.youngs_modulus;
+  const double rf = g.root_radius(), rb = g.base_radius(), h = g.tooth_height(), L = h / ne;   // ra - rf
+  const double b = g.face_width;
+  if (!(h > 0.0)) throw std::invalid_argument("tooth_beam: tooth height ha + hf must be > 0");
   ToothBeam t;
   for (int i = 0; i <= ne; ++i) t.x.push_back(i * L);
   for (int e = 0; e < ne; ++e) {
-    double s = m.constant_thickness_value;
-    if (!m.constant_thickness) {
+    double s = constant_thickness;
+    if (!(constant_thickness > 0.0)) {
       const double r0 = rf + t.x[e], r1 = rf + t.x[e + 1];
-      const double r = m.thickness_at == ThicknessAt::element_root_node ? r0
-                       : m.thickness_at == ThicknessAt::element_tip_node ? r1
-                                                                         : 0.5 * (r0 + r1);
-      s = tooth_thickness(m.gear, r);
+      const double r = at == ThicknessAt::element_root_node ? r0
+                       : at == ThicknessAt::element_tip_node ? r1
+                                                             : 0.5 * (r0 + r1);
+      s = tooth_thickness(g, std::max(r, rb));
     }
     if (!(s > 0.0)) throw std::invalid_argument("tooth_beam: tooth thickness <= 0 (pointed tooth)");
     t.s.push_back(s);
@@ -104,47 +107,18 @@ double fused_pair_stiffness_closed_form(const ToothBeam& t, int k1, int k2) {
   return stepped_clamped_guided_stiffness(x, EI);
 }
 
-struct SplitData {
-  double kA, kB, F, length;
-  int nh;
-};
-// g(F_A) = X_A(F_A) - X_B(F - F_A), increasing in F_A.
-double split_residual(double FA, void* p) {
-  const auto* d = static_cast<SplitData*>(p);
-  const double FB = d->F - FA;
-  return FA / d->kA + d->nh * palmgren_line_contact_approach(FA, d->length) -
-         (FB / d->kB + d->nh * palmgren_line_contact_approach(FB, d->length));
-}
-
-// Force of pair A such that both pairs close the same approach (GSL Brent on
-// [0, F]; g(0) < 0 < g(F) since both approaches grow with the force).
+// Force of pair A such that both pairs close the same approach:
+// g(F_A) = X_A(F_A) - X_B(F - F_A), increasing in F_A, g(0) < 0 < g(F) since both
+// approaches grow with the force (GSL Brent on [0, F], 1e-13 relative).
 double consistent_split(double kA, double kB, double F, double length, int nh) {
   char force[32];
   std::snprintf(force, sizeof force, "%g", F);
-  const std::string where = std::string("consistent two-pair force split (F = ") + force + " N)";
-  SplitData d{kA, kB, F, length, nh};
-  if (!std::isfinite(split_residual(0.0, &d)) || !std::isfinite(split_residual(F, &d)))
-    throw std::runtime_error(where + ": the approach is not finite at the ends of [0, F]");
-  const GslErrorsReturned gsl_policy;
-  gsl_function fn{&split_residual, &d};
-  gsl_root_fsolver* s = gsl_root_fsolver_alloc(gsl_root_fsolver_brent);
-  if (!s) throw std::runtime_error(where + ": GSL could not allocate the Brent solver");
-  double root = 0.5 * F;
-  bool converged = false;
-  int status = gsl_root_fsolver_set(s, &fn, 0.0, F);
-  for (int it = 0; it < 200 && status == GSL_SUCCESS && !converged; ++it) {
-    status = gsl_root_fsolver_iterate(s);
-    if (status != GSL_SUCCESS) break;
-    root = gsl_root_fsolver_root(s);
-    const int test = gsl_root_test_interval(gsl_root_fsolver_x_lower(s), gsl_root_fsolver_x_upper(s), 0.0, 1e-13);
-    converged = test == GSL_SUCCESS;
-    if (!converged && test != GSL_CONTINUE) status = test;
-  }
-  gsl_root_fsolver_free(s);
-  gsl_check(status, where);
-  if (!converged)
-    throw std::runtime_error(where + ": Brent did not narrow the force of pair A to 1e-13 relative in 200 iterations");
-  return root;
+  auto residual = [&](double FA) {
+    const double FB = F - FA;
+    return FA / kA + nh * palmgren_line_contact_approach(FA, length) -
+           (FB / kB + nh * palmgren_line_contact_approach(FB, length));
+  };
+  return brent_root(residual, 0.0, F, 1e-13, std::string("consistent two-pair force split (F = ") + force + " N)", 200);
 }
 
 }  // namespace

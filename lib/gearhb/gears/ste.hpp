@@ -80,6 +80,16 @@ struct ToothBeam {
   std::vector<double> s;    // thickness used per element [m]
 };
 ToothBeam tooth_beam(const SteModel& m);
+// The same beam for any gear (each gear of a pair its own, issue 20): n_e equal
+// elements from the root circle rf to the tip circle ra, element thickness s(r)
+// (gear_geometry.hpp, with the profile shift) at the radius `at` picks, EI = E b s^3/12.
+// Below the base circle (rf < rb, small or shifted-in gears) the involute and
+// s(r) do not exist: there the beam keeps s(rb) (a constant-thickness root part,
+// the straight-flank simplification of the potential-energy literature, e.g. Tian
+// 2004 / Wan et al. 2014: the flank between root and base circle drawn as a
+// straight line). constant_thickness > 0 replaces s(r) by that value (§7.4).
+ToothBeam tooth_beam(const GearGeometry& g, double youngs_modulus, int elements, ThicknessAt at,
+                     double constant_thickness = 0.0);
 
 // One pair in contact at driving node k1, driven node k2 (counted from the
 // roots): the 2-beam model of §7.4 with force F.

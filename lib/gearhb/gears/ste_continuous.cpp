@@ -8,6 +8,7 @@
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/gears/gear_geometry.hpp"
 #include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/load_sharing.hpp"
 #include "gearhb/gears/tooth_fe.hpp"
 
 namespace gearhb {
@@ -32,53 +33,68 @@ std::pair<int, double> locate(const ToothBeam& t, double a) {
   return {e, (a - t.x[e]) / (t.x[e + 1] - t.x[e])};
 }
 
-// Nodal (w, theta) of the element e for a cantilever loaded by the nodal loads
-// `load` (4 values on the element's DOFs).
-Eigen::Vector4d loaded_element(const ToothBeam& t, int e, const Eigen::Vector4d& load) {
-  BeamModel m;
-  const int b = m.add_beam(t.x, t.EI);
-  m.clamp(m.node(b, 0));
-  m.add_force(m.node(b, e), load[0]);
-  m.add_moment(m.node(b, e), load[1]);
-  m.add_force(m.node(b, e + 1), load[2]);
-  m.add_moment(m.node(b, e + 1), load[3]);
-  const BeamModel::Solution s = m.solve();
-  const int n1 = m.node(b, e), n2 = m.node(b, e + 1);
-  return {s.Q[BeamModel::w_dof(n1)], s.Q[BeamModel::theta_dof(n1)], s.Q[BeamModel::w_dof(n2)],
-          s.Q[BeamModel::theta_dof(n2)]};
-}
-
-double hertz_two_pairs(const SteModel& m, double FA, double FB) {
-  const double b = m.gear.face_width, nh = double(int(m.hertz));
-  switch (m.two_pair_hertz) {
-    case TwoPairHertz::equal_split: return nh * palmgren_line_contact_approach(0.5 * (FA + FB), b);
-    case TwoPairHertz::fe_split_mean:
-      return nh * 0.5 * (palmgren_line_contact_approach(FA, b) + palmgren_line_contact_approach(FB, b));
-    case TwoPairHertz::consistent: break;
-  }
-  throw std::invalid_argument("ste_continuous: the consistent two-pair Hertz split is not offered");
-}
-
 }  // namespace
 
-Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a) {
+ToothCompliance::ToothCompliance(const ToothBeam& tooth) : tooth_(tooth) {
   if (tooth.x.size() < 2) throw std::invalid_argument("tooth_flexibility: the beam needs an element");
+  BeamModel m;
+  m.add_beam(tooth.x, tooth.EI);
+  const Eigen::MatrixXd K = m.stiffness();
+  const int n = int(K.rows()) - 2;   // root node clamped: its w and theta removed
+  ldlt_.compute(K.bottomRightCorner(n, n));
+  if (ldlt_.info() != Eigen::Success) throw std::runtime_error("tooth_flexibility: the cantilever is singular");
+}
+
+Eigen::Matrix2d ToothCompliance::at(double a) const {
+  const ToothBeam& tooth = tooth_;
   if (!(a > 0.0) || a > tooth.x.back() * (1 + 1e-12))
     throw std::invalid_argument("tooth_flexibility: load height " + std::to_string(a) +
                                 " m is not on the tooth (0, " + std::to_string(tooth.x.back()) + "]");
   const auto [e, xi] = locate(tooth, a);
   const double L = tooth.x[e + 1] - tooth.x[e];
   const Eigen::Vector4d N = shape(xi, L), dN = shape_dx(xi, L);
-  const Eigen::Vector4d qF = loaded_element(tooth, e, N), qM = loaded_element(tooth, e, dN);
+  // Consistent nodal loads of a unit force (N) and a unit moment (N') on element e,
+  // DOFs 2e..2e+3 of the beam, 2 less in the clamped system.
+  const int n = int(ldlt_.rows());
+  Eigen::MatrixXd f = Eigen::MatrixXd::Zero(n, 2);
+  for (int k = 0; k < 4; ++k) {
+    const int d = 2 * e + k - 2;
+    if (d < 0) continue;
+    f(d, 0) = N[k];
+    f(d, 1) = dN[k];
+  }
+  const Eigen::MatrixXd q = ldlt_.solve(f);
+  Eigen::Matrix<double, 4, 2> qe = Eigen::Matrix<double, 4, 2>::Zero();
+  for (int k = 0; k < 4; ++k) {
+    const int d = 2 * e + k - 2;
+    if (d >= 0) qe.row(k) = q.row(d);
+  }
   Eigen::Matrix2d G;
-  G << N.dot(qF), N.dot(qM), dN.dot(qF), dN.dot(qM);
+  G << N.dot(qe.col(0)), N.dot(qe.col(1)), dN.dot(qe.col(0)), dN.dot(qe.col(1));
   return G;
 }
 
+Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a) { return ToothCompliance(tooth).at(a); }
+
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2) {
+  return fused_pair_stiffness(tooth, a1, tooth, a2);
+}
+
+double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2) {
+  return fused_pair_stiffness(tooth_flexibility(driving, a1), tooth_flexibility(driven, a2));
+}
+
+double fused_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2) {
   const Eigen::Matrix2d D = Eigen::Vector2d(1.0, -1.0).asDiagonal();
-  const Eigen::Matrix2d G = tooth_flexibility(tooth, a1) + D * tooth_flexibility(tooth, a2) * D;
-  return G.inverse()(0, 0);
+  return (G1 + D * G2 * D).inverse()(0, 0);
+}
+
+double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2) {
+  return cantilever_pair_stiffness(tooth_flexibility(driving, a1), tooth_flexibility(driven, a2));
+}
+
+double cantilever_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2) {
+  return 1.0 / (G1(0, 0) + G2(0, 0));
 }
 
 double single_pair_elastic(const SteModel& m, const ToothBeam& tooth, double s, double F) {
@@ -92,38 +108,49 @@ double single_pair_ste(const SteModel& m, const ToothBeam& tooth, double s, doub
          double(int(m.hertz)) * palmgren_line_contact_approach(F, m.gear.face_width);
 }
 
+namespace {
+
+// ch. 7's model as the identical-gear pair.
+PairSteModel pair_of(const SteModel& m) {
+  PairSteModel p;
+  p.gear1 = p.gear2 = m.gear;
+  p.youngs_modulus1 = p.youngs_modulus2 = m.youngs_modulus;
+  p.tooth_elements = m.elements();
+  p.thickness_at = m.thickness_at;
+  p.hertz = m.hertz;
+  p.pair_hertz = m.two_pair_hertz;
+  p.pair_stiffness = PairStiffness::fused;
+  p.tooth_force = m.tooth_force;
+  return p;
+}
+
+}  // namespace
+
 std::vector<StePoint> ste_continuous(const SteModel& m, double torque, int samples) {
   if (samples < 4 || samples > 1 << 16)
     throw std::invalid_argument("ste_continuous: samples per mesh cycle must be in [4, 65536]");
   const ToothBeam tooth = tooth_beam(m);
-  const PathOfContact path = path_of_contact(m.gear, m.gear);
-  const double rf = m.gear.root_radius(), pb = path.base_pitch, F = m.force(torque);
-  const double nh = double(int(m.hertz)), b = m.gear.face_width;
+  const PairSteModel p = pair_of(m);
+  const double rf = m.gear.root_radius();
   std::vector<StePoint> out;
-  for (int j = 0; j < samples; ++j) {
-    StePoint p;
-    p.phase = double(j) / samples;
-    const double s = p.phase * pb;
-    const ContactRadii rA = contact_radii(m.gear, m.gear, s);
-    p.a1A = rA.r1 - rf;
-    p.a2A = rA.r2 - rf;
-    if (s + pb <= path.AE) {
-      const ContactRadii rB = contact_radii(m.gear, m.gear, s + pb);
-      p.pairs = 2;
-      p.a1B = rB.r1 - rf;
-      p.a2B = rB.r2 - rf;
-      const double kA = fused_pair_stiffness(tooth, p.a1A, p.a2A), kB = fused_pair_stiffness(tooth, p.a1B, p.a2B);
-      p.elastic = F / (kA + kB);
-      p.force_A = kA * p.elastic;
-      p.force_B = kB * p.elastic;
-      p.hertz = hertz_two_pairs(m, p.force_A, p.force_B);
-    } else {
-      p.elastic = single_pair_elastic(m, tooth, s, F);
-      p.force_A = F;
-      p.hertz = nh * palmgren_line_contact_approach(F, b);
+  for (const PairStePoint& q : pair_ste(p, mesh_phases(p, tooth, tooth, samples), torque)) {
+    StePoint o;
+    o.phase = q.mesh.phase;
+    o.pairs = int(q.mesh.pairs.size());
+    const PairContact& A = q.mesh.pairs[0];
+    o.a1A = A.r1 - rf;
+    o.a2A = A.r2 - rf;
+    o.force_A = A.force;
+    if (o.pairs > 1) {
+      const PairContact& B = q.mesh.pairs[1];
+      o.a1B = B.r1 - rf;
+      o.a2B = B.r2 - rf;
+      o.force_B = B.force;
     }
-    p.ste = p.elastic + p.hertz;
-    out.push_back(p);
+    o.elastic = q.approach;
+    o.hertz = q.hertz;
+    o.ste = q.ste;
+    out.push_back(o);
   }
   return out;
 }
@@ -154,6 +181,133 @@ double mean_stiffness(const std::vector<double>& ste, double F) {
   double sum = 0.0;
   for (double e : ste) sum += F / e;
   return sum / double(ste.size());
+}
+
+}  // namespace gearhb
+
+namespace gearhb {
+
+PathOfContact PairSteModel::path() const { return path_of_contact(gear1, gear2, centre_distance); }
+
+int PairSteModel::elements() const {
+  if (tooth_elements > 0) return tooth_elements;
+  // floor(8 eps_alpha): ch. 7's rule for its 8 positions per base pitch (14 for the thesis gear).
+  return int(std::floor(8 * path().contact_ratio + 1e-9));
+}
+
+double PairSteModel::force(double torque) const {
+  return tooth_force == ToothForce::over_pitch_radius ? torque / gear1.pitch_radius() : torque / gear1.base_radius();
+}
+
+double PairSteModel::contact_length() const { return std::min(gear1.face_width, gear2.face_width); }
+
+std::vector<MeshPhase> mesh_phases(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness) {
+  const int ne = m.elements();
+  return mesh_phases(m, tooth_beam(m.gear1, m.youngs_modulus1, ne, m.thickness_at),
+                     tooth_beam(m.gear2, m.youngs_modulus2, ne, m.thickness_at), samples, stiffness);
+}
+
+std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, const ToothBeam& t2, int samples,
+                                   const PairStiffnessFn& stiffness) {
+  const PathOfContact path = m.path();
+  const double rf1 = m.gear1.root_radius(), rf2 = m.gear2.root_radius();
+  const double rb1 = m.gear1.base_radius(), pb = path.base_pitch;
+  const ToothCompliance c1(t1), c2(t2);   // each cantilever factorised once
+  const PairStiffnessFn beams = [&](double r1, double r2, bool sharing) {
+    const Eigen::Matrix2d G1 = c1.at(r1 - rf1), G2 = c2.at(r2 - rf2);
+    if (sharing && m.pair_stiffness == PairStiffness::fused) return fused_pair_stiffness(G1, G2);
+    return cantilever_pair_stiffness(G1, G2);
+  };
+  const PairStiffnessFn& k = stiffness ? stiffness : beams;
+  // A contact point from the radii on both gears; separation from both reliefs.
+  auto contact = [&](double r1, double r2) {
+    PairContact c;
+    c.r1 = r1;
+    c.r2 = r2;
+    const double T1P = std::sqrt(std::max(0.0, r1 * r1 - rb1 * rb1));
+    c.s = T1P - path.T1A;
+    c.separation = tip_relief_at(m.relief1, T1P) + tip_relief_at(m.relief2, path.T1T2 - T1P);
+    return c;
+  };
+  std::vector<MeshPhase> out;
+  const int P = m.positions_per_base_pitch;
+  if (P > 0) {
+    // ch. 7's node reading (ste.hpp mesh_positions).
+    if (m.gear1.teeth != m.gear2.teeth || m.gear1.profile_shift != m.gear2.profile_shift || m.relief1.amount > 0 ||
+        m.relief2.amount > 0 || t1.x != t2.x || t1.EI != t2.EI)
+      throw std::invalid_argument("mesh_phases: the node reading needs identical gears without relief");
+    if (P < 2 || P > max_positions_per_base_pitch)
+      throw std::invalid_argument("mesh_phases: positions per base pitch outside [2, 128]");
+    const int ne = int(t1.x.size()) - 1;
+    if (ne < P || ne >= 2 * P)
+      throw std::invalid_argument("mesh_phases: the node reading needs P <= n_e < 2 P");
+    for (int j = 0; j < P; ++j) {
+      MeshPhase ph;
+      ph.phase = double(j) / P;
+      for (int k1 = j + 1; k1 <= ne; k1 += P) ph.pairs.push_back(contact(rf1 + t1.x[k1], rf2 + t2.x[ne + 1 - k1]));
+      const bool sharing = ph.pairs.size() > 1;
+      for (PairContact& c : ph.pairs) c.stiffness = k(c.r1, c.r2, sharing);
+      out.push_back(ph);
+    }
+    return out;
+  }
+  if (samples < 4 || samples > 1 << 16)
+    throw std::invalid_argument("mesh_phases: samples per mesh cycle must be in [4, 65536]");
+  for (int j = 0; j < samples; ++j) {
+    MeshPhase ph;
+    ph.phase = double(j) / samples;
+    for (double s = ph.phase * pb; s <= path.AE; s += pb) {
+      const ContactRadii r = contact_radii(m.gear1, m.gear2, path, s);
+      PairContact c = contact(r.r1, r.r2);
+      c.s = s;
+      ph.pairs.push_back(c);
+    }
+    const bool sharing = ph.pairs.size() > 1;
+    for (PairContact& c : ph.pairs) c.stiffness = k(c.r1, c.r2, sharing);
+    out.push_back(ph);
+  }
+  return out;
+}
+
+std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<MeshPhase>& phases, double torque) {
+  const double F = m.force(torque), L = m.contact_length();
+  std::vector<PairStePoint> out;
+  out.reserve(phases.size());
+  std::vector<ContactPair> pairs;
+  for (const MeshPhase& ph : phases) {
+    pairs.clear();
+    for (const PairContact& c : ph.pairs) pairs.push_back({c.stiffness, c.separation});
+    const LoadShare share = share_load(pairs, F, m.hertz, m.pair_hertz, L);
+    PairStePoint p;
+    p.mesh = ph;
+    for (std::size_t i = 0; i < pairs.size(); ++i) p.mesh.pairs[i].force = share.force[i];
+    p.loaded = share.loaded;
+    p.approach = share.approach;
+    p.hertz = share.hertz;
+    p.ste = share.ste;
+    out.push_back(std::move(p));
+  }
+  return out;
+}
+
+double single_pair_ste(const PairSteModel& m, double s, double torque) {
+  PairSteModel alone = m;
+  alone.relief1.amount = alone.relief2.amount = 0.0;
+  alone.positions_per_base_pitch = 0;
+  const int ne = alone.elements();
+  const ToothBeam t1 = tooth_beam(alone.gear1, alone.youngs_modulus1, ne, alone.thickness_at);
+  const ToothBeam t2 = tooth_beam(alone.gear2, alone.youngs_modulus2, ne, alone.thickness_at);
+  const PathOfContact path = alone.path();
+  const ContactRadii r = contact_radii(alone.gear1, alone.gear2, path, s);
+  const double k = cantilever_pair_stiffness(t1, r.r1 - alone.gear1.root_radius(), t2, r.r2 - alone.gear2.root_radius());
+  return share_load({{k, 0.0}}, alone.force(torque), alone.hertz, alone.pair_hertz, alone.contact_length()).ste;
+}
+
+double loaded_contact_ratio(const std::vector<PairStePoint>& cycle) {
+  if (cycle.empty()) return 0.0;
+  double sum = 0.0;
+  for (const auto& p : cycle) sum += p.loaded;
+  return sum / double(cycle.size());
 }
 
 }  // namespace gearhb

@@ -33,8 +33,15 @@
 //    (G1 + D G2 D) v = (X, 0), D = diag(1, -1), so the pair stiffness is
 //    k = [(G1 + D G2 D)^-1]_00; the pairs share F as k_A : k_B, X = F/(k_A + k_B);
 //  * Hertz: as in ch. 7 (SteModel::hertz, two_pair_hertz equal_split or
-//    fe_split_mean; the consistent split is not offered here).
+//    fe_split_mean, or the consistent split of load_sharing.hpp).
 // At loads on nodes the result equals ch. 7's FE exactly (unit tests).
+//
+// Since issue 20 this is one reading of the general pair below (PairSteModel:
+// two different gears, each with its own shift, thickness law and tip relief,
+// the load shared by the exact contact problem of load_sharing.hpp):
+// ste_continuous(SteModel) builds the identical-gear PairSteModel and runs
+// pair_ste, the same code the gear-pair program gearhb_gear runs.
+#include <functional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -46,9 +53,27 @@ namespace gearhb {
 // Flexibility of a tooth (root clamped) at height a above the root circle:
 // [[w/F, w/M], [theta/F, theta/M]] by the FE with Hermite shape functions.
 Eigen::Matrix2d tooth_flexibility(const ToothBeam& tooth, double a);
+// The same with the clamped cantilever's stiffness factorised once (LDLT), for many
+// load heights on one tooth: at(a) == tooth_flexibility(tooth, a) up to round-off.
+class ToothCompliance {
+ public:
+  explicit ToothCompliance(const ToothBeam& tooth);
+  Eigen::Matrix2d at(double a) const;
+
+ private:
+  ToothBeam tooth_;
+  Eigen::LDLT<Eigen::MatrixXd> ldlt_;
+};
 
 // Stiffness V/X of the fused pair (driving tooth loaded at a1, driven at a2).
 double fused_pair_stiffness(const ToothBeam& tooth, double a1, double a2);
+double fused_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2);
+// The two teeth as cantilevers in series (roots clamped, rotations free at the
+// contact): 1 / (G1_ww(a1) + G2_ww(a2)) [N/m] (ch. 7's one-pair model, §7.4).
+double cantilever_pair_stiffness(const ToothBeam& driving, double a1, const ToothBeam& driven, double a2);
+// Both from the two flexibilities at the load points.
+double fused_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2);
+double cantilever_pair_stiffness(const Eigen::Matrix2d& G1, const Eigen::Matrix2d& G2);
 
 // One pair alone touching at the point s from A of the path of contact (0 <= s <= AE):
 // the deflections of both teeth (roots clamped) at their load heights under F [m],
@@ -79,5 +104,85 @@ Eigen::VectorXd periodic_fourier(const std::vector<double>& samples, int H);
 
 // Mean over the samples of F / e [N/m] (thesis §8.1: k = (T/r)/V, misprinted (T/r) V).
 double mean_stiffness(const std::vector<double>& ste, double F);
+
+// ===========================================================================
+// A spur gear pair from its drawing (issue 20): gear 1 drives, gear 2 is driven.
+//
+// Kinematics as above, generalised: the pairs in contact at mesh phase phi touch
+// at s_k = (phi + k) pb from A (k = 0, 1, ... while s_k <= AE), pair k + 1 being
+// the one k base pitches ahead of the pair nearest A; each contact point P meets
+// gear 1 at radius r1 = sqrt(rb1^2 + T1P^2) and gear 2 at r2 = sqrt(rb2^2 + T2P^2),
+// the load heights on the two beams (tooth_beam(gear, ...), each gear its own)
+// are r_i - rf_i. The separation of a pair is the sum of both tip reliefs at P
+// (gear 1's at roll length T1P, gear 2's at T2P). The pair stiffnesses:
+//   fused        (thesis): in the geometric multi-pair zone each pair is ch. 7's
+//                fused beam [(G1 + D G2 D)^-1]_00 (§7.2), in the one-pair zone the
+//                two cantilevers in series 1 / (G1_ww + G2_ww) (§7.4);
+//   cantilevers  everywhere the two cantilevers in series (rotations free at the
+//                contact: the usual loaded-tooth-contact reading);
+//   or any PairStiffnessFn (the seam for another tooth model, e.g. the
+//   potential-energy method: it receives the contact radii on both gears and
+//   whether the phase has more than one pair geometrically in contact).
+// The load is shared by share_load (load_sharing.hpp: the exact contact problem).
+// `positions_per_base_pitch` P > 0 reads ch. 7's node positions instead (identical
+// gears, no relief: pair A at node j + 1 of the driving tooth and n_e - j of the
+// driven one, pair B P nodes further while on the tooth).
+// ===========================================================================
+enum class PairStiffness : int { fused = 0, cantilevers = 1 };
+
+// Elastic stiffness [N/m] of one pair touching gear 1 at radius r1 and gear 2 at r2.
+using PairStiffnessFn = std::function<double(double r1, double r2, bool sharing)>;
+
+struct PairSteModel {
+  GearGeometry gear1, gear2;                // driver, driven (shared module and pressure angle)
+  double centre_distance = 0.0;             // a [m]; 0 = the one the shifts imply
+  double youngs_modulus1 = 207e9, youngs_modulus2 = 207e9;   // E [Pa]
+  TipRelief relief1, relief2;               // gear_geometry.hpp; amount 0 = none
+  int tooth_elements = 0;                   // per tooth; 0 = floor(8 eps_alpha) (thesis: 14)
+  ThicknessAt thickness_at = ThicknessAt::element_root_node;
+  HertzCount hertz = HertzCount::per_tooth;
+  TwoPairHertz pair_hertz = TwoPairHertz::equal_split;
+  PairStiffness pair_stiffness = PairStiffness::fused;
+  ToothForce tooth_force = ToothForce::over_pitch_radius;   // T1 / r1 or T1 / rb1
+  int positions_per_base_pitch = 0;         // 0 = load moving continuously; P = ch. 7's node reading
+
+  PathOfContact path() const;
+  int elements() const;                     // n_e actually used
+  double force(double torque) const;        // tooth force [N] for gear 1's torque T1 [N m]
+  double contact_length() const;            // Hertz line length: the smaller face width [m]
+};
+
+struct PairContact {
+  double s = 0.0;              // distance from A along the path [m]
+  double r1 = 0.0, r2 = 0.0;   // contact radii on gear 1 and gear 2 [m]
+  double separation = 0.0;     // both tip reliefs at this point [m]
+  double stiffness = 0.0;      // elastic pair stiffness [N/m]
+  double force = 0.0;          // [N] (0 = open; set by pair_ste)
+};
+struct MeshPhase {
+  double phase = 0.0;          // in [0, 1)
+  std::vector<PairContact> pairs;   // geometric pairs, nearest A first
+};
+// The torque-independent part: phases, contact points, separations, stiffnesses.
+std::vector<MeshPhase> mesh_phases(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness = {});
+std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& tooth1, const ToothBeam& tooth2,
+                                   int samples, const PairStiffnessFn& stiffness = {});
+
+struct PairStePoint {
+  MeshPhase mesh;              // with each pair's force
+  int loaded = 0;              // pairs carrying load
+  double approach = 0.0, hertz = 0.0, ste = 0.0;   // [m] (load_sharing.hpp)
+};
+// The STE over the phases for gear 1's torque T1 [N m].
+std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<MeshPhase>& phases, double torque);
+
+// One pair alone touching at s from A (no relief, no neighbour): its STE [m] under
+// gear 1's torque T1 (the one-pair stiffness of the model's reading + its Hertz):
+// at the pitch point (s = AC) the "single-pair deflection" that sizes a Harris relief.
+double single_pair_ste(const PairSteModel& m, double s, double torque);
+
+// Loaded contact ratio: the mean number of loaded pairs over the phases (1 + the
+// fraction of the cycle with two pairs loaded when at most two touch).
+double loaded_contact_ratio(const std::vector<PairStePoint>& cycle);
 
 }  // namespace gearhb

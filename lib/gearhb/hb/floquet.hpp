@@ -81,7 +81,6 @@ class PiecewiseLinearFlow {
   void period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                   const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                   Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr) const;
-  int augmented_size() const { return dim_; }
   // States of the last omega whose propagator is diagonalised / uses Pade exponentials.
   int spectral_states() const;
   int pade_states() const;

@@ -50,6 +50,10 @@ struct Excitation {
   Eigen::VectorXd f0, fc, fs;
 };
 
+// Threads: a HarmonicBalance keeps work buffers (its own and its Aft's), so one object
+// is evaluated by one thread at a time. Build one model per thread: construction is
+// thread-safe (FFTW planning is serialised in core/fourier.cpp), and two threads with a
+// model each give the same results bit for bit (test_threads.cpp).
 class HarmonicBalance : public ParametricProblem {
  public:
   // N = 0: Aft::default_samples(H) = 4 (2H+1) time samples per period.

@@ -47,18 +47,6 @@ Eigen::VectorXd square_wave_stiffness(double a, double b, int P) {
   return k;
 }
 
-double mathieu_transition_a(int which, double q) {
-  const double q2 = q * q, q3 = q2 * q, q4 = q2 * q2, q5 = q4 * q;
-  switch (which) {
-    case 0: return -q2 / 2 + 7 * q4 / 128 - 29 * q4 * q2 / 2304;
-    case 1: return 1 - q - q2 / 8 + q3 / 64 - q4 / 1536 - 11 * q5 / 36864;
-    case 2: return 1 + q - q2 / 8 - q3 / 64 - q4 / 1536 + 11 * q5 / 36864;
-    case 3: return 4 - q2 / 12 + 5 * q4 / 13824;
-    case 4: return 4 + 5 * q2 / 12 - 763 * q4 / 13824;
-    default: throw std::invalid_argument("mathieu_transition_a: which in 0..4");
-  }
-}
-
 namespace {
 // Transfer matrix of y'' + lambda y = 0 over a time tau (complex frequency for lambda < 0).
 Eigen::Matrix2cd transfer(double lambda, double tau) {

@@ -30,10 +30,6 @@ Eigen::MatrixXd linear_periodic_jacobian(const Eigen::MatrixXd& M, const Eigen::
 // Fourier coefficients [k0, a1, b1, ..., aP, bP] of a + b sgn(cos theta).
 Eigen::VectorXd square_wave_stiffness(double a, double b, int P);
 
-// Mathieu transition curves a(q) (A&S 20.2.25): which = 0 for a_0, 1 for b_1
-// (lower edge of the first tongue), 2 for a_1, 3 for b_2, 4 for a_2.
-double mathieu_transition_a(int which, double q);
-
 // Trace of the monodromy matrix of y'' + (a + b sgn(cos t)) y = 0 over 2 pi.
 double meissner_trace(double a, double b);
 

@@ -1,0 +1,259 @@
+// ===========================================================================
+// gearhb_gear: a spur gear pair from its drawing
+// ===========================================================================
+//
+// From a gear-pair file (gear_file.hpp; README "A gear pair from its drawing"):
+// the involute geometry of the pair (shifted gears at any centre distance, path of
+// contact A-B-C-D-E, contact ratio, undercut), the loaded static transmission
+// error STE(theta) over the mesh cycle for each torque with chapter 7's beam
+// model generalised to two different teeth and tip relief (ste_continuous.hpp
+// PairSteModel; the load shared between the pairs by the exact contact problem of
+// load_sharing.hpp), the mesh stiffness k = F / STE, the load share of each pair,
+// the loaded contact ratio, the STE spectrum per mesh order, the Harris map (STE
+// peak-to-peak against torque with and without the file's relief), and ISO 6336-1
+// method B's c'_th, c' and c_gamma_alpha for the same pair.
+//
+// Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
+// written), geometry, transmission_error, iso6336, harris_map, draw.
+//
+// Sample runs:
+//   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
+//   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c.json --set torques.0=150 --out /tmp/fzg
+// ===========================================================================
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <numeric>
+#include <string>
+
+#include "gearhb/app/gear_file.hpp"
+#include "gearhb/app/study.hpp"
+#include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/ste_continuous.hpp"
+
+#ifndef GEARHB_FIGURES_DIR
+#define GEARHB_FIGURES_DIR ""
+#endif
+
+using namespace gearhb;
+
+namespace {
+
+constexpr int kMaxOrders = 20;   // mesh orders written to spectrum.csv (at most what the phases carry)
+
+double peak_to_peak(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return *hi - *lo;
+}
+
+class GearPairFromFile {
+ public:
+  explicit GearPairFromFile(Study& study);
+  void run(Run& run);
+
+ private:
+  Study& study_;
+  int plot_ = 1;
+  GearFile file_;
+
+  void read_gear();
+  void geometry(Run& run) const;
+  void transmission_error(Run& run) const;
+  void iso6336(Run& run) const;
+  void harris_map(Run& run) const;
+  void draw(Run& run) const;
+};
+
+GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
+  file_program(study, "GEAR.json", &plot_, [this] { read_gear(); });
+}
+
+void GearPairFromFile::run(Run& run) {
+  run.write_text("params.json", file_.resolved.dump(2) + "\n");
+  geometry(run);
+  transmission_error(run);
+  iso6336(run);
+  harris_map(run);
+  if (plot_) draw(run);
+}
+
+// Step 1 (in the checks, before anything is written): the file, the overrides, every check.
+void GearPairFromFile::read_gear() {
+  file_ = read_gear_file(study_.positional(), study_.parameters().unregistered());
+}
+
+// Step 2: the involute geometry of the pair; path_of_contact.csv, key numbers.
+void GearPairFromFile::geometry(Run& run) const {
+  const PairSteModel& m = file_.pair;
+  const PathOfContact p = m.path();
+  KeyNumbers& key = run.key_numbers();
+  key.add("centre_distance_m", p.mesh.centre_distance, "m");
+  key.add("operating_pressure_angle_deg", p.mesh.pressure_angle * 180.0 / M_PI, "deg");
+  key.add("contact_ratio", p.contact_ratio, "-");
+  key.add("path_of_contact_m", p.AE, "m");
+  key.add("base_pitch_m", p.base_pitch, "m");
+  const GearGeometry* g[2] = {&m.gear1, &m.gear2};
+  int undercut = 0;
+  for (int i = 0; i < 2; ++i) {
+    const std::string n = std::to_string(i + 1);
+    key.add("base_radius_" + n + "_m", g[i]->base_radius(), "m");
+    key.add("tip_radius_" + n + "_m", g[i]->tip_radius(), "m");
+    key.add("root_radius_" + n + "_m", g[i]->root_radius(), "m");
+    key.add("operating_pitch_radius_" + n + "_m", i == 0 ? p.mesh.pitch_radius1 : p.mesh.pitch_radius2, "m");
+    key.add("tip_thickness_" + n + "_m", tooth_thickness(*g[i], g[i]->tip_radius()), "m");
+    const double z_min = undercut_limit_teeth(file_.dedendum_coefficient, file_.root_radius_coefficient,
+                                              g[i]->profile_shift, g[i]->pressure_angle_deg);
+    key.add("undercut_z_min_" + n, z_min, "-");
+    if (g[i]->teeth < z_min) {
+      undercut = 1;
+      run.say("WARNING gear " + n + ": z = " + std::to_string(g[i]->teeth) + " < z_min = " + std::to_string(z_min) +
+              ": the involute is undercut near the root (the beam model keeps the full involute)");
+    }
+  }
+  key.add("undercut", undercut, "-");
+  key.add("normal_backlash_m", file_.backlash, "m");
+  key.add("tooth_elements", m.elements(), "-");
+  // The points of the path: distance from T1 and the radius on each gear.
+  Table t({"point", "T1_distance_m", "s_from_A_m", "r1_m", "r2_m"});
+  const std::pair<const char*, double> points[] = {
+      {"A", p.T1A}, {"B", p.T1B}, {"C", p.T1C}, {"D", p.T1D}, {"E", p.T1E}};
+  for (const auto& [name, T1P] : points) {
+    const ContactRadii r = contact_radii(m.gear1, m.gear2, p, T1P - p.T1A);
+    t.add_row({std::string(name), T1P, T1P - p.T1A, r.r1, r.r2});
+  }
+  run.write("path_of_contact.csv", t);
+  run.say(file_.name + ": a = " + std::to_string(p.mesh.centre_distance * 1e3) + " mm, alpha_w = " +
+          std::to_string(p.mesh.pressure_angle * 180 / M_PI) + " deg, eps_alpha = " + std::to_string(p.contact_ratio));
+}
+
+// Step 3: STE(theta), k(theta) and the load shares per torque; the spectrum.
+void GearPairFromFile::transmission_error(Run& run) const {
+  const PairSteModel& m = file_.pair;
+  const std::vector<MeshPhase> phases = run.timed("mesh_phases", [&] { return mesh_phases(m, file_.phases); });
+  std::size_t pairs = 0;
+  for (const auto& ph : phases) pairs = std::max(pairs, ph.pairs.size());
+  const int H = std::min(kMaxOrders, (int(phases.size()) - 2) / 2);
+  std::vector<std::string> spectrum_columns{"order"};
+  std::vector<Eigen::VectorXd> spectra;
+  KeyNumbers& key = run.key_numbers();
+  const PathOfContact path = m.path();
+  for (std::size_t i = 0; i < file_.torques.size(); ++i) {
+    const double T = file_.torques[i], F = m.force(T);
+    const std::string n = std::to_string(i + 1);
+    const std::vector<PairStePoint> c = run.timed("ste_" + n, [&] { return pair_ste(m, phases, T); });
+    std::vector<std::string> columns{"phase", "ste_um", "k_N_per_m"};
+    for (std::size_t k = 0; k < pairs; ++k) columns.push_back("share_pair_" + std::to_string(k + 1));
+    columns.push_back("loaded_pairs");
+    for (std::size_t k = 0; k < pairs; ++k) columns.push_back("separation_um_" + std::to_string(k + 1));
+    Table t(columns);
+    std::vector<double> ste;
+    for (const auto& p : c) {
+      // Shares of the pairs present (0 for a pair not on the path at this phase),
+      // the count of loaded pairs, the separations (empty for a pair not on the path).
+      std::vector<Table::Cell> row(columns.size(), Table::Cell(0.0));
+      row[0] = p.mesh.phase;
+      row[1] = p.ste * 1e6;
+      row[2] = F / p.ste;
+      row[3 + pairs] = long(p.loaded);
+      for (std::size_t k = 0; k < pairs; ++k) {
+        const bool on = k < p.mesh.pairs.size();
+        if (on) row[3 + k] = p.mesh.pairs[k].force / F;
+        row[4 + pairs + k] = cell(on, on ? p.mesh.pairs[k].separation * 1e6 : 0.0);
+      }
+      t.add_row(row);
+      ste.push_back(p.ste);
+    }
+    run.write("ste_" + n + ".csv", t);
+    const double mean = std::accumulate(ste.begin(), ste.end(), 0.0) / double(ste.size());
+    key.add("torque_Nm_" + n, T, "N m");
+    key.add("tooth_force_N_" + n, F, "N");
+    key.add("ste_max_um_" + n, *std::max_element(ste.begin(), ste.end()) * 1e6, "um");
+    key.add("ste_ptp_um_" + n, peak_to_peak(ste) * 1e6, "um");
+    key.add("ste_mean_um_" + n, mean * 1e6, "um");
+    key.add("mesh_stiffness_mean_N_per_m_" + n, mean_stiffness(ste, F), "N/m");
+    key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c), "-");
+    key.add("single_pair_deflection_um_" + n, single_pair_ste(m, path.AC, T) * 1e6, "um");
+    spectrum_columns.push_back("amplitude_um_" + n);
+    spectra.push_back(periodic_fourier(ste, H));
+    char line[160];
+    std::snprintf(line, sizeof line, "T1 = %g N m: max STE %.4f um, peak-to-peak %.4f um, mean k %.2f MN/m, loaded contact ratio %.4f",
+                  T, *std::max_element(ste.begin(), ste.end()) * 1e6, peak_to_peak(ste) * 1e6,
+                  mean_stiffness(ste, F) / 1e6, loaded_contact_ratio(c));
+    run.say(line);
+  }
+  // Amplitude per mesh order k (order 0: the mean), sqrt(a_k^2 + b_k^2).
+  Table s(spectrum_columns);
+  for (int k = 0; k <= H; ++k) {
+    std::vector<Table::Cell> row(spectra.size() + 1, Table::Cell(long(k)));
+    for (std::size_t i = 0; i < spectra.size(); ++i) {
+      const Eigen::VectorXd& c = spectra[i];
+      row[i + 1] = 1e6 * (k == 0 ? c[0] : std::hypot(c[2 * k - 1], c[2 * k]));
+    }
+    s.add_row(row);
+  }
+  run.write("spectrum.csv", s);
+}
+
+// Step 4: ISO 6336-1 method B for the same pair, at the file's largest torque.
+void GearPairFromFile::iso6336(Run& run) const {
+  const PairSteModel& m = file_.pair;
+  const double T = *std::max_element(file_.torques.begin(), file_.torques.end());
+  const double b = m.contact_length();
+  // F_t = 2000 T1 / d1 (ISO 6336-1, d1 the reference diameter), line load F_t / b [N/mm].
+  const double line_load = T / m.gear1.pitch_radius() / (b * 1e3);
+  const Iso6336Stiffness s =
+      iso6336_mesh_stiffness(m.gear1.teeth, m.gear2.teeth, m.gear1.profile_shift, m.gear2.profile_shift,
+                             m.gear1.pressure_angle_deg, file_.dedendum_coefficient, m.path().contact_ratio, b, line_load);
+  KeyNumbers& key = run.key_numbers();
+  key.add("iso6336_c_prime_th", s.c_th, "N/(mm um)");
+  key.add("iso6336_c_prime", s.c_single, "N/(mm um)");
+  key.add("iso6336_c_gamma_alpha", s.c_gamma_alpha, "N/(mm um)");
+  key.add("iso6336_c_gamma_alpha_N_per_m", s.c_gamma_alpha_total, "N/m");
+  key.add("iso6336_line_load_N_per_mm", line_load, "N/mm");
+}
+
+// Step 5: the Harris map, STE peak-to-peak against torque with and without the relief.
+void GearPairFromFile::harris_map(Run& run) const {
+  PairSteModel plain = file_.pair;
+  plain.relief1.amount = plain.relief2.amount = 0.0;
+  const auto relieved = run.timed("harris_phases", [&] { return mesh_phases(file_.pair, file_.phases); });
+  const auto unmodified = mesh_phases(plain, file_.phases);
+  Table t({"torque_Nm", "ste_ptp_um", "ste_ptp_um_unmodified", "loaded_contact_ratio"});
+  double best = 1e300, at = 0.0;
+  for (int j = 0; j < file_.harris_points; ++j) {
+    const double T = file_.harris_from + (file_.harris_to - file_.harris_from) * j / (file_.harris_points - 1);
+    const auto c = pair_ste(file_.pair, relieved, T);
+    std::vector<double> v;
+    for (const auto& p : c) v.push_back(p.ste);
+    const double ptp = peak_to_peak(v);
+    v.clear();
+    for (const auto& p : pair_ste(plain, unmodified, T)) v.push_back(p.ste);
+    t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, loaded_contact_ratio(c)});
+    if (ptp < best) best = ptp, at = T;
+  }
+  run.write("harris.csv", t);
+  run.key_numbers().add("harris_min_ptp_torque_Nm", at, "N m");
+  run.key_numbers().add("harris_min_ptp_um", best * 1e6, "um");
+}
+
+// Step 6: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
+void GearPairFromFile::draw(Run& run) const {
+  // The script reads the key numbers too: the frame writes them once the steps are
+  // done, so write them into the staging folder now (the frame rewrites the same).
+  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
+  draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/gearhb_gear.py",
+                   "figures");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Study study("gearhb_gear",
+              "gearhb_gear: a spur gear pair from its drawing - geometry, loaded static transmission error,\n"
+              "mesh stiffness k = F / STE over the mesh cycle, load shares, Harris map, ISO 6336-1 stiffness.\n"
+              "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
+              "key_numbers.json, params.json (the resolved file), timings.csv, *.png.\n\n" +
+                  gear_file_help());
+  GearPairFromFile program(study);
+  return study.run(argc, argv, [&](Run& run) { program.run(run); });
+}

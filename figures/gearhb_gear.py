@@ -1,0 +1,155 @@
+#!/usr/bin/env python3
+"""Draw the figures of a gearhb_gear run: gearhb_gear.py DIR
+
+Writes into DIR (the run's own folder; gearhb_gear calls this with plot=1):
+  ste.png       the loaded static transmission error STE over one mesh cycle, one
+                curve per torque of the file, the number of loaded pairs shaded;
+  stiffness.png the mesh stiffness k = F / STE over the mesh cycle, its mean dotted;
+  shares.png    the share of the tooth force each pair carries, per torque;
+  spectrum.png  the STE amplitude per mesh order (order 0, the mean, left out);
+  harris.png    the Harris map: STE peak-to-peak against torque, with and without
+                the file's tip relief, the file's torques marked.
+The mesh phase runs over one base pitch: pair 1 is the pair nearest the start of
+contact A (it enters at A at phase 0), pair 2 the one a base pitch ahead of it.
+"""
+import json
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import matplotlib.pyplot as plt  # noqa: E402
+
+from style import read_csv, save  # noqa: E402
+
+
+def load(d_dir):
+    params = json.load(open(d_dir / "params.json"))
+    kn = {k: v["value"] for k, v in json.load(open(d_dir / "key_numbers.json")).items()}
+    torques = params["torques"]
+    ste = [read_csv(d_dir / ("ste_%d.csv" % (i + 1))) for i in range(len(torques))]
+    return params, kn, torques, ste
+
+
+def title(ax, params, kn, what):
+    ax.set_title("%s\n%s\neps_alpha = %.4f, a = %.3f mm, alpha_w = %.3f deg" % (
+        params.get("name", "gear pair"), what, kn["contact_ratio"], kn["centre_distance_m"] * 1e3,
+        kn["operating_pressure_angle_deg"]), fontsize=8)
+
+
+def shade_loaded(ax, d, label=True):
+    """Grey bands where two or more pairs carry load (from the last torque's column)."""
+    ph, n = d["phase"], d["loaded_pairs"]
+    step = ph[1] - ph[0] if len(ph) > 1 else 1.0
+    first = True
+    for i, p in enumerate(ph):
+        if n[i] >= 2:
+            ax.axvspan(p - step / 2, p + step / 2, color="0.88", lw=0,
+                       label="two pairs loaded (highest torque)" if label and first else None)
+            first = False
+
+
+def ste_figure(d_dir, params, kn, torques, ste):
+    fig, ax = plt.subplots(figsize=(6.8, 4.4))
+    shade_loaded(ax, ste[-1])
+    for i, (T, d) in enumerate(zip(torques, ste)):
+        ax.plot(d["phase"], d["ste_um"], "-", color="C%d" % i, marker=".", ms=3,
+                label="T1 = %g N m: peak-to-peak %.3f um" % (T, kn["ste_ptp_um_%d" % (i + 1)]))
+    ax.set_xlabel("mesh phase [mesh cycles] (0: a pair enters at A)")
+    ax.set_ylabel("static transmission error STE [um]")
+    ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)   # from zero: the mean is part of the STE, the ripple is read against it
+    title(ax, params, kn, "loaded STE over one mesh cycle")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
+    save(fig, d_dir / "ste.png")
+
+
+def stiffness_figure(d_dir, params, kn, torques, ste):
+    fig, ax = plt.subplots(figsize=(6.8, 4.4))
+    shade_loaded(ax, ste[-1])
+    for i, (T, d) in enumerate(zip(torques, ste)):
+        k = kn["mesh_stiffness_mean_N_per_m_%d" % (i + 1)] / 1e6
+        ax.plot(d["phase"], [v / 1e6 for v in d["k_N_per_m"]], "-", color="C%d" % i,
+                label="T1 = %g N m (mean %.2f MN/m, dotted)" % (T, k))
+        ax.axhline(k, color="C%d" % i, ls=":", lw=1)
+    iso = kn.get("iso6336_c_gamma_alpha_N_per_m")
+    if iso:
+        ax.axhline(iso / 1e6, color="k", ls="--", lw=1, label="ISO 6336-1 c_gamma_alpha b = %.1f MN/m" % (iso / 1e6))
+    ax.set_xlabel("mesh phase [mesh cycles] (0: a pair enters at A)")
+    ax.set_ylabel("mesh stiffness k = F / STE [MN/m]")
+    ax.set_xlim(0, 1)
+    ax.set_ylim(bottom=0)   # from zero: the note below sits under every curve, none is clipped
+    title(ax, params, kn, "mesh stiffness over one mesh cycle")
+    if any(g.get("tip_relief", {}).get("amount", 0) > 0 for g in params["gears"]):
+        ax.text(0.01, 0.02, "with tip relief the STE includes the relief separations:\n"
+                "F / STE is a secant value, not the stiffness of the teeth", transform=ax.transAxes,
+                fontsize=7, va="bottom", bbox=dict(fc="white", ec="0.7"))
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)
+    save(fig, d_dir / "stiffness.png")
+
+
+def shares_figure(d_dir, params, kn, torques, ste):
+    fig, ax = plt.subplots(figsize=(6.8, 4.4))
+    styles = ["-", "--", ":"]
+    for i, (T, d) in enumerate(zip(torques, ste)):
+        pairs = sorted(k for k in d if k.startswith("share_pair_"))
+        for j, col in enumerate(pairs):
+            ax.plot(d["phase"], d[col], styles[j % 3], color="C%d" % i,
+                    label="T1 = %g N m, pair %d" % (T, j + 1))
+    ax.set_xlabel("mesh phase [mesh cycles] (pair 1 enters at A at phase 0; pair 2 is one base pitch ahead)")
+    ax.set_ylabel("share of the tooth force F_i / F [-]")
+    ax.set_xlim(0, 1)
+    ax.set_ylim(-0.02, 1.02)
+    title(ax, params, kn, "load sharing between the pairs in contact")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)
+    save(fig, d_dir / "shares.png")
+
+
+def spectrum_figure(d_dir, params, kn, torques):
+    s = read_csv(d_dir / "spectrum.csv")
+    orders = [int(k) for k in s["order"]][1:]
+    n = len(torques)
+    width = 0.8 / n
+    fig, ax = plt.subplots(figsize=(6.8, 4.0))
+    for i, T in enumerate(torques):
+        ax.bar([k - 0.4 + width * (i + 0.5) for k in orders], s["amplitude_um_%d" % (i + 1)][1:], width,
+               color="C%d" % i, label="T1 = %g N m (mean %.3f um)" % (T, s["amplitude_um_%d" % (i + 1)][0]))
+    ax.set_xlabel("mesh order k (harmonic of the mesh frequency)")
+    ax.set_ylabel("STE amplitude sqrt(a_k^2 + b_k^2) [um]")
+    ax.set_xticks(orders)
+    title(ax, params, kn, "STE spectrum per mesh order (the mean, order 0, in the legend)")
+    ax.legend(fontsize=7)
+    save(fig, d_dir / "spectrum.png")
+
+
+def harris_figure(d_dir, params, kn, torques):
+    h = read_csv(d_dir / "harris.csv")
+    relieved = any(g.get("tip_relief", {}).get("amount", 0) > 0 for g in params["gears"])
+    fig, ax = plt.subplots(figsize=(6.8, 4.2))
+    ax.plot(h["torque_Nm"], h["ste_ptp_um_unmodified"], "-", color="C0", marker=".", label="without tip relief")
+    if relieved:
+        ax.plot(h["torque_Nm"], h["ste_ptp_um"], "-", color="C3", marker=".", label="with the file's tip relief")
+        ax.plot([kn["harris_min_ptp_torque_Nm"]], [kn["harris_min_ptp_um"]], "o", mfc="none", color="C3", ms=9,
+                label="smallest peak-to-peak (%.3f um at %g N m)" % (kn["harris_min_ptp_um"],
+                                                                      kn["harris_min_ptp_torque_Nm"]))
+    for i, T in enumerate(torques):
+        ax.axvline(T, color="0.6", ls=":", lw=1, label="torques of the file" if i == 0 else None)
+    ax.set_xlabel("driver torque T1 [N m]")
+    ax.set_ylabel("STE peak-to-peak [um]")
+    ax.set_ylim(bottom=0)
+    title(ax, params, kn, "Harris map" + ("" if relieved else " (the file has no tip relief)"))
+    ax.legend(fontsize=7)
+    save(fig, d_dir / "harris.png")
+
+
+def main():
+    d_dir = pathlib.Path(sys.argv[1])
+    params, kn, torques, ste = load(d_dir)
+    ste_figure(d_dir, params, kn, torques, ste)
+    stiffness_figure(d_dir, params, kn, torques, ste)
+    shares_figure(d_dir, params, kn, torques, ste)
+    spectrum_figure(d_dir, params, kn, torques)
+    harris_figure(d_dir, params, kn, torques)
+
+
+if __name__ == "__main__":
+    main()

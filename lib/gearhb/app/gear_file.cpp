@@ -1,0 +1,249 @@
+#include "gearhb/app/gear_file.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gearhb/app/json_file.hpp"
+
+namespace gearhb {
+
+namespace {
+
+using nlohmann::json;
+
+struct Reader {
+  const std::string& file;
+
+  double number(const json& parent, const std::string& where, const char* key, double lo, double hi,
+                const char* range_text) const {
+    const std::string path = where.empty() ? key : where + "." + key;
+    if (!parent.contains(key)) fail_key(file, path, "is missing");
+    const double v = json_number(parent[key], file, path);
+    if (!(v >= lo && v <= hi)) fail_key(file, path, std::string("must be in ") + range_text);
+    return v;
+  }
+  double optional(const json& parent, const std::string& where, const char* key, double fallback, double lo,
+                  double hi, const char* range_text) const {
+    return parent.contains(key) ? number(parent, where, key, lo, hi, range_text) : fallback;
+  }
+  // One of `names` (a string); returns its index.
+  int choice(const json& parent, const std::string& where, const char* key, const std::vector<std::string>& names,
+             int fallback) const {
+    const std::string path = where.empty() ? key : where + "." + key;
+    if (!parent.contains(key)) return fallback;
+    std::string all;
+    for (const auto& n : names) all += (all.empty() ? "" : " | ") + n;
+    if (!parent[key].is_string()) fail_key(file, path, "must be one of " + all);
+    const auto it = std::find(names.begin(), names.end(), parent[key].get<std::string>());
+    if (it == names.end()) fail_key(file, path, "must be one of " + all);
+    return int(it - names.begin());
+  }
+};
+
+std::string mm(double v) {
+  char b[48];
+  std::snprintf(b, sizeof b, "%.6g mm", v * 1e3);
+  return b;
+}
+
+}  // namespace
+
+GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  json j = read_json_file(path);
+  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "basic_rack", "centre_distance", "backlash",
+                          "torques", "gears", "model", "harris"});
+  for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
+  const Reader r{path};
+  GearFile f;
+  f.resolved = j;
+  if (j.contains("name") && !j["name"].is_string()) fail_key(path, "name", "must be a text");
+  f.name = j.value("name", std::string("gear pair"));
+
+  // --- the pair -----------------------------------------------------------------
+  const double m = r.number(j, "", "module", 1e-5, 1.0, "[1e-5, 1] m");
+  const double alpha = r.number(j, "", "pressure_angle_deg", 10.0, 35.0, "[10, 35] deg");
+  const json rack = j.value("basic_rack", json::object());
+  only_keys(rack, path, "basic_rack", {"addendum", "dedendum", "root_radius"});
+  const double ha = r.optional(rack, "basic_rack", "addendum", 1.0, 0.5, 2.0, "[0.5, 2] (units of m)");
+  const double hf = r.optional(rack, "basic_rack", "dedendum", 1.25, 0.5, 2.5, "[0.5, 2.5] (units of m)");
+  f.root_radius_coefficient = r.optional(rack, "basic_rack", "root_radius", 0.38, 0.0, 0.6, "[0, 0.6] (units of m)");
+  f.dedendum_coefficient = hf;
+  if (!(hf >= ha)) fail_key(path, "basic_rack.dedendum", "must be >= the addendum (no negative tip clearance)");
+  f.backlash = r.optional(j, "", "backlash", 0.0, 0.0, 0.5 * M_PI * m, "[0, pi m / 2] m");
+
+  if (!j.contains("torques")) fail_key(path, "torques", "is missing");
+  if (!j["torques"].is_array() || j["torques"].empty() || j["torques"].size() > 16)
+    fail_key(path, "torques", "must be a list of 1 to 16 torques [N m]");
+  for (std::size_t i = 0; i < j["torques"].size(); ++i) {
+    const std::string key = "torques." + std::to_string(i);
+    const double T = json_number(j["torques"][i], path, key);
+    if (!(T >= 1e-3 && T <= 1e7)) fail_key(path, key, "must be in [1e-3, 1e7] N m");
+    f.torques.push_back(T);
+  }
+
+  // --- the gears ------------------------------------------------------------------
+  if (!j.contains("gears")) fail_key(path, "gears", "is missing");
+  if (!j["gears"].is_array() || j["gears"].size() != 2) fail_key(path, "gears", "must be a list of 2 gears (driver, driven)");
+  GearGeometry* geo[2] = {&f.pair.gear1, &f.pair.gear2};
+  double* E[2] = {&f.pair.youngs_modulus1, &f.pair.youngs_modulus2};
+  struct ReliefInput {
+    double amount = 0.0, start = 0.0;
+    ReliefStart kind = ReliefStart::length;
+    ReliefShape shape = ReliefShape::linear;
+  } relief[2];
+  for (int i = 0; i < 2; ++i) {
+    const std::string w = "gears." + std::to_string(i);
+    const json& g = j["gears"][i];
+    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief"});
+    GearGeometry& G = *geo[i];
+    G.module = m;
+    G.pressure_angle_deg = alpha;
+    G.addendum = ha * m;
+    G.dedendum = hf * m;
+    if (!g.contains("z")) fail_key(path, w + ".z", "is missing");
+    G.teeth = json_whole(g["z"], path, w + ".z", 5, 1000);
+    G.profile_shift = r.optional(g, w, "x", 0.0, -1.0, 2.0, "[-1, 2]");
+    G.face_width = r.number(g, w, "b", 1e-4, 10.0, "[1e-4, 10] m");
+    *E[i] = r.number(g, w, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
+    f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
+    f.gear[i].inertia = r.optional(g, w, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
+    f.gear[i].rim_radius = r.optional(g, w, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
+    f.gear[i].thickness_allowance = r.optional(g, w, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
+    if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
+      fail_key(path, w + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
+    if (G.root_radius() <= 0.0) fail_key(path, w + ".z", "gives no root circle (rf <= 0)");
+    if (g.contains("tip_relief")) {
+      const std::string t = w + ".tip_relief";
+      const json& tr = g["tip_relief"];
+      only_keys(tr, path, t, {"amount", "start", "shape"});
+      relief[i].amount = r.number(tr, t, "amount", 0.0, 1e-3, "[0, 1e-3] m");
+      relief[i].shape = r.choice(tr, t, "shape", {"linear", "parabolic"}, 0) == 0 ? ReliefShape::linear
+                                                                                  : ReliefShape::parabolic;
+      if (!tr.contains("start")) fail_key(path, t + ".start", "is missing (one of roll_angle_deg, diameter, length)");
+      const json& st = tr["start"];
+      only_keys(st, path, t + ".start", {"roll_angle_deg", "diameter", "length"});
+      if (st.size() != 1) fail_key(path, t + ".start", "must give exactly one of roll_angle_deg, diameter, length");
+      if (st.contains("roll_angle_deg")) {
+        relief[i].kind = ReliefStart::roll_angle_deg;
+        relief[i].start = r.number(st, t + ".start", "roll_angle_deg", 0.0, 90.0, "[0, 90] deg");
+      } else if (st.contains("diameter")) {
+        relief[i].kind = ReliefStart::diameter;
+        relief[i].start = r.number(st, t + ".start", "diameter", 0.0, 20.0, "[0, 20] m");
+      } else {
+        relief[i].kind = ReliefStart::length;
+        relief[i].start = r.number(st, t + ".start", "length", 0.0, 1.0, "[0, 1] m");
+      }
+    }
+  }
+  const double rb_sum = f.pair.gear1.base_radius() + f.pair.gear2.base_radius();
+  f.pair.centre_distance = r.optional(j, "", "centre_distance", 0.0, 0.0, 100.0, "[0, 100] m");
+  if (f.pair.centre_distance > 0.0 && !(f.pair.centre_distance > rb_sum))
+    fail_key(path, "centre_distance", "must exceed rb1 + rb2 = " + mm(rb_sum));
+  for (int i = 0; i < 2; ++i) {
+    const TipRelief t = tip_relief(*geo[i], relief[i].amount, relief[i].kind, relief[i].start, relief[i].shape);
+    if (relief[i].amount > 0.0 && !(t.start_roll >= 0.0))
+      fail_key(path, "gears." + std::to_string(i) + ".tip_relief.start", "lies inside the base circle");
+    (i == 0 ? f.pair.relief1 : f.pair.relief2) = t;
+  }
+
+  // --- the reading of the beam model ------------------------------------------------
+  const json model = j.value("model", json::object());
+  only_keys(model, path, "model", {"phases", "positions_per_base_pitch", "tooth_elements", "thickness_at", "hertz",
+                                   "pair_hertz", "pair_stiffness", "tooth_force"});
+  f.phases = model.contains("phases") ? json_whole(model["phases"], path, "model.phases", 16, 4096) : 64;
+  f.pair.positions_per_base_pitch =
+      model.contains("positions_per_base_pitch")
+          ? json_whole(model["positions_per_base_pitch"], path, "model.positions_per_base_pitch", 0, 128)
+          : 0;
+  if (f.pair.positions_per_base_pitch == 1) fail_key(path, "model.positions_per_base_pitch", "must be 0 or in [2, 128]");
+  f.pair.tooth_elements =
+      model.contains("tooth_elements") ? json_whole(model["tooth_elements"], path, "model.tooth_elements", 0, 64) : 0;
+  if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 64]");
+  f.pair.thickness_at = ThicknessAt(r.choice(model, "model", "thickness_at", {"root_node", "midpoint", "tip_node"}, 0));
+  f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"}, 2));
+  f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 0));
+  f.pair.pair_stiffness = PairStiffness(r.choice(model, "model", "pair_stiffness", {"fused", "cantilevers"}, 0));
+  f.pair.tooth_force = ToothForce(r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, 0));
+
+  const json harris = j.value("harris", json::object());
+  only_keys(harris, path, "harris", {"from", "to", "points"});
+  const double Tmax = *std::max_element(f.torques.begin(), f.torques.end());
+  f.harris_from = r.optional(harris, "harris", "from", std::max(1e-3, Tmax / 6.0), 1e-3, 1e7, "[1e-3, 1e7] N m");
+  f.harris_to = r.optional(harris, "harris", "to", 5.0 * Tmax / 3.0, 1e-3, 1e7, "[1e-3, 1e7] N m");
+  f.harris_points = harris.contains("points") ? json_whole(harris["points"], path, "harris.points", 2, 200) : 19;
+  if (!(f.harris_to > f.harris_from)) fail_key(path, "harris.to", "must exceed harris.from");
+
+  // --- geometry checks (each names its key) ---------------------------------------------
+  const PathOfContact p = f.pair.path();
+  const GeometryProblem problem = gear_pair_problem(f.pair.gear1, f.pair.gear2, p, f.pair.relief1, f.pair.relief2);
+  if (!problem.key.empty()) fail_key(path, problem.key, problem.why);
+  // Normal backlash: given, or from the tooth-thickness allowances at this centre distance.
+  const bool allowances = j["gears"][0].contains("thickness_allowance") || j["gears"][1].contains("thickness_allowance");
+  if (allowances && j.contains("backlash"))
+    fail_key(path, "backlash", "is given twice: give either backlash or the gears' thickness_allowance");
+  if (allowances) {
+    f.backlash = normal_backlash(f.pair.gear1, f.pair.gear2, p, f.gear[0].thickness_allowance,
+                                 f.gear[1].thickness_allowance);
+    if (!(f.backlash >= 0.0))
+      fail_key(path, "gears.0.thickness_allowance", "gives a negative normal backlash (" + mm(f.backlash) +
+                                                        ") at this centre distance: the teeth would interpenetrate");
+  }
+  const int ne = f.pair.elements();
+  if (ne < 2 || ne > 64) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..64");
+  const int P = f.pair.positions_per_base_pitch;
+  if (P > 0) {
+    if (f.pair.gear1.teeth != f.pair.gear2.teeth || f.pair.gear1.profile_shift != f.pair.gear2.profile_shift ||
+        f.pair.gear1.face_width != f.pair.gear2.face_width || f.pair.youngs_modulus1 != f.pair.youngs_modulus2)
+      fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) needs two identical gears");
+    if (f.pair.relief1.amount > 0.0 || f.pair.relief2.amount > 0.0)
+      fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) cannot carry a tip relief");
+    if (ne < P || ne >= 2 * P)
+      fail_key(path, "model.positions_per_base_pitch", "needs P <= tooth elements (" + std::to_string(ne) + ") < 2 P");
+  }
+  return f;
+}
+
+std::string gear_file_help() {
+  return "Gear-pair file keys (JSON; SI units; gear 1 drives):\n"
+         "  name                         text shown in titles\n"
+         "  module                       m [m], in [1e-5, 1]\n"
+         "  pressure_angle_deg           alpha [deg], in [10, 35]\n"
+         "  basic_rack.addendum          ha* (units of m, default 1)\n"
+         "  basic_rack.dedendum          hf* (default 1.25, >= ha*)\n"
+         "  basic_rack.root_radius       rho_f* (default 0.38; used for the undercut limit)\n"
+         "  centre_distance              a [m]; 0 or absent: from the shifts,\n"
+         "                               inv(alpha_w) = inv(alpha) + 2 tan(alpha) (x1 + x2)/(z1 + z2)\n"
+         "  backlash                     normal backlash j_n [m] (recorded; the STE is computed without), or:\n"
+         "  gears[i].thickness_allowance A_sn [m] <= 0 on the reference circle: j_n follows exactly,\n"
+         "                               m cos a [(z1+z2)(inv a_w - inv a) - 2 tan a (x1+x2)] - (A_sn1+A_sn2) cos a\n"
+         "  torques                      list of 1..16 driver torques T1 [N m], each in [1e-3, 1e7]\n"
+         "  gears[i].z                   teeth (whole, 5..1000); i = 0 driver, 1 driven\n"
+         "  gears[i].x                   profile shift coefficient (default 0, in [-1, 2])\n"
+         "  gears[i].b                   face width [m]\n"
+         "  gears[i].E, gears[i].nu      Young's modulus [Pa], Poisson's ratio (nu recorded only: the\n"
+         "                               Palmgren Hertz law is for steel)\n"
+         "  gears[i].inertia             polar moment of inertia [kg m^2] (recorded, for the dynamics)\n"
+         "  gears[i].rim_radius          rim/bore radius [m] (recorded; the tooth root is clamped)\n"
+         "  gears[i].tip_relief.amount   Ca [m] at the tip circle (0: none)\n"
+         "  gears[i].tip_relief.start    exactly one of {roll_angle_deg: xi [deg]}, {diameter: d [m]},\n"
+         "                               {length: L [m] along the path of contact, measured from the tip}\n"
+         "  gears[i].tip_relief.shape    linear (default) | parabolic\n"
+         "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
+         "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
+         "                               (identical gears, no relief)\n"
+         "  model.tooth_elements         beam elements per tooth (0 = floor(8 eps_alpha): 14 for the thesis)\n"
+         "  model.thickness_at           root_node (default) | midpoint | tip_node: where s(r) is read per element\n"
+         "  model.hertz                  per_tooth (default, thesis) | per_contact | none\n"
+         "  model.pair_hertz             equal_split (default, thesis) | fe_split_mean | consistent (Hertz inside\n"
+         "                               the load sharing: use it with tip relief)\n"
+         "  model.pair_stiffness         fused (default, thesis section 7.2) | cantilevers\n"
+         "  model.tooth_force            pitch_radius (default, thesis: T1 / r1) | base_radius (T1 / rb1)\n"
+         "  harris.from, harris.to, harris.points  torques of the Harris map [N m] (default T_max/6 .. 5 T_max/3, 19)\n"
+         "Checks (exit 2, one line naming the key): tip thickness s(ra) >= 0.2 m, tip clearance, involute\n"
+         "interference, contact ratio >= 1, relief start inside the path of contact and above the base circle.\n"
+         "--set PATH=VALUE overrides a number at a dotted path: torques.2=250, gears.0.x=0.3,\n"
+         "gears.1.tip_relief.amount=15e-6, model.phases=128\n";
+}
+
+}  // namespace gearhb

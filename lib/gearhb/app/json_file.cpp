@@ -1,0 +1,94 @@
+#include "gearhb/app/json_file.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "gearhb/app/cli.hpp"
+#include "gearhb/core/text_file.hpp"
+
+namespace gearhb {
+
+using nlohmann::json;
+
+json read_json_file(const std::string& path) {
+  std::string text;
+  try {
+    text = read_text_file(path);
+  } catch (const TextFileError& e) {
+    throw UsageError(path + ": " + e.what());
+  }
+  // Refuse deep nesting while parsing (the parser itself is iterative, but copying or
+  // destroying a deeply nested value recurses) and duplicate keys (the last would win).
+  std::vector<std::vector<std::string>> keys;   // the keys of each open object
+  const json::parser_callback_t check = [&](int depth, json::parse_event_t event, json& parsed) {
+    if ((event == json::parse_event_t::object_start || event == json::parse_event_t::array_start) &&
+        depth >= max_json_depth)
+      throw UsageError(path + ": nested deeper than " + std::to_string(max_json_depth) + " levels");
+    if (event == json::parse_event_t::object_start) keys.emplace_back();
+    if (event == json::parse_event_t::object_end && !keys.empty()) keys.pop_back();
+    if (event == json::parse_event_t::key && !keys.empty()) {
+      const std::string k = parsed.get<std::string>();
+      for (const auto& seen : keys.back())
+        if (seen == k) throw UsageError(path + ": key '" + k + "' appears twice in one object");
+      keys.back().push_back(k);
+    }
+    return true;
+  };
+  try {
+    return json::parse(text, check);
+  } catch (const json::exception& e) {
+    throw UsageError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+  }
+}
+
+void fail_key(const std::string& file, const std::string& key, const std::string& why) {
+  throw UsageError(file + ": '" + key + "' " + why);
+}
+
+void apply_override(json& root, const std::string& file, const std::string& path, const std::string& text) {
+  json* node = &root;
+  std::stringstream ss(path);
+  std::string part;
+  while (std::getline(ss, part, '.')) {
+    if (node->is_object() && node->contains(part)) {
+      node = &(*node)[part];
+    } else if (node->is_array() && !part.empty() && part.find_first_not_of("0123456789") == std::string::npos &&
+               part.size() < 9 && std::stoul(part) < node->size()) {
+      node = &(*node)[std::stoul(part)];
+    } else {
+      fail_key(file, path, "is not in the model (--set overrides a number that the file has)");
+    }
+  }
+  if (!node->is_number()) fail_key(file, path, "is not a number (--set overrides numbers only)");
+  *node = parse_decimal(text, "--set " + path);
+}
+
+double json_number(const json& j, const std::string& file, const std::string& key) {
+  if (!j.is_number()) fail_key(file, key, "must be a number");
+  const double v = j.get<double>();
+  if (!std::isfinite(v)) fail_key(file, key, "must be finite");
+  // Every quantity of a model in any consistent units lies far inside this; beyond
+  // it products of two entries leave double precision and the solver sees inf or 0.
+  if (v != 0.0 && (std::fabs(v) < 1e-150 || std::fabs(v) > 1e150))
+    fail_key(file, key, "must be 0 or of magnitude between 1e-150 and 1e150");
+  return v;
+}
+
+int json_whole(const json& j, const std::string& file, const std::string& key, int lo, int hi) {
+  const double v = json_number(j, file, key);
+  if (v != std::floor(v) || v < lo || v > hi)
+    fail_key(file, key, "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
+  return int(v);
+}
+
+void only_keys(const json& j, const std::string& file, const std::string& where,
+               const std::vector<std::string>& allowed) {
+  if (!j.is_object()) fail_key(file, where, "must be an object");
+  for (const auto& item : j.items()) {
+    bool ok = false;
+    for (const auto& a : allowed) ok = ok || item.key() == a;
+    if (!ok) fail_key(file, (where.empty() ? "" : where + ".") + item.key(), "is not a model key (see --help)");
+  }
+}
+
+}  // namespace gearhb
