@@ -102,6 +102,10 @@ case("frc_omega_to_1e308", ["gearhb_frc", EXAMPLES / "mass_wall.json", "--set", 
      says=["omega.to"])
 case("frc_omega_to_1e100", ["gearhb_frc", EXAMPLES / "mass_wall.json", "--set", "omega.to=1e100"], 1,
      says=["did not reach omega.to"])
+# A sweep that cannot start (K = 0, the static load pressing a flank of stiffness 0: no
+# equilibrium, no periodic solution) says so: exit 1, nothing written.
+case("frc_cannot_start", ["gearhb_frc", EXAMPLES / "clearance_oscillator.json", "--set", "contacts.0.kc=0"], 1,
+     says=["cannot start", "no static equilibrium"])
 
 # 6. Bad model input names the key or the path, exit 2.
 for label, value in [("number", 5), ("null", None), ("object", {}), ("array", [])]:

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <tuple>
+#include <vector>
 
 #include "gearhb/app/model_file.hpp"
 #include "gearhb/app/study.hpp"
@@ -65,17 +67,60 @@ void FrequencyResponseFromFile::read_model() {
   model_ = read_model_file(study_.positional(), study_.parameters().unregistered());
 }
 
-// Step 2: natural frequencies with every contact open and every contact closed.
+// Step 2: natural frequencies with every contact open, and with each set of contacts
+// closed that can be closed at once (contacts_can_close_together: two stops on either
+// side of one coordinate never are). modes.csv: mode, omega_open, omega_closed (every
+// contact closed, only if possible), omega_set<S> for every other possible set S
+// ("1", "2", "1+3", ...; all sets up to 6 contacts, the single contacts beyond).
 void FrequencyResponseFromFile::natural_frequencies(Run& run) const {
   const LinearSystem& s = model_.system;
-  Eigen::MatrixXd K_closed = s.K;
-  for (const auto& c : model_.contacts) K_closed += c.kc * c.normal * c.normal.transpose();
-  const Modes open = modal_analysis(s.M, s.K), closed = modal_analysis(s.M, K_closed);
-  Table t({"mode", "omega_open", "omega_closed"});
+  const std::size_t P = model_.contacts.size();
+  const unsigned long long all = P >= 64 ? ~0ull : (1ull << P) - 1ull;
+  std::vector<unsigned long long> sets;
+  if (P <= 6) {
+    for (unsigned long long S = 1; S < all; ++S) sets.push_back(S);
+  } else {
+    for (std::size_t i = 0; i < P && i < 64; ++i) sets.push_back(1ull << i);
+  }
+  std::vector<std::string> columns = {"mode", "omega_open"};
+  std::vector<Modes> closed;
+  std::vector<std::string> names;
+  auto closed_modes = [&](unsigned long long S) {
+    Eigen::MatrixXd K = s.K;
+    for (std::size_t i = 0; i < P && i < 64; ++i)
+      if (S >> i & 1ull) K += model_.contacts[i].kc * model_.contacts[i].normal * model_.contacts[i].normal.transpose();
+    return modal_analysis(s.M, K);
+  };
+  const bool all_possible = P > 0 && contacts_can_close_together(model_.contacts, all);
+  if (P == 0 || all_possible) {
+    columns.push_back("omega_closed");
+    closed.push_back(closed_modes(all));
+    names.push_back("");
+  }
+  for (unsigned long long S : sets) {
+    if (!contacts_can_close_together(model_.contacts, S)) continue;
+    std::string name;
+    for (std::size_t i = 0; i < P && i < 64; ++i)
+      if (S >> i & 1ull) name += (name.empty() ? "" : "+") + std::to_string(i + 1);
+    columns.push_back("omega_set" + name);
+    closed.push_back(closed_modes(S));
+    names.push_back(name);
+  }
+  const Modes open = modal_analysis(s.M, s.K);
+  Table t(columns);
   for (int i = 0; i < s.dofs(); ++i) {
-    t.add_row({long(i + 1), open.omega[i], closed.omega[i]});
-    run.key_numbers().add("omega_open_" + std::to_string(i + 1), open.omega[i], "rad/s");
-    run.key_numbers().add("omega_closed_" + std::to_string(i + 1), closed.omega[i], "rad/s");
+    const std::string mode = std::to_string(i + 1);
+    std::vector<Table::Cell> row;
+    row.reserve(2 + closed.size());
+    row.emplace_back(long(i + 1));
+    row.emplace_back(open.omega[i]);
+    run.key_numbers().add("omega_open_" + mode, open.omega[i], "rad/s");
+    for (std::size_t k = 0; k < closed.size(); ++k) {
+      row.emplace_back(double(closed[k].omega[i]));
+      run.key_numbers().add(names[k].empty() ? "omega_closed_" + mode : "omega_set" + names[k] + "_" + mode,
+                            closed[k].omega[i], "rad/s");
+    }
+    t.add_row(std::move(row));
   }
   run.write("modes.csv", t);
 }
@@ -93,7 +138,8 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   // The lowest frequency of the curve where a contact first closes (if any does).
   const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
-  run.say(model_.name + ": " + c.branch.summary());
+  run.say(model_.name + ": " + c.branch.summary() +
+          (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
   if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
   run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
   run.write("bifurcations.csv", bifurcation_table(c));
@@ -106,6 +152,17 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");
+  // The response at either end of the range (omega.from, omega.to): the first point and
+  // the last, as a time integration from rest would see it where they are stable.
+  const auto& P = c.branch.points;
+  for (const auto& [name, point, st] : {std::make_tuple("start", &P.front(), c.stable.front()),
+                                        std::make_tuple("end", &P.back(), c.stable.back())}) {
+    const ResponseSummary r = ev.summarize(point->X);
+    key.add(std::string("x_max_") + name, r.x_max, "m");
+    key.add(std::string("x_min_") + name, r.x_min, "m");
+    key.add(std::string("stable_") + name, st ? 1.0 : 0.0, "-");
+  }
+
 }
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).

@@ -171,3 +171,34 @@ TEST(Contact, TangentialGrazeHasNoMeasureAndNearGrazeHasItsClosedFormWidth) {
     EXPECT_NEAR(0.5 * (I[0].first + I[0].second), phi, 1e-9);
   }
 }
+
+// Which contact sets can be closed at once (contacts_can_close_together): a stop on each
+// side of one coordinate, x > 1 (drive, gap -1) and x < -1 (back, gap -1), never both
+// (the Kahraman-Singh clearance); with preloads g1 = 0.5, g2 = -0.2 both close for
+// -0.5 < x < -0.2; a normal of length 2 scales the pair test (2x > 1.5 and x < 0.5: no);
+// a periodic gap counts with its largest value (gap -1 + amplitude 1.5 reaches 0.5).
+TEST(Contact, SetsThatCanCloseTogether) {
+  auto stop = [](double n, double g) {
+    UnilateralContact c;
+    c.normal = Eigen::VectorXd::Constant(1, n);
+    c.kc = 1.0;
+    c.gap = g;
+    return c;
+  };
+  EXPECT_FALSE(contacts_can_close_together({stop(1, -1), stop(-1, -1)}, 3));
+  EXPECT_TRUE(contacts_can_close_together({stop(1, -1), stop(-1, -1)}, 1));
+  EXPECT_TRUE(contacts_can_close_together({stop(1, -1), stop(-1, -1)}, 2));
+  EXPECT_TRUE(contacts_can_close_together({stop(1, 0.5), stop(-1, -0.2)}, 3));
+  EXPECT_FALSE(contacts_can_close_together({stop(2, -1.5), stop(-1, 0.5)}, 3));   // x > 0.75 and x < 0.5
+  EXPECT_TRUE(contacts_can_close_together({stop(2, -0.5), stop(-1, 0.5)}, 3));    // x > 0.25 and x < 0.5
+  UnilateralContact wavy = stop(1, -1);
+  wavy.gap_harmonics = Eigen::VectorXd::Zero(3);
+  wavy.gap_harmonics[1] = 0.9;
+  wavy.gap_harmonics[2] = 1.2;   // amplitude 1.5
+  EXPECT_TRUE(contacts_can_close_together({wavy, stop(-1, 0.0)}, 3));           // x > -0.5 and x < 0
+  // two DOFs, normals not opposite: the pair test cannot rule them out
+  UnilateralContact a = stop(1, -1), b = stop(1, -1);
+  a.normal = Eigen::Vector2d(1, 0);
+  b.normal = Eigen::Vector2d(0, -1);
+  EXPECT_TRUE(contacts_can_close_together({a, b}, 3));
+}

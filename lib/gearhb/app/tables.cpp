@@ -29,6 +29,8 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
     for (const char* what : {"_max", "_min", "_h1"}) columns.push_back("q" + std::to_string(i + 1) + what);
     dof.emplace_back(hb, Eigen::VectorXd::Unit(n, i));
   }
+  const std::size_t P = hb.contacts().size();
+  for (std::size_t i = 0; i < P; ++i) columns.push_back("contact_" + std::to_string(i + 1));
   const ResponseEvaluator ev(hb, output);
   Table t(columns);
   for (std::size_t p = 0; p < b.points.size(); ++p) {
@@ -39,6 +41,7 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
       const auto q = dof[i].summarize(b.points[p].X);
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
     }
+    for (std::size_t i = 0; i < P; ++i) row.push_back(std::string(to_string(r.contact_states[i])));
     t.add_row(std::move(row));
   }
   return t;

@@ -21,7 +21,9 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
 
 // The frequency response of a model file (gearhb_frc): the columns of
 // frequency_response_table for the output coordinate (omega, x_max, x_min, x_rms_ac,
-// x_h1, x_mean, stable, contact), then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n.
+// x_h1, x_mean, stable, contact), then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n,
+// then contact_<j> for every contact j = 1..P: its own state over the period (open, full,
+// intermittent; `contact` is the summary over all of them).
 Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
                          const Eigen::VectorXd& output);
 // The same for a whole frequency curve, with three more columns after those:

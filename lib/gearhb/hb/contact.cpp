@@ -229,4 +229,33 @@ void weighted_indicator_moments(const std::vector<std::pair<double, double>>& I,
   }
 }
 
+namespace {
+double largest_gap(const UnilateralContact& c) {
+  double g = c.gap;
+  if (c.gap_harmonics.size() > 0) {
+    g += c.gap_harmonics[0];
+    for (Eigen::Index k = 1; k + 1 < c.gap_harmonics.size(); k += 2)
+      g += std::hypot(c.gap_harmonics[k], c.gap_harmonics[k + 1]);
+  }
+  return g;
+}
+}  // namespace
+
+bool contacts_can_close_together(const std::vector<UnilateralContact>& contacts, unsigned long long set) {
+  for (std::size_t i = 0; i < contacts.size() && i < 64; ++i) {
+    if (!(set >> i & 1ull)) continue;
+    for (std::size_t j = 0; j < i; ++j) {
+      if (!(set >> j & 1ull)) continue;
+      const Eigen::VectorXd &a = contacts[i].normal, &b = contacts[j].normal;
+      const double na = a.norm(), nb = b.norm();
+      if (!(na > 0.0 && nb > 0.0)) continue;
+      // opposite normals: b = -c a with c = |b| / |a|
+      if ((b / nb + a / na).norm() > 1e-12) continue;
+      const double c = nb / na;
+      if (!(c * largest_gap(contacts[i]) + largest_gap(contacts[j]) > 0.0)) return false;
+    }
+  }
+  return true;
+}
+
 }  // namespace gearhb

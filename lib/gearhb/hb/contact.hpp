@@ -14,6 +14,7 @@
 // profile; since s > 0 the contact is closed exactly where g + v > 0, as for a
 // constant kc, and the law stays piecewise linear in x.
 #include <functional>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -43,6 +44,15 @@ inline double contact_stiffness(double kc, double u) { return u > 0.0 ? kc : 0.0
 // Contact state over one period, from the penetration samples u = g + v.
 enum class ContactState { open, full, intermittent };
 const char* to_string(ContactState s);
+
+// Whether the contacts of `set` (bit i: contacts[i], i < 64) can all be closed at once,
+// i.e. g_i + n_i'x > 0 for every i of the set at one x, with g_i the largest value of the
+// gap over the period (gap plus the sum of its harmonics' amplitudes). Decided pair by
+// pair: two contacts with opposite normals (n_j = -c n_i, c > 0) close together only if
+// c g_i + g_j > 0 (a clearance on both sides of one coordinate: never). Exact for one
+// DOF (Helly's theorem on the line: intervals meet iff every two do); for more DOFs a
+// set that fails the pair test is impossible, one that passes is reported possible.
+bool contacts_can_close_together(const std::vector<UnilateralContact>& contacts, unsigned long long set);
 
 }  // namespace gearhb
 

@@ -199,7 +199,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
       b.complete = true;
       return b;
     }
-    if ((w_new - opt.omega_start) * dir < 0.0 && b.points.size() > 2) {
+    if ((w_new - opt.omega_start) * dir < -opt.start_excursion && b.points.size() > 2) {
       b.points.push_back(pt);
       b.failures.push_back({w_new, res, ds, "branch turned back out of the range at its start"});
       return b;

@@ -59,6 +59,11 @@ struct ContinuationOptions {
   // grazing point is then skipped, or traversed backwards).
   std::function<int(const Eigen::VectorXd&)> regime;
   double ds_regime_change = 2e-4;
+  // How far [rad/s] the branch may turn back beyond omega_start (a fold pair next to the
+  // start: the branch from the first point folds, leaves the range at its start, turns
+  // at a second fold outside and comes back through it); beyond, the continuation
+  // stops with "branch turned back out of the range at its start". 0: not at all.
+  double start_excursion = 0.0;
   // Called after every accepted point (e.g. to show progress); the numerics never print.
   std::function<void(const ContinuationProgress&)> progress;
 };

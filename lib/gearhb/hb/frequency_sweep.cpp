@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "gearhb/hb/first_point.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
@@ -111,6 +112,62 @@ std::complex<double> crossing_multiplier(const FloquetResult& r, const PointFloq
   return std::isfinite(d) ? best : any;
 }
 
+// One crossing, one entry. The multipliers are those of the orbit corrected by shooting
+// (floquet.hpp), and next to a fold of the HB branch the shooting Newton from the HB
+// points of both sides may converge to the same exact orbit (the HB points lie closer to
+// each other than their truncation error, hb_orbit_error): the corrected family then does
+// not turn where the HB branch does, a crossing of that family near the fold is met once
+// on each side of it (the Kahraman-Singh oscillator at F_a = 0.1, H = 10: the fold at
+// Omega = 0.31452 and the period doubling at 0.31465 twice each), and the fold itself may
+// show no +1 crossing at all (H = 20: the doubling twice, the fold missed). So:
+//  - an entry of the same type as an earlier one, at the same omega (1e-6 relative), with
+//    a fold of the branch between them (within 2 points) is the same crossing: dropped;
+//  - a fold of the branch (its tangent's omega component changes sign, located by the
+//    continuation) with no fold entry within 2 points or 1e-3 relative omega is listed
+//    as a fold at the located turning point, with the real multiplier nearest +1 of the
+//    corrected orbit there; smooth = 0 unless that multiplier is within 1e-2 of +1.
+std::vector<Bifurcation> one_entry_per_crossing(const HarmonicBalance& hb, const FrequencyCurve& c, double xs,
+                                                const FloquetOptions& fo) {
+  std::vector<Bifurcation> out;
+  const auto& folds = c.branch.folds;
+  for (const auto& bf : c.bifurcations) {
+    bool same = false;
+    for (const auto& k : out) {
+      if (k.type != bf.type || !k.located || !bf.located || std::fabs(k.omega - bf.omega) > 1e-6 * std::fabs(bf.omega)) continue;
+      for (const auto& f : folds) same = same || (f.after_point >= k.after_point - 2 && f.after_point <= bf.after_point + 2);
+    }
+    if (!same) out.push_back(bf);
+  }
+  for (const auto& f : folds) {
+    bool listed = false;
+    for (const auto& k : out)
+      listed = listed || (k.type == BifurcationType::fold &&
+                          (std::abs(k.after_point - f.after_point) <= 2 || std::fabs(k.omega - f.omega) <= 1e-3 * std::fabs(f.omega)));
+    if (listed) continue;
+    Bifurcation bf;
+    bf.type = BifurcationType::fold;
+    bf.omega = f.omega;
+    bf.after_point = f.after_point;
+    bf.multiplier = std::complex<double>(NAN, 0.0);
+    try {
+      const FloquetResult r = floquet_of_hb_orbit(hb, f.X, f.omega, xs, fo);
+      double d = INFINITY;
+      for (Eigen::Index i = 0; i < r.multipliers.size(); ++i)
+        if (is_real(r.multipliers[i]) && std::abs(r.multipliers[i] - 1.0) < d)
+          d = std::abs(r.multipliers[i] - 1.0), bf.multiplier = r.multipliers[i];
+      if (!std::isfinite(d)) bf.multiplier = r.critical;
+    } catch (const std::exception&) {
+      bf.located = false;
+    }
+    bf.smooth = bf.located && std::abs(bf.multiplier - 1.0) <= 1e-2;
+    if (!std::isfinite(bf.multiplier.real())) bf.multiplier = 0.0;
+    out.insert(std::upper_bound(out.begin(), out.end(), bf,
+                                [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; }),
+               bf);
+  }
+  return out;
+}
+
 std::string failure_report(const HarmonicBalance& hb, const Branch& b) {
   std::ostringstream os;
   os << b.summary();
@@ -163,9 +220,47 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
       return code;
     };
   }
-  const Eigen::VectorXd X0 = linear_first_guess(hb, co.omega_start);
-  c.branch = opt.natural ? natural_continuation(hb, X0, c.scaling, co)
-                         : arc_length_continuation(hb, X0, c.scaling, co);
+  // The first point: Newton from the linear guess inside the continuation (as always);
+  // if that fails, find_first_point's contact sets and forcing-amplitude continuation
+  // (first_point.hpp), and the continuation again from what it found.
+  auto run = [&](const Eigen::VectorXd& X0) {
+    return opt.natural ? natural_continuation(hb, X0, c.scaling, co) : arc_length_continuation(hb, X0, c.scaling, co);
+  };
+  bool started = false;
+  try {
+    c.branch = run(linear_first_guess(hb, co.omega_start));
+    started = !c.branch.points.empty();
+  } catch (const std::invalid_argument&) {
+    // neither linear guess is finite (K singular under a static load): find_first_point
+  }
+  if (!started) {
+    FirstPointOptions fo;
+    fo.newton.tolerance = co.tolerance;
+    fo.continuation = co;
+    fo.continuation.progress = nullptr;
+    const FirstPoint fp = find_first_point(hb, co.omega_start, c.scaling, fo);
+    if (!fp.found) {
+      std::ostringstream os;
+      os << "case " << label << ": the sweep cannot start: no periodic solution found at omega = " << co.omega_start
+         << " (" << fp.failure << ")";
+      c.branch = Branch{};
+      c.failure = os.str();
+      return c;
+    }
+    c.first_point = fp.method;
+    c.branch = run(fp.X);
+  }
+  // A first point on a fold pair whose branch leaves the range at its start (the
+  // stable low-amplitude orbit of a clearance oscillator below a superharmonic fold):
+  // follow the branch outside the range by up to a quarter of the range, where it may
+  // turn at the pair's other fold and come back through the start.
+  if (!opt.natural && !c.branch.complete && !c.branch.failures.empty() && co.start_excursion == 0.0 &&
+      c.branch.failures.back().what == "branch turned back out of the range at its start") {
+    ContinuationOptions wide = co;
+    wide.start_excursion = 0.25 * (opt.omega_max - opt.omega_min);
+    Branch again = arc_length_continuation(hb, c.branch.points.front().X, c.scaling, wide);
+    if (again.complete) c.branch = std::move(again);
+  }
   c.complete = c.branch.complete;
   if (!c.complete) c.failure = "case " + label + ": " + failure_report(hb, c.branch);
   const auto& P = c.branch.points;
@@ -223,6 +318,7 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
     }
     c.bifurcations.push_back(bf);
   }
+  c.bifurcations = one_entry_per_crossing(hb, c, xs, opt.floquet);
   return c;
 }
 

@@ -8,7 +8,10 @@
 //
 //  - sweep_frequency: pseudo-arc-length continuation (or natural continuation
 //    for teaching), upward from omega_min or downward from omega_max, from the
-//    better of the open- and closed-contact linear solutions there. It returns
+//    better of the open- and closed-contact linear solutions there, or, where
+//    Newton fails from both (K = 0 with clearances on both sides), from the point
+//    find_first_point finds (first_point.hpp); a sweep that cannot start returns
+//    no points, complete = false and the reason. It returns
 //    the points it has: an incomplete branch has complete = false and a
 //    `failure` that names the case, the frequency, the residual, the step and a
 //    hint; callers that need the whole range call require_complete.
@@ -32,6 +35,7 @@
 #include <complex>
 
 #include "gearhb/hb/continuation.hpp"
+#include "gearhb/hb/first_point.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
@@ -87,6 +91,10 @@ struct FrequencyCurve {
   std::vector<Bifurcation> bifurcations;   // Floquet only, in continuation order
   Scaling scaling;               // the scaling the branch was computed with
   bool natural = false;
+  // How the first point was found: linear_guess (Newton from the better of the open and
+  // all-closed linear solutions, as always), or find_first_point's contact_set or
+  // amplitude_continuation (first_point.hpp) where that failed.
+  FirstPointMethod first_point = FirstPointMethod::linear_guess;
   bool complete = false;         // the branch reached the end of the range
   std::string failure;           // why not (omega, residual, step, hint); empty if complete
 };

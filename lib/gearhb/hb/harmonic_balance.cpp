@@ -348,15 +348,19 @@ Eigen::VectorXd HarmonicBalance::penetration(const Eigen::VectorXd& X, std::size
 }
 
 Eigen::VectorXd HarmonicBalance::linear_solution(double w, bool closed) const {
+  return contact_set_solution(w, closed ? ~0ull : 0ull);
+}
+
+Eigen::VectorXd HarmonicBalance::contact_set_solution(double w, unsigned long long closed) const {
   Eigen::MatrixXd K = sys_.K;
   Eigen::VectorXd f0 = f_.f0;
-  if (closed)
-    for (std::size_t i = 0; i < contacts_.size(); ++i) {
-      const auto& ct = contacts_[i];
-      // a stiffness profile enters with its mean (then this is a first guess only)
-      K += kc_mean_[i] * ct.normal * ct.normal.transpose();
-      f0 -= kc_mean_[i] * ct.gap * ct.normal;   // constant part of kc (g + n'x) moved to the right
-    }
+  for (std::size_t i = 0; i < contacts_.size(); ++i) {
+    if (i >= 64 || !(closed >> i & 1ull)) continue;
+    const auto& ct = contacts_[i];
+    // a stiffness profile enters with its mean (then this is a first guess only)
+    K += kc_mean_[i] * ct.normal * ct.normal.transpose();
+    f0 -= kc_mean_[i] * ct.gap * ct.normal;   // constant part of kc (g + n'x) moved to the right
+  }
   Eigen::VectorXd X = Eigen::VectorXd::Zero(size());
   // K singular (a free rigid-body mode, e.g. gears with rigid shafts and the mesh
   // open) under a static load that K cannot hold: no static equilibrium, the

@@ -95,6 +95,10 @@ class HarmonicBalance : public ParametricProblem {
   // A contact with a stiffness profile (contact.hpp) enters with its mean
   // stiffness: then this is only a first guess.
   Eigen::VectorXd closed_contact_solution(double omega) const;
+  // The same with the contacts of the set `closed` (bit i: contact i, i < 64) permanently
+  // closed and the others removed: exact while that contact set holds over the whole
+  // period. The open and closed solutions are the empty and the full set.
+  Eigen::VectorXd contact_set_solution(double omega, unsigned long long closed) const;
   // Mean over the period of contact i's stiffness (kc, or kc times the mean profile).
   double mean_stiffness(std::size_t i) const { return kc_mean_[i]; }
 

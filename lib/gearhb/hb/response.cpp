@@ -42,6 +42,7 @@ ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {
     const auto [lo, hi] = trig_extremes(uc, fine_.to_time(uc));   // contact_state's reading
     any_closed = any_closed || hi > 0.0;
     any_open = any_open || !(lo > 0.0);
+    r.contact_states.push_back(hi > 0.0 ? (lo > 0.0 ? ContactState::full : ContactState::intermittent) : ContactState::open);
     const double half = 0.5 * (hi - lo);
     if (half > 0.0) r.grazing_distance = std::min(r.grazing_distance, std::min(std::fabs(hi), std::fabs(lo)) / half);
   }

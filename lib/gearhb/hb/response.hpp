@@ -20,7 +20,12 @@ namespace gearhb {
 
 struct ResponseSummary {
   double x_max = 0, x_min = 0, x_rms_ac = 0, x_h1 = 0, x_mean = 0;
+  // The summary over all contacts: open (none ever touches), full (every contact closed
+  // all period), intermittent otherwise. With two flanks (a clearance on both sides) a
+  // state that stays on one flank all period reads intermittent: contact_states says
+  // which flank does what.
   ContactState contact = ContactState::open;
+  std::vector<ContactState> contact_states;   // per contact (hb.contacts() order)
   // Distance from grazing: over the contacts, the smallest |max u| or |min u| of the
   // penetration u = g + n'x over its half peak-to-peak (0 at a grazing orbit, where
   // the contact state changes; infinite without contacts or oscillation).

@@ -1,0 +1,176 @@
+#include "gearhb/hb/first_point.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "gearhb/hb/frequency_sweep.hpp"
+
+namespace gearhb {
+
+const char* to_string(FirstPointMethod m) {
+  switch (m) {
+    case FirstPointMethod::none: return "none";
+    case FirstPointMethod::linear_guess: return "linear_guess";
+    case FirstPointMethod::contact_set: return "contact_set";
+    case FirstPointMethod::amplitude_continuation: return "amplitude_continuation";
+  }
+  return "?";
+}
+
+namespace {
+
+// R_lambda(X) = R(X, omega) with the periodic forcing fc, fs scaled by lambda (the
+// continuation parameter in place of omega): R_lambda = R_1 + (1 - lambda) f_per,
+// f_per the forcing's first-harmonic coefficients, so dR/dlambda = -f_per.
+class AmplitudeHomotopy : public ParametricProblem {
+ public:
+  AmplitudeHomotopy(const HarmonicBalance& hb, double omega) : hb_(hb), w_(omega), fper_(Eigen::VectorXd::Zero(hb.size())) {
+    const int n = hb.dofs();
+    fper_.segment(hb.index(1, 0), n) = hb.excitation().fc;
+    fper_.segment(hb.index(2, 0), n) = hb.excitation().fs;
+  }
+  int size() const override { return hb_.size(); }
+  void evaluate(const Eigen::VectorXd& X, double lambda, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                Eigen::VectorXd* dRdw) const override {
+    hb_.evaluate(X, w_, R, dRdX, nullptr);
+    R += (1.0 - lambda) * fper_;
+    if (dRdw) *dRdw = -fper_;
+  }
+  bool forced() const { return fper_.cwiseAbs().maxCoeff() > 0.0; }
+
+ private:
+  const HarmonicBalance& hb_;
+  double w_;
+  Eigen::VectorXd fper_;
+};
+
+struct Candidate {
+  Eigen::VectorXd X;
+  unsigned long long set = 0;
+  double residual = 0.0;
+};
+
+// Linear solutions of every contact set except `skip` (step 2), finite ones only,
+// sorted by their residual in `p` at parameter `par`; `static_only` drops their
+// harmonics (the lambda = 0 problem has no periodic forcing).
+std::vector<Candidate> contact_set_candidates(const HarmonicBalance& hb, const ParametricProblem& p, double omega,
+                                              double par, const FirstPointOptions& opt, bool static_only,
+                                              const std::vector<unsigned long long>& skip) {
+  const int P = int(hb.contacts().size());
+  std::vector<unsigned long long> sets;
+  if (P <= opt.max_set_contacts && P < 63) {
+    for (unsigned long long S = 0; S < (1ull << P); ++S) sets.push_back(S);
+  } else {
+    for (int i = 0; i < P && i < 64; ++i) sets.push_back(1ull << i);
+  }
+  std::vector<Candidate> out;
+  Eigen::VectorXd R;
+  for (unsigned long long S : sets) {
+    if (std::find(skip.begin(), skip.end(), S) != skip.end()) continue;
+    Eigen::VectorXd X = hb.contact_set_solution(omega, S);
+    if (static_only) X.tail(X.size() - hb.dofs()).setZero();
+    if (!X.allFinite()) continue;
+    p.evaluate(X, par, R, nullptr, nullptr);
+    const double r = R.norm();
+    if (std::isfinite(r)) out.push_back({std::move(X), S, r});
+  }
+  std::stable_sort(out.begin(), out.end(), [](const Candidate& a, const Candidate& b) { return a.residual < b.residual; });
+  return out;
+}
+
+// Newton from each candidate in turn at parameter `par`; the first that converges goes
+// to fp.X and fp.contact_set (true), none: false.
+bool first_converged(const ParametricProblem& p, const std::vector<Candidate>& cands, double par, const Scaling& s,
+                     const FirstPointOptions& opt, FirstPoint& fp) {
+  for (const auto& c : cands) {
+    Eigen::VectorXd X = c.X;
+    ++fp.newton_solves;
+    if (newton_solve(p, X, par, s, opt.newton).converged) {
+      fp.X = std::move(X);
+      fp.contact_set = c.set;
+      return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scaling& s, const FirstPointOptions& opt) {
+  FirstPoint fp;
+  const int P = int(hb.contacts().size());
+  const unsigned long long all = P >= 64 ? ~0ull : (1ull << P) - 1ull;
+  std::ostringstream why;
+  // 1. Newton from the better of the open and all-closed linear solutions.
+  std::string step1;
+  try {
+    Eigen::VectorXd X = linear_first_guess(hb, omega);
+    ++fp.newton_solves;
+    const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
+    if (r.converged) {
+      fp.found = true;
+      fp.X = std::move(X);
+      fp.method = FirstPointMethod::linear_guess;
+      return fp;
+    }
+    step1 = "Newton from the linear open/closed-contact guess: " + r.message;
+  } catch (const std::invalid_argument& e) {
+    step1 = e.what();
+  }
+  why << step1;
+  if (P == 0) {
+    fp.failure = why.str();
+    return fp;
+  }
+  // 2. Newton from the linear solution of every other contact set.
+  const auto cands = contact_set_candidates(hb, hb, omega, omega, opt, false, {0ull, all});
+  if (first_converged(hb, cands, omega, s, opt, fp)) {
+    fp.found = true;
+    fp.method = FirstPointMethod::contact_set;
+    return fp;
+  }
+  why << "; Newton from the linear solution of each of the " << cands.size() << " other contact sets failed";
+  // 3. Continuation in the forcing amplitude from the static problem.
+  const AmplitudeHomotopy homotopy(hb, omega);
+  if (!opt.amplitude_continuation || !homotopy.forced()) {
+    fp.failure = why.str();
+    return fp;
+  }
+  if (!first_converged(homotopy, contact_set_candidates(hb, homotopy, omega, 0.0, opt, true, {}), 0.0, s, opt, fp)) {
+    why << "; the forcing-amplitude continuation has no start: no static equilibrium under the static load alone"
+           " (no contact set holds it; with K singular a static load must press a contact)";
+    fp.failure = why.str();
+    return fp;
+  }
+  ContinuationOptions co = opt.continuation;
+  co.omega_start = 0.0;
+  co.omega_end = 1.0;
+  Scaling sl = s;
+  sl.omega = 1.0;
+  const Branch b = arc_length_continuation(homotopy, fp.X, sl, co);
+  fp.homotopy_points = int(b.points.size());
+  if (!b.complete || b.points.empty() || b.points.back().omega != 1.0) {
+    why << "; the forcing-amplitude continuation from the static equilibrium stopped ("
+        << (b.failures.empty() ? std::string("did not reach the full amplitude") : b.summary()) << ")";
+    fp.failure = why.str();
+    return fp;
+  }
+  // lambda = 1 is the problem itself: a last Newton solve on it confirms the point.
+  Eigen::VectorXd X = b.points.back().X;
+  ++fp.newton_solves;
+  const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
+  if (!r.converged) {
+    why << "; the forcing-amplitude continuation reached lambda = 1 but Newton there failed: " << r.message;
+    fp.failure = why.str();
+    return fp;
+  }
+  fp.found = true;
+  fp.X = std::move(X);
+  fp.method = FirstPointMethod::amplitude_continuation;
+  return fp;
+}
+
+}  // namespace gearhb
