@@ -17,6 +17,21 @@ from style import legend_styles, mark_contact, plot_branch, read_csv, save  # no
 MARKERS = {"fold": ("o", "C3"), "period_doubling": ("D", "C4"), "neimark_sacker": ("^", "C2")}
 
 
+
+def per_contact_state(d):
+    """The markers from the state of each contact (columns contact_1, contact_2, ...):
+    intermittent where some contact opens and closes within the period, full where none
+    does and some contact stays closed. (The summary column `contact` calls a drive flank
+    closed all period beside a back flank open all period "intermittent".)"""
+    cols = sorted(k for k in d if k.startswith("contact_"))
+    if not cols:
+        return d
+    states = []
+    for i in range(len(d["omega"])):
+        s = [d[c][i] for c in cols]
+        states.append("intermittent" if "intermittent" in s else "full" if "full" in s else "open")
+    return dict(d, contact=states)
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     model = json.load(open(d_dir / "params.json"))
@@ -24,7 +39,7 @@ def main():
     fig, ax = plt.subplots(figsize=(6.8, 4.6))
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
-    mark_contact(ax, d, "x_max", "C0")
+    mark_contact(ax, per_contact_state(d), "x_max", "C0")
     bif = d_dir / "bifurcations.csv"
     if bif.exists() and bif.read_text().count("\n") > 1:
         b = read_csv(bif)
@@ -39,8 +54,13 @@ def main():
     direction = model["output"]["direction"]
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
     ax.set_ylabel("output q'x, q = %s [m]" % direction)
-    ax.set_title("%s\nH = %d, %g to %g rad/s" % (model.get("name", "model"), model["harmonics"],
-                                                  model["omega"]["from"], model["omega"]["to"]), fontsize=9)
+    lo, hi = sorted((model["omega"]["from"], model["omega"]["to"]))
+    beyond = ""   # a branch that folds back out of the range at its start is followed there
+    if min(d["omega"]) < lo * (1 - 1e-9) or max(d["omega"]) > hi * (1 + 1e-9):
+        beyond = "; the branch folds back out of the range: drawn over %.3g to %.3g" % (min(d["omega"]), max(d["omega"]))
+    ax.set_title("%s\nH = %d, swept %g to %g rad/s%s" % (model.get("name", "model"), model["harmonics"],
+                                                         model["omega"]["from"], model["omega"]["to"], beyond),
+                 fontsize=9)
     h, _ = ax.get_legend_handles_labels()
     ax.legend(handles=h + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14),
               ncol=3, frameon=False)
