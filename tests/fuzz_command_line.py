@@ -80,6 +80,11 @@ def main():
     ap.add_argument("--timeout", type=float, default=3.0)
     ap.add_argument("--file", help="the program reads this file; fuzz its numbers")
     a = ap.parse_args()
+    # the runs start in the work folder: relative paths would break
+    if "/" in a.program:
+        a.program = str(pathlib.Path(a.program).resolve())
+    if a.file:
+        a.file = str(pathlib.Path(a.file).resolve())
     rng = random.Random(a.seed)
     params = file_numbers(a.file) if a.file else parameters(a.program)
     if not params:
@@ -93,8 +98,8 @@ def main():
         out = work / name
         staging = work / ("." + name + ".staging")
         sets = []
-        for name, default in rng.sample(params, min(len(params), rng.randint(1, 3))):
-            sets += ["--set", "%s=%s" % (name, value_for(rng, default))]
+        for key, default in rng.sample(params, min(len(params), rng.randint(1, 3))):
+            sets += ["--set", "%s=%s" % (key, value_for(rng, default))]
         head = [a.program, a.file, "--set", "plot=0"] if a.file else [a.program, "--case", "own"]
         cmd = head + ["--quiet", "--out", str(out)] + sets
         try:
