@@ -49,6 +49,45 @@ double peak_to_peak(const std::vector<double>& v) {
   return *hi - *lo;
 }
 
+// ste_<i>.csv: phase, STE, F / STE, the share of each pair (0 for a pair not on the
+// path at this phase), the count of loaded pairs, the separations (empty for a pair
+// not on the path).
+Table ste_table(const std::vector<PairStePoint>& c, std::size_t pairs, double F) {
+  std::vector<std::string> columns{"phase", "ste_um", "k_N_per_m"};
+  for (std::size_t k = 0; k < pairs; ++k) columns.push_back("share_pair_" + std::to_string(k + 1));
+  columns.push_back("loaded_pairs");
+  for (std::size_t k = 0; k < pairs; ++k) columns.push_back("separation_um_" + std::to_string(k + 1));
+  Table t(columns);
+  for (const auto& p : c) {
+    std::vector<Table::Cell> row(columns.size(), Table::Cell(0.0));
+    row[0] = p.mesh.phase;
+    row[1] = p.ste * 1e6;
+    row[2] = F / p.ste;
+    row[3 + pairs] = long(p.loaded);
+    for (std::size_t k = 0; k < pairs; ++k) {
+      const bool on = k < p.mesh.pairs.size();
+      if (on) row[3 + k] = p.mesh.pairs[k].force / F;
+      row[4 + pairs + k] = cell(on, on ? p.mesh.pairs[k].separation * 1e6 : 0.0);
+    }
+    t.add_row(row);
+  }
+  return t;
+}
+
+// spectrum.csv: the amplitude per mesh order k (order 0: the mean), sqrt(a_k^2 + b_k^2).
+Table spectrum_table(const std::vector<std::string>& columns, const std::vector<Eigen::VectorXd>& spectra, int H) {
+  Table s(columns);
+  for (int k = 0; k <= H; ++k) {
+    std::vector<Table::Cell> row(spectra.size() + 1, Table::Cell(long(k)));
+    for (std::size_t i = 0; i < spectra.size(); ++i) {
+      const Eigen::VectorXd& c = spectra[i];
+      row[i + 1] = 1e6 * (k == 0 ? c[0] : std::hypot(c[2 * k - 1], c[2 * k]));
+    }
+    s.add_row(row);
+  }
+  return s;
+}
+
 class GearPairFromFile {
  public:
   explicit GearPairFromFile(Study& study);
@@ -168,29 +207,9 @@ void GearPairFromFile::transmission_error(Run& run) const {
     const double T = file_.torques[i], F = m.force(T);
     const std::string n = std::to_string(i + 1);
     const std::vector<PairStePoint> c = run.timed("ste_" + n, [&] { return pair_ste(m, phases, T); });
-    std::vector<std::string> columns{"phase", "ste_um", "k_N_per_m"};
-    for (std::size_t k = 0; k < pairs; ++k) columns.push_back("share_pair_" + std::to_string(k + 1));
-    columns.push_back("loaded_pairs");
-    for (std::size_t k = 0; k < pairs; ++k) columns.push_back("separation_um_" + std::to_string(k + 1));
-    Table t(columns);
+    run.write("ste_" + n + ".csv", ste_table(c, pairs, F));
     std::vector<double> ste;
-    for (const auto& p : c) {
-      // Shares of the pairs present (0 for a pair not on the path at this phase),
-      // the count of loaded pairs, the separations (empty for a pair not on the path).
-      std::vector<Table::Cell> row(columns.size(), Table::Cell(0.0));
-      row[0] = p.mesh.phase;
-      row[1] = p.ste * 1e6;
-      row[2] = F / p.ste;
-      row[3 + pairs] = long(p.loaded);
-      for (std::size_t k = 0; k < pairs; ++k) {
-        const bool on = k < p.mesh.pairs.size();
-        if (on) row[3 + k] = p.mesh.pairs[k].force / F;
-        row[4 + pairs + k] = cell(on, on ? p.mesh.pairs[k].separation * 1e6 : 0.0);
-      }
-      t.add_row(row);
-      ste.push_back(p.ste);
-    }
-    run.write("ste_" + n + ".csv", t);
+    for (const auto& p : c) ste.push_back(p.ste);
     const double mean = std::accumulate(ste.begin(), ste.end(), 0.0) / double(ste.size());
     key.add("torque_Nm_" + n, T, "N m");
     key.add("tooth_force_N_" + n, F, "N");
@@ -208,17 +227,7 @@ void GearPairFromFile::transmission_error(Run& run) const {
                   mean_stiffness(ste, F) / 1e6, loaded_contact_ratio(c, path));
     run.say(line);
   }
-  // Amplitude per mesh order k (order 0: the mean), sqrt(a_k^2 + b_k^2).
-  Table s(spectrum_columns);
-  for (int k = 0; k <= H; ++k) {
-    std::vector<Table::Cell> row(spectra.size() + 1, Table::Cell(long(k)));
-    for (std::size_t i = 0; i < spectra.size(); ++i) {
-      const Eigen::VectorXd& c = spectra[i];
-      row[i + 1] = 1e6 * (k == 0 ? c[0] : std::hypot(c[2 * k - 1], c[2 * k]));
-    }
-    s.add_row(row);
-  }
-  run.write("spectrum.csv", s);
+  run.write("spectrum.csv", spectrum_table(spectrum_columns, spectra, H));
 }
 
 // Step 4: ISO 6336-1 method B for the same pair, at the file's largest torque.
