@@ -28,9 +28,12 @@
 #include <numeric>
 #include <string>
 
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/app/gear_file.hpp"
 #include "gearhb/app/study.hpp"
+#include "gearhb/app/tables.hpp"
 #include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 
@@ -106,7 +109,21 @@ class GearPairFromFile {
   void transmission_error(Run& run) const;
   void iso6336(Run& run) const;
   void harris_map(Run& run) const;
+  void dynamics(Run& run) const;
   void draw(Run& run) const;
+
+  // The dynamics, per torque (README "The pair over its speed range").
+  struct Response {
+    DteGear mesh;
+    FrequencyCurve curve;
+    MeshCurveSummary summary;
+  };
+  BearingSupport bearings() const;
+  Response response(Run& run, std::size_t i, const std::vector<MeshPhase>& phases) const;
+  void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
+  void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
+  void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
+  double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
 };
 
 GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
@@ -119,6 +136,7 @@ void GearPairFromFile::run(Run& run) {
   transmission_error(run);
   iso6336(run);
   harris_map(run);
+  if (file_.dynamics.present) dynamics(run);
   if (plot_) draw(run);
 }
 
@@ -273,7 +291,129 @@ void GearPairFromFile::harris_map(Run& run) const {
   run.key_numbers().add("harris_min_ptp_um", best * 1e6, "um");
 }
 
-// Step 6: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
+// Step 6: the response over the speed range for every torque, both flanks, with Floquet
+// stability and bifurcations (frc_<i>.csv, bifurcations_<i>.csv), GSL time integration at
+// stable points (check_time_integration_<i>.csv), the closed-contact modes (modes.csv).
+void GearPairFromFile::dynamics(Run& run) const {
+  const std::vector<MeshPhase> phases = mesh_phases(file_.pair, file_.phases, stiffness());
+  const GearDynamicsInput& d = file_.dynamics;
+  Table modes({"torque_index", "torque_Nm", "mode", "f_hz", "speed_rpm_mesh_order_1"});
+  for (std::size_t i = 0; i < file_.torques.size(); ++i) {
+    const Response r = response(run, i, phases);
+    const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
+    response_tables(run, i, hb, r);
+    response_key_numbers(run, i, r);
+    if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
+    const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
+    for (std::size_t k = 0; k < f.size(); ++k)
+      modes.add_row({long(i + 1), file_.torques[i], long(k + 1), f[k], speed_rpm(2.0 * M_PI * f[k])});
+  }
+  run.write("modes.csv", modes);
+}
+
+BearingSupport GearPairFromFile::bearings() const {
+  BearingSupport b;
+  for (int i = 0; i < 2; ++i) b.mass[i] = file_.gear[i].mass, b.stiffness[i] = file_.gear[i].bearing_stiffness;
+  b.zeta = file_.dynamics.bearing_zeta;
+  b.pressure_angle = file_.pair.path().mesh.pressure_angle;
+  return b;
+}
+
+// The mesh at torque i and its frequency curve over the speed range.
+GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, const std::vector<MeshPhase>& phases) const {
+  const GearDynamicsInput& d = file_.dynamics;
+  const double T = file_.torques[i];
+  Response r;
+  r.mesh = gear_pair_mesh(file_.pair, pair_ste(file_.pair, phases, T), T, file_.gear[0].inertia, file_.gear[1].inertia,
+                          d.zeta, d.back_flank ? file_.backlash : INFINITY);
+  const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
+  SweepOptions o;
+  o.omega_min = 2.0 * M_PI * d.f_mesh_from;
+  o.omega_max = 2.0 * M_PI * d.f_mesh_to;
+  o.direction = d.direction;
+  o.continuation.ds_max = 0.05;
+  r.curve = timed_sweep(run, hb, o, "T" + std::to_string(i + 1));
+  r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
+  return r;
+}
+
+// frc_<i>.csv (the common columns, then the gear's) and bifurcations_<i>.csv.
+void GearPairFromFile::response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
+  const std::string n = std::to_string(i + 1);
+  const auto& P = r.curve.branch.points;
+  const auto& m = r.summary.points;
+  run.write("frc_" + n + ".csv",
+            frequency_response_table(
+                hb, r.curve, dte_coordinate(file_.dynamics.dofs),
+                {"f_mesh_hz", "speed_rpm", "dte_rms_um", "dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N",
+                 "dynamic_factor", "contact_drive", "contact_back"},
+                [&](std::size_t k) -> std::vector<Table::Cell> {
+                  return {P[k].omega / (2.0 * M_PI), speed_rpm(P[k].omega), m[k].dte_rms * 1e6, m[k].dte_ptp * 1e6,
+                          m[k].force_max, m[k].force_min, m[k].dynamic_factor, std::string(to_string(m[k].drive)),
+                          std::string(to_string(m[k].back))};
+                },
+                [&](std::size_t k) { return std::string(to_string(m[k].contact)); }));
+  run.write("bifurcations_" + n + ".csv", bifurcation_table(r.curve));
+}
+
+// The key numbers of torque i (file order, 1-based); a transition that never happens is absent.
+void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Response& r) const {
+  KeyNumbers& key = run.key_numbers();
+  const std::string n = std::to_string(i + 1);
+  const MeshCurveSummary& s = r.summary;
+  const double fn = closed_contact_frequencies(r.mesh, MeshDofs::one_dof, {}).front();
+  if (i == 0) key.add("f_mesh_natural_hz", fn, "Hz");
+  key.add("f_mesh_natural_hz_" + n, fn, "Hz");
+  key.add("mesh_stiffness_kc_N_per_m_" + n, r.mesh.kc, "N/m");
+  key.add("equivalent_mass_kg_" + n, r.mesh.me, "kg");
+  key.add("dte_rms_peak_um_" + n, s.dte_rms_peak * 1e6, "um");
+  key.add("dte_rms_peak_f_mesh_hz_" + n, s.dte_rms_peak_omega / (2.0 * M_PI), "Hz");
+  key.add("dynamic_factor_peak_" + n, s.dynamic_factor_peak, "-");
+  key.add("dynamic_factor_peak_speed_rpm_" + n, speed_rpm(s.dynamic_factor_peak_omega), "rpm");
+  if (std::isfinite(s.drive_loss_first_omega))
+    key.add("drive_loss_first_f_mesh_hz_" + n, s.drive_loss_first_omega / (2.0 * M_PI), "Hz");
+  if (std::isfinite(s.back_impact_first_omega))
+    key.add("back_impact_first_f_mesh_hz_" + n, s.back_impact_first_omega / (2.0 * M_PI), "Hz");
+  key.add("mean_force_rel_dev_" + n, s.mean_force_rel_dev, "-");
+  long unstable = 0;
+  for (bool st : r.curve.stable) unstable += st ? 0 : 1;
+  key.add("points_" + n, double(r.curve.branch.points.size()), "-");
+  key.add("unstable_points_" + n, double(unstable), "-");
+  key.add("bifurcations_" + n, double(r.curve.bifurcations.size()), "-");
+  char line[200];
+  std::snprintf(line, sizeof line, "T1 = %g N m: peak DTE RMS %.4f um at %.1f Hz, peak K_v %.4f at %.0f rpm, %zu points",
+                file_.torques[i], s.dte_rms_peak * 1e6, s.dte_rms_peak_omega / (2.0 * M_PI), s.dynamic_factor_peak,
+                speed_rpm(s.dynamic_factor_peak_omega), r.curve.branch.points.size());
+  run.say(line);
+}
+
+// HB against GSL time integration of the same model at stable points (mesh_time_integration_check).
+void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
+  const std::string n = std::to_string(i + 1);
+  const auto rows = run.timed("time integration T" + n, [&] {
+    return mesh_time_integration_check(hb, r.curve, r.summary, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
+                                       file_.dynamics.time_check_points);
+  });
+  Table t({"f_mesh_hz", "contact", "dte_rms_um_hb", "dte_rms_um_ti", "dynamic_factor_hb", "dynamic_factor_ti",
+           "rel_diff", "periods"});
+  double worst = 0.0;
+  long impacts = 0, losses = 0;
+  for (const auto& c : rows) {
+    t.add_row({c.omega / (2.0 * M_PI), std::string(to_string(c.contact)), c.dte_rms_hb * 1e6, c.dte_rms_ti * 1e6,
+               c.dynamic_factor_hb, c.dynamic_factor_ti, c.rel_diff, long(c.periods)});
+    worst = std::max(worst, c.rel_diff);
+    impacts += (c.contact == MeshContact::back_impact || c.contact == MeshContact::drive_loss_back_impact) ? 1 : 0;
+    losses += c.contact == MeshContact::drive_loss ? 1 : 0;
+  }
+  run.write("check_time_integration_" + n + ".csv", t);
+  KeyNumbers& key = run.key_numbers();
+  key.add("time_integration_points_" + n, double(rows.size()), "-");
+  key.add("time_integration_back_impact_points_" + n, double(impacts), "-");
+  key.add("time_integration_drive_loss_points_" + n, double(losses), "-");
+  key.add("time_integration_rel_diff_max_" + n, worst, "-");
+}
+
+// Step 7: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
 void GearPairFromFile::draw(Run& run) const {
   // The script reads the key numbers too: the frame writes them once the steps are
   // done, so write them into the staging folder now (the frame rewrites the same).

@@ -124,6 +124,6 @@ TEST(DteModel, FullContactClosedFormAndMeanForce) {
   // Independent: at w -> 0 the closed solution is x = F0/kc - e (rigid follow of the STE).
   const Eigen::VectorXd X0 = dte_closed_contact(g, 3, 1e-3);
   EXPECT_NEAR(X0[1], -g.ste[1], 1e-7 * std::fabs(g.ste[1]));   // c w / kc ~ 1e-8 at w = 1e-3
-  EXPECT_NEAR(dte_mean_contact_force(g, X) / g.F0, 1.0, 1e-9);
+  EXPECT_NEAR(dte_mean_contact_force(hb, X) / g.F0, 1.0, 1e-9);
   EXPECT_NEAR(rms_ac(X0), std::sqrt(0.5 * g.ste.tail(6).squaredNorm()), 1e-9 * rms_ac(X0));
 }

@@ -91,12 +91,56 @@ void check_potential_energy(GearFile& f, const std::string& path, const PathOfCo
   }
 }
 
+// `speed` and `dynamics`: the response over the speed range (absent `speed`: none).
+void read_dynamics(GearFile& f, const json& j, const std::string& path) {
+  const Reader r{path};
+  const json dyn = j.value("dynamics", json::object());
+  if (j.contains("dynamics") && !j.contains("speed"))
+    fail_key(path, "speed", "is missing: `dynamics` needs a speed range {unit, from, to}");
+  if (!j.contains("speed")) return;
+  GearDynamicsInput& d = f.dynamics;
+  d.present = true;
+  const json& sp = j["speed"];
+  if (!sp.is_object()) fail_key(path, "speed", "must be an object {unit, from, to}");
+  only_keys(sp, path, "speed", {"unit", "from", "to"});
+  if (!sp.contains("unit")) fail_key(path, "speed.unit", "is missing (mesh_hz | rpm)");
+  d.speed_in_rpm = r.choice(sp, "speed", "unit", {"mesh_hz", "rpm"}, 0) == 1;
+  const double lo = r.number(sp, "speed", "from", 1e-3, 1e7, "[1e-3, 1e7]");
+  const double hi = r.number(sp, "speed", "to", 1e-3, 1e7, "[1e-3, 1e7]");
+  if (!(hi > lo)) fail_key(path, "speed.to", "must exceed speed.from");
+  const double to_hz = d.speed_in_rpm ? f.pair.gear1.teeth / 60.0 : 1.0;   // f_mesh = z1 n1 / 60
+  d.f_mesh_from = lo * to_hz, d.f_mesh_to = hi * to_hz;
+  if (!(d.f_mesh_to <= 1e6)) fail_key(path, "speed.to", "gives a mesh frequency above 1 MHz");
+  only_keys(dyn, path, "dynamics", {"model", "mesh", "zeta", "bearing_zeta", "harmonics", "sweep", "back_flank",
+                                    "time_check_points", "iso_quality_grade"});
+  d.dofs = r.choice(dyn, "dynamics", "model", {"one_dof", "six_dof"}, 0) == 1 ? MeshDofs::bearings : MeshDofs::one_dof;
+  d.mesh = r.choice(dyn, "dynamics", "mesh", {"constant", "parametric"}, 0) == 1 ? DteModel::parametric
+                                                                                 : DteModel::constant;
+  d.zeta = r.optional(dyn, "dynamics", "zeta", 0.08, 1e-4, 1.0, "[1e-4, 1]");
+  d.bearing_zeta = r.optional(dyn, "dynamics", "bearing_zeta", 0.02, 1e-4, 1.0, "[1e-4, 1]");
+  d.harmonics = dyn.contains("harmonics") ? json_whole(dyn["harmonics"], path, "dynamics.harmonics", 1, 64) : 5;
+  d.direction = r.choice(dyn, "dynamics", "sweep", {"up", "down"}, 0) == 1 ? SweepDirection::down : SweepDirection::up;
+  d.back_flank = r.choice(dyn, "dynamics", "back_flank", {"yes", "no"}, 0) == 0;
+  d.time_check_points =
+      dyn.contains("time_check_points") ? json_whole(dyn["time_check_points"], path, "dynamics.time_check_points", 0, 64) : 8;
+  d.iso_quality_grade =
+      dyn.contains("iso_quality_grade") ? json_whole(dyn["iso_quality_grade"], path, "dynamics.iso_quality_grade", 1, 12) : 5;
+  for (int i = 0; i < 2; ++i) {
+    const std::string w = "gears." + std::to_string(i);
+    if (!(f.gear[i].inertia > 0.0)) fail_key(path, w + ".inertia", "is needed by the dynamics (speed) and is missing or 0");
+    if (d.dofs == MeshDofs::bearings && !(f.gear[i].mass > 0.0))
+      fail_key(path, w + ".mass", "is needed by dynamics.model six_dof and is missing or 0");
+    if (d.dofs == MeshDofs::bearings && !(f.gear[i].bearing_stiffness > 0.0))
+      fail_key(path, w + ".bearing_stiffness", "is needed by dynamics.model six_dof and is missing or 0");
+  }
+}
+
 }  // namespace
 
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "basic_rack", "centre_distance", "backlash",
-                          "torques", "gears", "model", "harris"});
+                          "torques", "gears", "model", "harris", "speed", "dynamics"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   const Reader r{path};
   GearFile f;
@@ -139,7 +183,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   for (int i = 0; i < 2; ++i) {
     const std::string w = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
-    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief"});
+    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief", "mass",
+                           "bearing_stiffness"});
     GearGeometry& G = *geo[i];
     G.module = m;
     G.pressure_angle_deg = alpha;
@@ -153,6 +198,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
     f.gear[i].inertia = r.optional(g, w, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
     f.gear[i].rim_radius = r.optional(g, w, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
+    f.gear[i].mass = r.optional(g, w, "mass", 0.0, 0.0, 1e6, "[0, 1e6] kg (0: not given)");
+    f.gear[i].bearing_stiffness = r.optional(g, w, "bearing_stiffness", 0.0, 0.0, 1e13, "[0, 1e13] N/m (0: not given)");
     f.gear[i].thickness_allowance = r.optional(g, w, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
       fail_key(path, w + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
@@ -223,6 +270,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   f.harris_to = r.optional(harris, "harris", "to", 5.0 * Tmax / 3.0, 1e-3, 1e7, "[1e-3, 1e7] N m");
   f.harris_points = harris.contains("points") ? json_whole(harris["points"], path, "harris.points", 2, 200) : 19;
   if (!(f.harris_to > f.harris_from)) fail_key(path, "harris.to", "must exceed harris.from");
+
+  read_dynamics(f, j, path);
 
   // --- geometry checks (each names its key) ---------------------------------------------
   const PathOfContact p = f.pair.path();
@@ -300,6 +349,22 @@ std::string gear_file_help() {
          "  model.pair_stiffness         fused (default, thesis section 7.2) | cantilevers\n"
          "  model.tooth_force            pitch_radius (default, thesis: T1 / r1) | base_radius (T1 / rb1)\n"
          "  harris.from, harris.to, harris.points  torques of the Harris map [N m] (default T_max/6 .. 5 T_max/3, 19)\n"
+         "  speed.unit, speed.from, speed.to  the speed range of the dynamics: mesh_hz (mesh frequency\n"
+         "                               f_mesh [Hz]) | rpm (of gear 1; f_mesh = z1 n1 / 60); absent: no dynamics\n"
+         "  dynamics.model               one_dof (default: chapter 8's torsional model along the line of action)\n"
+         "                               | six_dof (x, y, theta per gear, centres on bearings: needs gears[i].mass\n"
+         "                               and gears[i].bearing_stiffness; the rigid rotation of the pair removed)\n"
+         "  dynamics.mesh                constant (default: chapter 8, constant kc, the STE as excitation) |\n"
+         "                               parametric (k(theta) = F0 / (STE - no-load TE) in contact)\n"
+         "  dynamics.zeta                mesh damping ratio, c = 2 zeta sqrt(kc me) (default 0.08, chapter 8)\n"
+         "  dynamics.bearing_zeta        damping ratio of each bearing mode, six_dof (default 0.02)\n"
+         "  dynamics.harmonics           H of the harmonic balance, also the STE harmonics kept (default 5)\n"
+         "  dynamics.sweep               up (default: from speed.from) | down (from speed.to)\n"
+         "  dynamics.back_flank          yes (default: contact where the mesh deflection < -(backlash + back\n"
+         "                               relief)) | no (drive flank only, chapter 8)\n"
+         "  dynamics.time_check_points   stable points per curve checked by GSL time integration (default 8)\n"
+         "  dynamics.iso_quality_grade   ISO 1328-1 grade of ISO 6336-1 method B's K_v (default 5)\n"
+         "  gears[i].mass, gears[i].bearing_stiffness  [kg], [N/m]: the six_dof model\n"
          "Checks (exit 2, one line naming the key): tip thickness s(ra) >= 0.2 m, tip clearance, involute\n"
          "interference, contact ratio >= 1, relief start inside the path of contact and above the base circle.\n"
          "--set PATH=VALUE overrides a number at a dotted path: torques.2=250, gears.0.x=0.3,\n"

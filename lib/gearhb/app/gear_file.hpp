@@ -26,6 +26,12 @@
 //     "model": {...},                          method beam | potential_energy, and the reading
 //                                              of the beam model (gear_file_help)
 //     "harris": {"from": 50, "to": 500, "points": 19}   torques of the Harris map [N m]
+//     "speed": {"unit": "mesh_hz", "from": 300, "to": 5000},
+//                                              optional: the speed range of the dynamics, in mesh
+//                                              frequency [Hz] or in rpm of gear 1 ("rpm"); absent:
+//                                              no dynamics (geometry and STE only)
+//     "dynamics": {"model": "one_dof", "mesh": "constant", "zeta": 0.08, "harmonics": 5, ...}
+//                                              the mesh model a scene needs (gear_file_help)
 //   }
 //
 // Every key is validated before anything runs: a bad file is one UsageError naming
@@ -38,8 +44,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {
 
@@ -48,6 +57,24 @@ struct GearFileGear {
   double inertia = 0.0;            // [kg m^2]
   double rim_radius = 0.0;         // [m], 0 = solid
   double thickness_allowance = 0.0;   // A_sn [m] <= 0 on the reference circle
+  double mass = 0.0;               // [kg] (six_dof dynamics)
+  double bearing_stiffness = 0.0;  // isotropic bearing stiffness [N/m] (six_dof dynamics)
+};
+
+// The dynamics over the speed range (`speed`, `dynamics`; README of gearhb_gear).
+struct GearDynamicsInput {
+  bool present = false;            // the file has a speed range
+  bool speed_in_rpm = false;       // speed.unit: rpm of gear 1, or mesh_hz
+  double f_mesh_from = 0.0, f_mesh_to = 0.0;   // the range as mesh frequencies [Hz]
+  MeshDofs dofs = MeshDofs::one_dof;           // dynamics.model one_dof | six_dof
+  DteModel mesh = DteModel::constant;          // dynamics.mesh constant | parametric
+  double zeta = 0.08;              // mesh damping ratio (chapter 8)
+  double bearing_zeta = 0.02;      // damping ratio of each bearing mode (six_dof)
+  int harmonics = 5;               // H
+  SweepDirection direction = SweepDirection::up;
+  bool back_flank = true;          // model the back flank (with the file's backlash)
+  int time_check_points = 8;       // stable points per curve checked by time integration
+  int iso_quality_grade = 5;       // ISO 1328-1 grade for ISO 6336-1's K_v
 };
 
 // The tooth model of the pair stiffness (`model.method`): chapter 7's beams (the
@@ -67,6 +94,7 @@ struct GearFile {
   int phases = 64;                 // phases per mesh cycle (continuous reading)
   double harris_from = 0, harris_to = 0;   // [N m]
   int harris_points = 0;
+  GearDynamicsInput dynamics;
   nlohmann::json resolved;         // the file after overrides (params.json)
 };
 

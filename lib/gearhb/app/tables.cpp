@@ -48,16 +48,31 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
 }
 
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q) {
+  return frequency_response_table(hb, c, q, {}, {});
+}
+
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
+                               const std::vector<std::string>& extra,
+                               const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
+                               const std::function<std::string(std::size_t)>& contact_label) {
   ResponseEvaluator ev(hb, q);
-  Table t({"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact", "floquet_modulus",
-           "floquet_angle", "hb_orbit_error"});
+  std::vector<std::string> columns{"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
+                                   "floquet_modulus", "floquet_angle", "hb_orbit_error"};
+  columns.insert(columns.end(), extra.begin(), extra.end());
+  Table t(columns);
   const auto& P = c.branch.points;
   const bool fl = c.floquet.size() == P.size();
   for (std::size_t i = 0; i < P.size(); ++i) {
     const auto r = ev.summarize(P[i].X);
-    t.add_row({P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
-               std::string(to_string(r.contact)), cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
-               cell(fl, fl ? c.floquet[i].orbit_error : 0.0)});
+    std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+                                 contact_label ? contact_label(i) : std::string(to_string(r.contact)),
+                                 cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
+                                 cell(fl, fl ? c.floquet[i].orbit_error : 0.0)};
+    if (!extra.empty()) {
+      const std::vector<Table::Cell> more = extra_row(i);
+      row.insert(row.end(), more.begin(), more.end());
+    }
+    t.add_row(std::move(row));
   }
   return t;
 }

@@ -2,6 +2,8 @@
 // The standard tables a frequency sweep is written as (README "Output files"):
 // the numerics (hb/) return results; this application-layer module turns them
 // into CSV tables.
+#include <functional>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -31,6 +33,13 @@ Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::
 // hb_orbit_error (max |x_HB - x_exact| over the period, floquet.hpp); NaN when the
 // curve was not computed with Floquet stability.
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
+// The same with a program's own columns after the common ones: `extra` names them and
+// `extra_row(i)` gives point i's cells; `contact_label(i)`, if given, is point i's `contact`
+// in the program's vocabulary (e.g. a gear mesh's full | drive_loss | back_impact | ...).
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
+                               const std::vector<std::string>& extra,
+                               const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
+                               const std::function<std::string(std::size_t)>& contact_label = {});
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),

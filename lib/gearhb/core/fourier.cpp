@@ -162,6 +162,16 @@ double trig_series(const double* c, int H, double theta) {
   return v;
 }
 
+Eigen::VectorXd reflected_series(const Eigen::VectorXd& c, double psi) {
+  Eigen::VectorXd r = c;
+  for (int k = 1; 2 * k < c.size(); ++k) {
+    const double ck = std::cos(k * psi), sk = std::sin(k * psi), a = c[2 * k - 1], b = c[2 * k];
+    r[2 * k - 1] = a * ck + b * sk;
+    r[2 * k] = a * sk - b * ck;
+  }
+  return r;
+}
+
 std::vector<double> harmonic_amplitudes(const std::vector<double>& period_samples, int H) {
   const int N = int(period_samples.size());
   Aft aft(H, N);

@@ -74,6 +74,10 @@ inline double trig_series(const Eigen::VectorXd& c, double theta) {
   return trig_series(c.data(), int(c.size() - 1) / 2, theta);
 }
 
+// Coefficients of the reflected series f(psi - theta) from those of f(theta):
+// a_k' = a_k cos(k psi) + b_k sin(k psi),  b_k' = a_k sin(k psi) - b_k cos(k psi).
+Eigen::VectorXd reflected_series(const Eigen::VectorXd& c, double psi);
+
 // Amplitude sqrt(a_k^2 + b_k^2) of harmonics k = 0..H of a uniformly sampled
 // period (k = 0 gives |mean|). Convenience for spectra of measured signals.
 std::vector<double> harmonic_amplitudes(const std::vector<double>& period_samples, int H);

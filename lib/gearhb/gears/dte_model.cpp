@@ -8,6 +8,7 @@
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/hb/contact.hpp"
+#include "gearhb/hb/response.hpp"
 
 namespace gearhb {
 
@@ -27,11 +28,20 @@ Eigen::VectorXd ste_harmonics(const DteGear& g, int H) {
 
 const char* to_string(DteModel m) { return m == DteModel::parametric ? "parametric" : "constant"; }
 
+namespace {
+// A series cut (or zero-padded) to H harmonics; an empty one is 0.
+Eigen::VectorXd cut(const Eigen::VectorXd& c, int H) {
+  Eigen::VectorXd e = Eigen::VectorXd::Zero(2 * H + 1);
+  const int n = std::min<int>(int(c.size()), 2 * H + 1);
+  e.head(n) = c.head(n);
+  return e;
+}
+// The elastic part e_H - g_H of the STE (g the no-load transmission error).
+Eigen::VectorXd elastic_ste(const DteGear& g, int H) { return ste_harmonics(g, H) - cut(g.nlte, H); }
+}  // namespace
+
 double dte_parametric_stiffness(const DteGear& g, int H, double theta) {
-  const Eigen::VectorXd e = ste_harmonics(g, H);
-  double v = e[0];
-  for (int k = 1; k <= H; ++k) v += e[2 * k - 1] * std::cos(k * theta) + e[2 * k] * std::sin(k * theta);
-  return g.F0 / v;
+  return g.F0 / trig_series(elastic_ste(g, H), theta);
 }
 
 HarmonicBalance dte_harmonic_balance(const DteGear& g, int H, int N, ContactQuadrature q, DteModel model) {
@@ -39,27 +49,44 @@ HarmonicBalance dte_harmonic_balance(const DteGear& g, int H, int N, ContactQuad
   const Eigen::MatrixXd K = Eigen::MatrixXd::Zero(1, 1);   // rigid shafts: no spring to ground
   const Eigen::VectorXd one = Eigen::VectorXd::Constant(1, 1.0);
   Excitation f{Eigen::VectorXd::Constant(1, g.F0), Eigen::VectorXd::Zero(1), Eigen::VectorXd::Zero(1)};
-  Eigen::VectorXd e = ste_harmonics(g, H);
+  return HarmonicBalance(LinearSystem{M, C, K}, dte_mesh_contacts(g, H, model, one), f, H, N, q);
+}
+
+std::vector<UnilateralContact> dte_mesh_contacts(const DteGear& g, int H, DteModel model, const Eigen::VectorXd& n) {
+  // A contact whose penetration is  sign u + p(theta),  p given by its coefficients.
+  auto contact = [&](double sign, Eigen::VectorXd p) {
+    const double p0 = p[0];
+    p[0] = 0.0;
+    return UnilateralContact{sign * n, g.kc, p0, p};
+  };
+  const Eigen::VectorXd gH = cut(g.nlte, H);
+  const Eigen::VectorXd gb = reflected_series(gH, g.back_phase);   // g_b(theta) = g(psi - theta)
+  const Eigen::VectorXd bn = Eigen::VectorXd::Unit(2 * H + 1, 0) * (has_back_flank(g) ? g.backlash : 0.0);
+  std::vector<UnilateralContact> mesh;
   if (model == DteModel::parametric) {
-    // k(theta) = F0 / e_H(theta) = kc s(theta); e_H must stay positive
+    // k_el(theta) = F0 / (e_H - g_H)(theta) = kc s(theta); e_H - g_H must stay positive
+    const Eigen::VectorXd el = elastic_ste(g, H);
     const Aft aft(H, 64 * (2 * H + 1));
-    const Eigen::VectorXd es = aft.to_time(e);
+    const Eigen::VectorXd es = aft.to_time(el);
     if (!(es.minCoeff() > 0.0))
-      throw std::invalid_argument("parametric mesh model: the STE cut to H = " + std::to_string(H) +
-                                  " harmonics is not positive over the whole mesh cycle (min " +
+      throw std::invalid_argument("parametric mesh model: the elastic STE (STE minus the no-load transmission error) cut to H = " +
+                                  std::to_string(H) + " harmonics is not positive over the whole mesh cycle (min " +
                                   std::to_string(es.minCoeff()) + " m)");
     const double F0 = g.F0, kc = g.kc;
-    UnilateralContact mesh{one, kc, 0.0, {}, [e, F0, kc, H](double th) {
-                             double v = e[0];
-                             for (int k = 1; k <= H; ++k) v += e[2 * k - 1] * std::cos(k * th) + e[2 * k] * std::sin(k * th);
-                             return F0 / (kc * v);
-                           }};
-    return HarmonicBalance(LinearSystem{M, C, K}, {mesh}, f, H, N, q);
+    auto profile = [el, F0, kc](double th) { return F0 / (kc * trig_series(el, th)); };
+    mesh.push_back(contact(1.0, -gH));                         // d - g
+    mesh.back().stiffness_profile = profile;
+    if (has_back_flank(g)) {
+      const double psi = g.back_phase;
+      mesh.push_back(contact(-1.0, -bn - gb));                 // -d - b_n - g_b
+      mesh.back().stiffness_profile = [profile, psi](double th) { return profile(psi - th); };
+    }
+    return mesh;
   }
-  const double e0 = e[0];
-  e[0] = 0.0;
-  UnilateralContact mesh{one, g.kc, e0, e};
-  return HarmonicBalance(LinearSystem{M, C, K}, {mesh}, f, H, N, q);
+  const Eigen::VectorXd e = ste_harmonics(g, H);
+  mesh.push_back(contact(1.0, e));                             // x + e
+  if (has_back_flank(g)) mesh.push_back(contact(-1.0, -e - bn - gb));   // -(x + e) - b_n - g_b
+  return mesh;
 }
 
 Eigen::VectorXd dte_closed_contact(const DteGear& g, int H, double omega) {
@@ -82,30 +109,10 @@ Eigen::VectorXd dte_penetration(const DteGear& g, const Eigen::VectorXd& X) {
   return X + ste_harmonics(g, H);
 }
 
-double dte_mean_contact_force(const DteGear& g, const Eigen::VectorXd& X, DteModel model) {
-  const Eigen::VectorXd u = model == DteModel::parametric ? X : dte_penetration(g, X);
-  const int H = int(u.size() - 1) / 2;
-  const Aft aft(H, std::max(Aft::default_samples(H), 64));
-  const Eigen::VectorXd us = aft.to_time(u);
-  const auto intervals = contact_intervals(u, us);
-  if (model == DteModel::parametric) {
-    // (1/2pi) int_I k d: the moment of order 0 of the indicator weighted by k d
-    auto kd = [&](double th) {
-      double d = u[0];
-      for (int k = 1; k <= H; ++k) d += u[2 * k - 1] * std::cos(k * th) + u[2 * k] * std::sin(k * th);
-      return dte_parametric_stiffness(g, H, th) * d;
-    };
-    double Sc = 0.0, Ss = 0.0;
-    weighted_indicator_moments(intervals, kd, 0, 2.0 * M_PI / aft.samples(), &Sc, &Ss);
-    return Sc;
-  }
-  double sum = 0.0;
-  for (const auto& [a, b] : intervals) {
-    sum += u[0] * (b - a);
-    for (int k = 1; k <= H; ++k)
-      sum += (u[2 * k - 1] * (std::sin(k * b) - std::sin(k * a)) - u[2 * k] * (std::cos(k * b) - std::cos(k * a))) / k;
-  }
-  return g.kc * sum / (2.0 * M_PI);
+double dte_mean_contact_force(const HarmonicBalance& hb, const Eigen::VectorXd& X) {
+  double F = mean_contact_force(hb, X, 0);
+  if (hb.contacts().size() > 1) F -= mean_contact_force(hb, X, 1);
+  return F;
 }
 
 double rms_ac(const Eigen::VectorXd& c) {

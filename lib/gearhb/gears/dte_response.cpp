@@ -14,7 +14,11 @@ namespace gearhb {
 
 namespace {
 const Eigen::VectorXd kX = Eigen::VectorXd::Constant(1, 1.0);
+// The drive flank (contact 0) is closed all period; the back flank, if any, plays no part.
+bool drive_closed(const ResponseEvaluator& ev, const Eigen::VectorXd& X) {
+  return ev.summarize(X).contact_states.front() == ContactState::full;
 }
+}  // namespace
 
 DteGear dte_gear(const std::vector<double>& ste, double torque, double r, double I1, double I2, double zeta,
                  int ste_harmonics) {
@@ -39,7 +43,7 @@ DteCurveReport dte_curve_report(const DteGear& g, const HarmonicBalance& hb, con
   DteCurveReport r;
   bool in_band = false;
   for (std::size_t i = 0; i < P.size(); ++i) {
-    const bool lost = ev.summarize(P[i].X).contact != ContactState::full;
+    const bool lost = !drive_closed(ev, P[i].X);
     if (lost && !in_band) r.loss_bands.push_back({P[i].omega, P[i].omega});
     if (lost) {
       auto& b = r.loss_bands.back();
@@ -48,7 +52,7 @@ DteCurveReport dte_curve_report(const DteGear& g, const HarmonicBalance& hb, con
     }
     in_band = lost;
     r.mean_force_rel_dev =
-        std::max(r.mean_force_rel_dev, std::fabs(dte_mean_contact_force(g, P[i].X, model) - g.F0) / g.F0);
+        std::max(r.mean_force_rel_dev, std::fabs(dte_mean_contact_force(hb, P[i].X) - g.F0) / g.F0);
     if (!lost && model == DteModel::constant) {
       const Eigen::VectorXd Xc = dte_closed_contact(g, hb.harmonics(), P[i].omega);
       r.closed_form_rel_diff = std::max(r.closed_form_rel_diff, (P[i].X - Xc).lpNorm<Eigen::Infinity>() /
@@ -60,7 +64,7 @@ DteCurveReport dte_curve_report(const DteGear& g, const HarmonicBalance& hb, con
       r.peak_omega = P[i].omega;
     }
   }
-  r.first_loss_omega = first_transition(hb, c, opens_somewhere(hb));
+  r.first_loss_omega = first_transition(hb, c, opens_somewhere(hb, 0));
   return r;
 }
 
@@ -130,7 +134,7 @@ DteTimeCheck dte_time_integration_check(const HarmonicBalance& hb, const Frequen
   std::vector<std::size_t> lost, full;
   for (std::size_t i = 0; i < P.size(); ++i) {
     if (!c.stable[i] || near_fold(c, P[i].omega)) continue;
-    (ev.summarize(P[i].X).contact == ContactState::full ? full : lost).push_back(i);
+    (drive_closed(ev, P[i].X) ? full : lost).push_back(i);
   }
   std::vector<std::size_t> chosen;
   auto spread = [&](const std::vector<std::size_t>& v, std::size_t n) {
@@ -157,7 +161,7 @@ DteFloquetCheck dte_floquet_check(const HarmonicBalance& hb, const FrequencyCurv
       if (ok(i) && (best == P.size() || value(i) > value(best))) best = i;
     return best;
   };
-  auto closed = [&](std::size_t i) { return ev.summarize(P[i].X).contact == ContactState::full; };
+  auto closed = [&](std::size_t i) { return drive_closed(ev, P[i].X); };
   auto rms = [&](std::size_t i) { return rms_ac(P[i].X); };
   auto away = [&](std::size_t i) { return !near_fold(c, P[i].omega, fold_margin); };
   const std::size_t full = pick([&](std::size_t i) { return c.stable[i] && closed(i) && away(i); }, rms);

@@ -22,9 +22,10 @@ const char* to_string(FirstPointMethod m) {
 
 namespace {
 
-// R_lambda(X) = R(X, omega) with the periodic forcing fc, fs scaled by lambda (the
-// continuation parameter in place of omega): R_lambda = R_1 + (1 - lambda) f_per,
-// f_per the forcing's first-harmonic coefficients, so dR/dlambda = -f_per.
+// R_lambda(X) = R(X, omega) with the periodic forcing fc, fs and the periodic parts of the
+// gaps (a transmission error) scaled by lambda, the continuation parameter in place of omega:
+// R_lambda = R_1(gaps scaled by lambda) + (1 - lambda) f_per, f_per the forcing's first-harmonic
+// coefficients, so dR/dlambda = dR/d(gap scale) - f_per. At lambda = 0 the problem is static.
 class AmplitudeHomotopy : public ParametricProblem {
  public:
   AmplitudeHomotopy(const HarmonicBalance& hb, double omega) : hb_(hb), w_(omega), fper_(Eigen::VectorXd::Zero(hb.size())) {
@@ -35,11 +36,11 @@ class AmplitudeHomotopy : public ParametricProblem {
   int size() const override { return hb_.size(); }
   void evaluate(const Eigen::VectorXd& X, double lambda, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
                 Eigen::VectorXd* dRdw) const override {
-    hb_.evaluate(X, w_, R, dRdX, nullptr);
+    hb_.evaluate_gap_scaled(X, w_, lambda, R, dRdX, dRdw);
     R += (1.0 - lambda) * fper_;
-    if (dRdw) *dRdw = -fper_;
+    if (dRdw) *dRdw -= fper_;
   }
-  bool forced() const { return fper_.cwiseAbs().maxCoeff() > 0.0; }
+  bool forced() const { return fper_.cwiseAbs().maxCoeff() > 0.0 || hb_.gaps_vary(); }
 
  private:
   const HarmonicBalance& hb_;

@@ -324,18 +324,24 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
 
 namespace {
 std::function<bool(const Eigen::VectorXd&)> state_predicate(const HarmonicBalance& hb,
-                                                            ContactState not_this) {
+                                                            ContactState not_this, int contact) {
+  if (contact >= int(hb.contacts().size()))
+    throw std::invalid_argument("contact predicate: contact " + std::to_string(contact) + " of " +
+                                std::to_string(hb.contacts().size()));
   // The state does not depend on the plotted coordinate; 256 samples per period.
   const auto ev = std::make_shared<const ResponseEvaluator>(hb, Eigen::VectorXd::Zero(hb.dofs()), 256);
-  return [ev, not_this](const Eigen::VectorXd& X) { return ev->summarize(X).contact != not_this; };
+  return [ev, not_this, contact](const Eigen::VectorXd& X) {
+    const ResponseSummary s = ev->summarize(X);
+    return (contact < 0 ? s.contact : s.contact_states[std::size_t(contact)]) != not_this;
+  };
 }
 }  // namespace
 
-std::function<bool(const Eigen::VectorXd&)> touches_somewhere(const HarmonicBalance& hb) {
-  return state_predicate(hb, ContactState::open);
+std::function<bool(const Eigen::VectorXd&)> touches_somewhere(const HarmonicBalance& hb, int contact) {
+  return state_predicate(hb, ContactState::open, contact);
 }
-std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalance& hb) {
-  return state_predicate(hb, ContactState::full);
+std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalance& hb, int contact) {
+  return state_predicate(hb, ContactState::full, contact);
 }
 
 double first_transition(const HarmonicBalance& hb, const FrequencyCurve& c,

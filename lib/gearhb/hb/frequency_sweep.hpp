@@ -113,9 +113,11 @@ Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label);
 
-// Contact predicates (on the penetration of every contact over a period).
-std::function<bool(const Eigen::VectorXd&)> touches_somewhere(const HarmonicBalance& hb);
-std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalance& hb);
+// Contact predicates on the penetration over a period: of every contact together (contact
+// = -1: the summary state, ResponseSummary::contact) or of contact `contact` alone (e.g. one
+// flank of a gear mesh with backlash).
+std::function<bool(const Eigen::VectorXd&)> touches_somewhere(const HarmonicBalance& hb, int contact = -1);
+std::function<bool(const Eigen::VectorXd&)> opens_somewhere(const HarmonicBalance& hb, int contact = -1);
 
 // First omega along the branch where `state` switches from false to true; NaN if never.
 double first_transition(const HarmonicBalance& hb, const FrequencyCurve& c,

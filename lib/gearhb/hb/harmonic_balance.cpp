@@ -94,11 +94,12 @@ Eigen::MatrixXd HarmonicBalance::harmonic_block(int k, double w) const {
 }
 
 void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian,
-                                    std::vector<Eigen::MatrixXd>* G) const {
+                                    std::vector<Eigen::MatrixXd>* G, double gap_scale, Eigen::VectorXd* dRdscale) const {
   const int n = n_, m = 2 * H_ + 1, N = aft_.samples();
+  jacobian = jacobian || dRdscale;
   for (const auto& ct : contacts_) {
     // u(theta) = g(theta) + n' x(theta): coefficients, then samples.
-    for (int a = 0; a < m; ++a) uc_[a] = ct.normal.dot(X.segment(a * n, n)) + ct.gap_harmonics[a];
+    for (int a = 0; a < m; ++a) uc_[a] = ct.normal.dot(X.segment(a * n, n)) + gap_scale * ct.gap_harmonics[a];
     uc_[0] += ct.gap;
     aft_.to_time(uc_.data(), us_.data());
     if (quad_ == ContactQuadrature::exact) {
@@ -122,8 +123,27 @@ void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R
       if (jacobian) aft_.product_matrix(ss_.data(), G_);
     }
     for (int a = 0; a < m; ++a) R.segment(a * n, n) += fcoef_[a] * ct.normal;
-    if (jacobian) G->push_back(G_);
+    if (dRdscale) {   // dF/dscale = G g_h (exact: the boundary terms vanish, u = 0 there)
+      const Eigen::VectorXd dF = G_ * ct.gap_harmonics;
+      for (int a = 0; a < m; ++a) dRdscale->segment(a * n, n) += dF[a] * ct.normal;
+    }
+    if (G) G->push_back(G_);
   }
+}
+
+bool HarmonicBalance::gaps_vary() const {
+  for (const auto& ct : contacts_)
+    if (ct.gap_harmonics.size() > 0 && ct.gap_harmonics.cwiseAbs().maxCoeff() > 0.0) return true;
+  return false;
+}
+
+void HarmonicBalance::evaluate_gap_scaled(const Eigen::VectorXd& X, double omega, double lambda, Eigen::VectorXd& R,
+                                          Eigen::MatrixXd* J, Eigen::VectorXd* dRdlambda) const {
+  linear_terms(X, omega, R, nullptr);
+  std::vector<Eigen::MatrixXd> G;
+  if (dRdlambda) dRdlambda->setZero(size());
+  contact_terms(X, R, J != nullptr, J ? &G : nullptr, lambda, dRdlambda);
+  if (J) *J = assemble_jacobian(omega, G);
 }
 
 Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double w, const std::vector<Eigen::MatrixXd>& G) const {
@@ -144,7 +164,7 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::Vector
                                Eigen::MatrixXd* J, Eigen::VectorXd* dRdw) const {
   linear_terms(X, w, R, dRdw);
   std::vector<Eigen::MatrixXd> G;
-  contact_terms(X, R, J != nullptr, &G);
+  contact_terms(X, R, J != nullptr, J ? &G : nullptr);
   if (J) *J = assemble_jacobian(w, G);
 }
 

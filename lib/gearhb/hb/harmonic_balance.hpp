@@ -71,6 +71,12 @@ class HarmonicBalance : public ParametricProblem {
 
   void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
                 Eigen::VectorXd* dRdw) const override;
+  // The residual with the periodic parts of every gap (gap_harmonics) scaled by lambda, its
+  // Jacobian in X and dR/dlambda: find_first_point's homotopy for a model forced through its
+  // gaps (a gear mesh driven by its transmission error; first_point.hpp).
+  void evaluate_gap_scaled(const Eigen::VectorXd& X, double omega, double lambda, Eigen::VectorXd& R,
+                           Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdlambda) const;
+  bool gaps_vary() const;   // some contact has a periodic gap
   // For continuation: with fewer contact coordinates than unknowns (P (2H+1) < n (2H+1),
   // i.e. n > P) the bordered systems are solved by condensation on the contact
   // coordinates (harmonic_balance.cpp, CondensedLinearization): an LU of size
@@ -126,7 +132,10 @@ class HarmonicBalance : public ParametricProblem {
   // forces added to R (and each contact's product matrix G, kc included), the
   // dynamic stiffness block of harmonic k, and J from those.
   void linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::VectorXd* dRdw) const;
-  void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian, std::vector<Eigen::MatrixXd>* G) const;
+  // The contacts' force coefficients added to R, their product matrices to G (if given);
+  // the gaps' periodic parts scaled by gap_scale, and d(R)/d(gap_scale) added to dRdscale.
+  void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian, std::vector<Eigen::MatrixXd>* G,
+                     double gap_scale = 1.0, Eigen::VectorXd* dRdscale = nullptr) const;
   Eigen::MatrixXd harmonic_block(int k, double omega) const;
   Eigen::MatrixXd assemble_jacobian(double omega, const std::vector<Eigen::MatrixXd>& G) const;
 };

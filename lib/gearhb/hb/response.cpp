@@ -4,6 +4,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/stability.hpp"
 
 namespace gearhb {
@@ -22,6 +24,27 @@ Eigen::VectorXd ResponseEvaluator::contact_force_history(const Eigen::VectorXd& 
   for (Eigen::Index j = 0; j < u.size(); ++j)
     f[j] = contact_force(stiffness_at(ct, 2.0 * M_PI * double(j) / double(u.size())), u[j]);
   return f;
+}
+
+double mean_contact_force(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i) {
+  const UnilateralContact& ct = hb.contacts().at(i);
+  const Eigen::VectorXd u = hb.penetration(X, i);
+  const int H = int(u.size() - 1) / 2;
+  const Aft aft(H, std::max(Aft::default_samples(H), 64));
+  const auto intervals = contact_intervals(u, aft.to_time(u));
+  if (ct.stiffness_profile) {
+    double Sc = 0.0, Ss = 0.0;
+    weighted_indicator_moments(intervals, [&](double th) { return stiffness_at(ct, th) * trig_series(u, th); }, 0,
+                               2.0 * M_PI / aft.samples(), &Sc, &Ss);
+    return Sc;
+  }
+  double sum = 0.0;   // int_I u dtheta in closed form
+  for (const auto& [a, b] : intervals) {
+    sum += u[0] * (b - a);
+    for (int k = 1; k <= H; ++k)
+      sum += (u[2 * k - 1] * (std::sin(k * b) - std::sin(k * a)) - u[2 * k] * (std::cos(k * b) - std::cos(k * a))) / k;
+  }
+  return ct.kc * sum / (2.0 * M_PI);
 }
 
 ResponseSummary ResponseEvaluator::summarize(const Eigen::VectorXd& X) const {

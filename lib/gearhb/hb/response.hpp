@@ -51,6 +51,12 @@ class ResponseEvaluator {
   Aft fine_;
 };
 
+// Mean over the period of contact i's force max(k(theta) u(theta), 0): over the exact contact
+// intervals of u (contact.hpp contact_intervals), in closed form for a constant kc, by
+// Gauss-Legendre quadrature between the exact crossings for a stiffness profile
+// (weighted_indicator_moments).
+double mean_contact_force(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i);
+
 // The contact states met along a branch, in continuation order, for the
 // coordinate q' x (a chapter's contact summary of one curve).
 struct ContactHistory {

@@ -1,0 +1,261 @@
+#include "gearhb/gears/mesh_dynamics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+#include <string>
+
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/hb/contact.hpp"
+#include "gearhb/hb/response.hpp"
+#include "gearhb/hb/time_integration.hpp"
+
+namespace gearhb {
+
+double back_flank_phase(const PairSteModel& m) {
+  const PathOfContact p = m.path();
+  const GearGeometry& g = m.gear1;
+  const double alpha = g.pressure_angle_rad();
+  const double s1 = g.module * (0.5 * M_PI + 2.0 * g.profile_shift * std::tan(alpha));
+  const double rb = g.base_radius();
+  const double s_b = rb * (s1 / g.pitch_radius() + 2.0 * involute(alpha));
+  const double phi = (s_b + 2.0 * p.mesh.pressure_angle * rb - 2.0 * p.T1A) / p.base_pitch;
+  return 2.0 * M_PI * (phi - std::floor(phi));
+}
+
+DteGear gear_pair_mesh(const PairSteModel& m, const std::vector<PairStePoint>& ste, double torque, double I1,
+                       double I2, double zeta, double backlash, int harmonics) {
+  std::vector<double> e, g, elastic;
+  DteGear G;
+  G.F0 = m.force(torque);
+  for (const auto& p : ste) {
+    double sep = INFINITY;
+    for (const auto& k : p.mesh.pairs) sep = std::min(sep, k.separation);
+    e.push_back(p.ste);
+    g.push_back(sep);
+    if (!(p.ste - sep > 0.0))
+      throw std::runtime_error("the elastic STE (STE - no-load TE) is not positive at mesh phase " +
+                               std::to_string(p.mesh.phase));
+    elastic.push_back(G.F0 / (p.ste - sep));
+  }
+  const double r1 = torque / G.F0, r2 = r1 * m.gear2.teeth / m.gear1.teeth;
+  G.me = equivalent_mass(I1, I2, r1, r2);
+  G.kc = std::accumulate(elastic.begin(), elastic.end(), 0.0) / double(elastic.size());
+  G.c = mesh_damping(zeta, G.kc, G.me);
+  G.ste = periodic_fourier(e, harmonics);
+  G.nlte = periodic_fourier(g, harmonics);
+  G.backlash = backlash;
+  G.back_phase = back_flank_phase(m);
+  return G;
+}
+
+const char* to_string(MeshDofs d) { return d == MeshDofs::bearings ? "six_dof" : "one_dof"; }
+
+const char* to_string(MeshContact c) {
+  switch (c) {
+    case MeshContact::full: return "full";
+    case MeshContact::drive_loss: return "drive_loss";
+    case MeshContact::back_impact: return "back_impact";
+    case MeshContact::drive_loss_back_impact: return "drive_loss+back_impact";
+  }
+  return "?";
+}
+
+namespace {
+
+// The mesh-deflection direction over q = [x1, y1, x2, y2, p] (header).
+Eigen::VectorXd bearing_normal(const BearingSupport& b) {
+  const double ca = std::cos(b.pressure_angle), sa = std::sin(b.pressure_angle);
+  Eigen::VectorXd n(5);
+  n << ca, -sa, -ca, sa, 1.0;
+  return n;
+}
+
+LinearSystem bearing_system(const DteGear& g, const BearingSupport& b) {
+  Eigen::VectorXd m(5), k(5), c(5);
+  for (int i = 0; i < 2; ++i) {
+    if (!(b.mass[i] > 0.0 && b.stiffness[i] > 0.0))
+      throw std::invalid_argument("bearing model: gear " + std::to_string(i + 1) + " needs a mass and a bearing stiffness > 0");
+    const double ci = 2.0 * b.zeta * std::sqrt(b.stiffness[i] * b.mass[i]);
+    m.segment(2 * i, 2).setConstant(b.mass[i]);
+    k.segment(2 * i, 2).setConstant(b.stiffness[i]);
+    c.segment(2 * i, 2).setConstant(ci);
+  }
+  m[4] = g.me, k[4] = 0.0, c[4] = g.c;
+  return LinearSystem{m.asDiagonal(), c.asDiagonal(), k.asDiagonal()};
+}
+
+// Largest value over the period of contact i's force (exact for a constant kc).
+double largest_contact_force(const HarmonicBalance& hb, const ResponseEvaluator& ev, const Eigen::VectorXd& X,
+                             std::size_t i, const Aft& fine) {
+  const UnilateralContact& ct = hb.contacts()[i];
+  if (!ct.stiffness_profile) {
+    const Eigen::VectorXd u = hb.penetration(X, i);
+    return contact_force(ct.kc, trig_extremes(u, fine.to_time(u)).second);
+  }
+  (void)fine;
+  return ev.contact_force_history(X, i).maxCoeff();
+}
+
+MeshContact classify(ContactState drive, ContactState back) {
+  const bool loss = drive != ContactState::full, impact = back != ContactState::open;
+  if (loss && impact) return MeshContact::drive_loss_back_impact;
+  if (impact) return MeshContact::back_impact;
+  return loss ? MeshContact::drive_loss : MeshContact::full;
+}
+
+bool near(const std::vector<double>& at, double omega, double margin) {
+  for (double w : at)
+    if (std::fabs(w - omega) < margin * w) return true;
+  return false;
+}
+
+}  // namespace
+
+HarmonicBalance gear_mesh_model(const DteGear& g, MeshDofs dofs, const BearingSupport& b, int H, int N,
+                                DteModel model) {
+  if (dofs == MeshDofs::one_dof) return dte_harmonic_balance(g, H, N, ContactQuadrature::exact, model);
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(5);
+  f0[4] = g.F0;
+  const Excitation f{f0, Eigen::VectorXd::Zero(5), Eigen::VectorXd::Zero(5)};
+  return HarmonicBalance(bearing_system(g, b), dte_mesh_contacts(g, H, model, bearing_normal(b)), f, H, N,
+                         ContactQuadrature::exact);
+}
+
+Eigen::VectorXd dte_coordinate(MeshDofs dofs) {
+  if (dofs == MeshDofs::one_dof) return Eigen::VectorXd::Constant(1, 1.0);
+  return Eigen::VectorXd::Unit(5, 4);
+}
+
+std::vector<double> closed_contact_frequencies(const DteGear& g, MeshDofs dofs, const BearingSupport& b) {
+  if (dofs == MeshDofs::one_dof) return {std::sqrt(g.kc / g.me) / (2.0 * M_PI)};
+  const LinearSystem s = bearing_system(g, b);
+  const Eigen::VectorXd n = bearing_normal(b);
+  const Modes modes = modal_analysis(s.M, s.K + g.kc * n * n.transpose());
+  std::vector<double> f;
+  for (Eigen::Index i = 0; i < modes.omega.size(); ++i) f.push_back(modes.omega[i] / (2.0 * M_PI));
+  return f;
+}
+
+MeshOrbitMeasures mesh_orbit_measures(const HarmonicBalance& hb, const Eigen::VectorXd& X, double F0,
+                                      const Eigen::VectorXd& q) {
+  const ResponseEvaluator ev(hb, q, 4096);
+  const Aft fine(hb.harmonics(), 4096);
+  const ResponseSummary s = ev.summarize(X);
+  MeshOrbitMeasures m;
+  m.dte_rms = s.x_rms_ac;
+  m.dte_ptp = s.x_max - s.x_min;
+  m.drive = s.contact_states.at(0);
+  m.back = s.contact_states.size() > 1 ? s.contact_states[1] : ContactState::open;
+  m.contact = classify(m.drive, m.back);
+  // N = F_drive - F_back: the flanks never load together (b_n + g_b >= 0), so N is largest
+  // where the drive flank is, and smallest where the back flank is (or where the drive force is
+  // least if the back flank never touches).
+  m.force_max = largest_contact_force(hb, ev, X, 0, fine);
+  if (m.back != ContactState::open) {
+    m.force_min = -largest_contact_force(hb, ev, X, 1, fine);
+  } else {
+    m.force_min = ev.contact_force_history(X, 0).minCoeff();
+    if (!hb.contacts()[0].stiffness_profile) {
+      const Eigen::VectorXd u = hb.penetration(X, 0);
+      m.force_min = contact_force(hb.contacts()[0].kc, trig_extremes(u, fine.to_time(u)).first);
+    }
+  }
+  m.dynamic_factor = std::max(m.force_max, -m.force_min) / F0;
+  return m;
+}
+
+MeshCurveSummary mesh_curve_summary(const HarmonicBalance& hb, const FrequencyCurve& c, double F0,
+                                    const Eigen::VectorXd& q) {
+  MeshCurveSummary s;
+  const auto& P = c.branch.points;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    s.points.push_back(mesh_orbit_measures(hb, P[i].X, F0, q));
+    const MeshOrbitMeasures& m = s.points.back();
+    if (c.stable[i] && m.dte_rms > s.dte_rms_peak) s.dte_rms_peak = m.dte_rms, s.dte_rms_peak_omega = P[i].omega;
+    if (c.stable[i] && m.dynamic_factor > s.dynamic_factor_peak)
+      s.dynamic_factor_peak = m.dynamic_factor, s.dynamic_factor_peak_omega = P[i].omega;
+    s.mean_force_rel_dev = std::max(s.mean_force_rel_dev, std::fabs(dte_mean_contact_force(hb, P[i].X) - F0) / F0);
+  }
+  s.drive_loss_first_omega = first_transition(hb, c, opens_somewhere(hb, 0));
+  if (hb.contacts().size() > 1) s.back_impact_first_omega = first_transition(hb, c, touches_somewhere(hb, 1));
+  return s;
+}
+
+std::vector<MeshTimeComparison> mesh_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                            const MeshCurveSummary& s, double F0,
+                                                            const Eigen::VectorXd& q, int points) {
+  const auto& P = c.branch.points;
+  std::vector<double> special;
+  for (const auto& f : c.branch.folds) special.push_back(f.omega);
+  for (const auto& b : c.bifurcations) special.push_back(b.omega);
+  std::vector<std::size_t> impact, loss, full;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!c.stable[i] || near(special, P[i].omega, 5e-3)) continue;
+    if (!c.floquet.empty() && c.floquet[i].modulus > 0.99) continue;   // too slow to settle (|mu|^periods)
+    const MeshContact k = s.points[i].contact;
+    (k == MeshContact::full ? full : k == MeshContact::drive_loss ? loss : impact).push_back(i);
+  }
+  // quotas: a third each for impacts and losses (as far as there are), the rest full
+  // contact, a shortfall anywhere filled from the other categories
+  const std::size_t n = std::size_t(points), third = n / 3;
+  std::size_t qi = std::min(third, impact.size()), ql = std::min(third, loss.size());
+  const std::size_t qf = std::min(n - qi - ql, full.size());
+  std::size_t left = n - qi - ql - qf;
+  const std::size_t more_i = std::min(left, impact.size() - qi);
+  qi += more_i, left -= more_i;
+  ql += std::min(left, loss.size() - ql);
+  std::vector<std::size_t> chosen;
+  auto spread = [&](const std::vector<std::size_t>& v, std::size_t k) {   // k points spread evenly over v
+    for (std::size_t j = 0; j < k; ++j) chosen.push_back(v[(2 * j + 1) * v.size() / (2 * k)]);
+  };
+  spread(impact, qi);
+  spread(loss, ql);
+  spread(full, qf);
+  std::sort(chosen.begin(), chosen.end());
+  chosen.erase(std::unique(chosen.begin(), chosen.end()), chosen.end());
+
+  const TimeIntegrator ti(hb);
+  std::vector<MeshTimeComparison> out;
+  for (std::size_t i : chosen) {
+    TimeIntegrationOptions opt;
+    opt.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+    opt.samples_per_period = 4096;
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
+    const SteadyState st = ti.steady_state(x0, v0, P[i].omega, opt);
+    if (!st.converged)
+      throw std::runtime_error("time integration not periodic at f_mesh = " + std::to_string(P[i].omega / (2 * M_PI)) +
+                               " Hz after " + std::to_string(st.periods) + " periods");
+    // DTE and mesh force on the integrated period, with the model's own contact law
+    const Eigen::VectorXd x = st.x * q;
+    double Nmax = -INFINITY, Nmin = INFINITY;
+    for (Eigen::Index j = 0; j < st.x.rows(); ++j) {
+      const double th = 2.0 * M_PI * double(j) / double(st.x.rows());
+      double N = 0.0;
+      for (std::size_t k = 0; k < hb.contacts().size(); ++k) {
+        const UnilateralContact& ct = hb.contacts()[k];
+        double u = ct.gap + ct.normal.dot(st.x.row(j).transpose());
+        if (ct.gap_harmonics.size() > 0) u += trig_series(ct.gap_harmonics, th);
+        N += (k == 0 ? 1.0 : -1.0) * contact_force(stiffness_at(ct, th), u);
+      }
+      Nmax = std::max(Nmax, N), Nmin = std::min(Nmin, N);
+    }
+    MeshTimeComparison r;
+    r.omega = P[i].omega;
+    r.contact = s.points[i].contact;
+    r.dte_rms_hb = s.points[i].dte_rms;
+    r.dte_rms_ti = std::sqrt((x.array() - x.mean()).square().mean());
+    r.dynamic_factor_hb = s.points[i].dynamic_factor;
+    r.dynamic_factor_ti = std::max(Nmax, -Nmin) / F0;
+    r.rel_diff = std::max(std::fabs(r.dte_rms_hb - r.dte_rms_ti) / r.dte_rms_ti,
+                          std::fabs(r.dynamic_factor_hb - r.dynamic_factor_ti) / r.dynamic_factor_ti);
+    r.periods = st.periods;
+    out.push_back(r);
+  }
+  return out;
+}
+
+}  // namespace gearhb
