@@ -8,7 +8,9 @@ Writes into DIR (the run's own folder; gearhb_gear calls this with plot=1):
   shares.png    the share of the tooth force each pair carries, per torque;
   spectrum.png  the STE amplitude per mesh order (order 0, the mean, left out);
   harris.png    the Harris map: STE peak-to-peak against torque, with and without
-                the file's tip relief, the file's torques marked.
+                the file's tip relief, the file's torques marked;
+and, for a file with a speed range, the dynamics figures of gear_dynamics.py
+(response.png, campbell.png, time_history.png, dte_spectrum.png).
 The mesh phase runs over one base pitch: pair 1 is the pair nearest the start of
 contact A (it enters at A at phase 0), pair 2 the one a base pitch ahead of it.
 """
@@ -19,6 +21,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
+import gear_dynamics  # noqa: E402
 from style import read_csv, save  # noqa: E402
 
 
@@ -153,6 +156,8 @@ def main():
     shares_figure(d_dir, params, kn, torques, ste)
     spectrum_figure(d_dir, params, kn, torques)
     harris_figure(d_dir, params, kn, torques)
+    if (d_dir / "frc_1.csv").exists():
+        gear_dynamics.draw(d_dir, params, kn, torques)
 
 
 if __name__ == "__main__":

@@ -34,6 +34,7 @@
 #include "gearhb/app/tables.hpp"
 #include "gearhb/gears/iso6336.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
+#include "gearhb/hb/response.hpp"
 #include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 
@@ -123,6 +124,8 @@ class GearPairFromFile {
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
+  void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
+                            Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
 };
 
@@ -298,17 +301,63 @@ void GearPairFromFile::dynamics(Run& run) const {
   const std::vector<MeshPhase> phases = mesh_phases(file_.pair, file_.phases, stiffness());
   const GearDynamicsInput& d = file_.dynamics;
   Table modes({"torque_index", "torque_Nm", "mode", "f_hz", "speed_rpm_mesh_order_1"});
+  Table spectrum({"torque_index", "f_mesh_hz", "order", "amplitude_um"});
+  Table history({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
+  double history_kv = 0.0;
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
     const Response r = response(run, i, phases);
     const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
     response_tables(run, i, hb, r);
     response_key_numbers(run, i, r);
+    spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
     const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
     for (std::size_t k = 0; k < f.size(); ++k)
       modes.add_row({long(i + 1), file_.torques[i], long(k + 1), f[k], speed_rpm(2.0 * M_PI * f[k])});
   }
   run.write("modes.csv", modes);
+  run.write("dte_spectrum.csv", spectrum);
+  if (history.rows() > 0) run.write("time_history.csv", history);
+}
+
+// dte_spectrum.csv: the DTE per mesh order at the stable points nearest 0.5 f_n, the DTE RMS
+// peak and 1.5 f_n (f_n the closed-contact mesh frequency); time_history.csv: two mesh
+// periods of the DTE and the flank forces at the stable point of largest K_v with a back
+// impact (else with a drive loss) over all torques.
+void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
+                                            Table& history, double& history_kv) const {
+  const auto& P = r.curve.branch.points;
+  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
+  const double wn = 2.0 * M_PI * closed_contact_frequencies(r.mesh, MeshDofs::one_dof, {}).front();
+  for (double w : {0.5 * wn, r.summary.dte_rms_peak_omega, 1.5 * wn}) {
+    std::size_t best = P.size();
+    for (std::size_t k = 0; k < P.size(); ++k)
+      if (r.curve.stable[k] && (best == P.size() || std::fabs(P[k].omega - w) < std::fabs(P[best].omega - w))) best = k;
+    if (best == P.size()) continue;
+    const Eigen::VectorXd c = hb.project(P[best].X, q);
+    for (int k = 1; k <= hb.harmonics(); ++k)
+      spectrum.add_row({long(i + 1), P[best].omega / (2.0 * M_PI), long(k), 1e6 * std::hypot(c[2 * k - 1], c[2 * k])});
+  }
+  std::size_t pick = P.size();
+  auto rank = [&](std::size_t k) {   // back impacts first, then drive losses, then K_v
+    const MeshContact c = r.summary.points[k].contact;
+    return (c == MeshContact::full ? 0.0 : c == MeshContact::drive_loss ? 1e3 : 2e3) + r.summary.points[k].dynamic_factor;
+  };
+  for (std::size_t k = 0; k < P.size(); ++k)
+    if (r.curve.stable[k] && r.summary.points[k].contact != MeshContact::full && (pick == P.size() || rank(k) > rank(pick)))
+      pick = k;
+  if (pick == P.size() || rank(pick) <= history_kv) return;
+  history_kv = rank(pick);
+  history = Table({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
+  const ResponseEvaluator ev(hb, q, 512);
+  const Eigen::VectorXd x = ev.history(P[pick].X), fd = ev.contact_force_history(P[pick].X, 0);
+  const Eigen::VectorXd fb = hb.contacts().size() > 1 ? ev.contact_force_history(P[pick].X, 1) : Eigen::VectorXd::Zero(x.size());
+  const double T = 2.0 * M_PI / P[pick].omega;
+  for (int period = 0; period < 2; ++period)
+    for (Eigen::Index j = 0; j < x.size(); ++j) {
+      const double ph = period + double(j) / double(x.size());
+      history.add_row({long(i + 1), P[pick].omega / (2.0 * M_PI), ph, 1e3 * T * ph, 1e6 * x[j], fd[j] - fb[j], fd[j], fb[j]});
+    }
 }
 
 BearingSupport GearPairFromFile::bearings() const {

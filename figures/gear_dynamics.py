@@ -1,0 +1,163 @@
+"""The dynamics figures of a gearhb_gear run with a speed range (called by gearhb_gear.py).
+
+Writes into DIR:
+  response.png      DTE RMS and the dynamic factor K_v against the speed of gear 1, one colour
+                    per torque, stable solid and unstable dashed (Floquet), bifurcations marked
+                    (fold o, period doubling s, Neimark-Sacker D), the contact class along
+                    each curve as a thin band under the panel (drive-flank loss orange, back-flank
+                    impact red), ISO 6336-1 method B's K_v dotted where iso_kv.csv exists;
+  campbell.png      mesh orders 1..4 against speed with the closed-contact natural frequencies;
+  time_history.png  DTE and flank forces over two mesh periods at one impact / loss point;
+  dte_spectrum.png  the DTE per mesh order at three speeds, per torque.
+"""
+import matplotlib.pyplot as plt
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+
+from style import plot_branch, read_csv, save
+
+CONTACT_COLOUR = {"drive_loss": "tab:orange", "back_impact": "tab:red", "drive_loss+back_impact": "darkred"}
+BIF_MARKER = {"fold": "o", "branch_point": "^", "period_doubling": "s", "neimark_sacker": "D"}
+
+
+def torque_label(T):
+    return "T1 = %g N m" % T
+
+
+def nearest(d, omega, y):
+    i = min(range(len(d["omega"])), key=lambda k: abs(d["omega"][k] - omega))
+    return d["speed_rpm"][i], d[y][i]
+
+
+def contact_rugs(ax, torques, frc):
+    """Thin bands below y = 0, one row per torque (labelled), coloured by each point's contact
+    class (nothing where the drive flank stays closed)."""
+    top = ax.get_ylim()[1]
+    h = 0.035 * top
+    for row, (T, d) in enumerate(zip(torques, frc)):
+        y0 = -(row + 1) * 1.25 * h
+        for kind in CONTACT_COLOUR:   # in this order: an impact is drawn over a loss where the branch folds
+            for i in range(len(d["speed_rpm"]) - 1):
+                if d["contact"][i] == kind or (kind != "drive_loss" and d["contact"][i + 1] == kind):
+                    ax.fill_between([d["speed_rpm"][i], d["speed_rpm"][i + 1]], y0, y0 + h,
+                                    color=CONTACT_COLOUR[kind], lw=0)
+        ax.text(1.005, y0 + 0.5 * h, "T1 = %g" % T, transform=ax.get_yaxis_transform(), fontsize=6, va="center",
+                color="C%d" % row)
+    ax.axhline(0.0, color="0.5", lw=0.8)
+    ax.set_ylim(-(len(torques) * 1.25 + 0.3) * h, top)
+
+
+def response_figure(d_dir, params, kn, torques, frc, bif):
+    fig, axes = plt.subplots(2, 1, figsize=(9.6, 7.4), sharex=True)
+    iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
+    for ax, y, label in ((axes[0], "dte_rms_um", "DTE RMS (oscillating part) [um]"),
+                         (axes[1], "dynamic_factor", "dynamic factor K_v = max |mesh force| / F0")):
+        for i, (T, d) in enumerate(zip(torques, frc)):
+            plot_branch(ax, d, y=y, x="speed_rpm", color="C%d" % i, label=torque_label(T))
+            for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
+                xb, yb = nearest(d, bif[i]["omega"][k], y)
+                ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color="C%d" % i, ms=7)
+        ax.set_ylabel(label)
+        ax.set_ylim(bottom=0)
+        contact_rugs(ax, torques, frc)
+    if iso is not None:
+        for i, T in enumerate(torques):
+            axes[1].plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color="C%d" % i, lw=1.5)
+    axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
+    axes[1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
+    handles = [Line2D([], [], color="C%d" % i, label=torque_label(T)) for i, T in enumerate(torques)]
+    handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
+                Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
+    handles += [Line2D([], [], color="k", ls="none", marker=m, mfc="none", label=t.replace("_", " "))
+                for t, m in BIF_MARKER.items() if any(t in (b["type"] or []) for b in bif)]
+    handles += [Patch(color=c, label=k.replace("+", " + ").replace("_", " ") + " (bands below 0, one row per torque)")
+                for k, c in CONTACT_COLOUR.items() if any(k in d["contact"] for d in frc)]
+    if iso is not None:
+        handles.append(Line2D([], [], color="k", ls=":", label="ISO 6336-1 method B K_v, grade %d"
+                              % params.get("dynamics", {}).get("iso_quality_grade", 5)))
+    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+    dyn = params.get("dynamics", {})
+    axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
+        params.get("name", "gear pair"), dyn.get("model", "one_dof"), dyn.get("mesh", "constant"),
+        dyn.get("zeta", 0.08), dyn.get("harmonics", 5), kn["normal_backlash_m"] * 1e6), fontsize=8)
+    save(fig, d_dir / "response.png")
+
+
+def campbell_figure(d_dir, params, kn, torques, frc):
+    modes = read_csv(d_dir / "modes.csv")
+    z1 = params["gears"][0]["z"]
+    n_max = max(max(d["speed_rpm"]) for d in frc)
+    fig, ax = plt.subplots(figsize=(7.2, 4.6))
+    for k in range(1, 5):
+        ax.plot([0, n_max], [0, k * z1 * n_max / 60.0], color="0.3", lw=1)
+        ax.text(n_max, k * z1 * n_max / 60.0, " %d x mesh" % k, fontsize=7, va="center")
+    for i, T in enumerate(torques):
+        f = [modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
+        for j, fj in enumerate(f):
+            ax.axhline(fj, color="C%d" % i, ls=":", lw=1.2,
+                       label="closed-contact natural frequencies, %s" % torque_label(T) if j == 0 else None)
+        ax.axvline(kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1, color="C%d" % i, ls="-", lw=0.6, alpha=0.6,
+                   label="DTE RMS peak, %s" % torque_label(T))
+    ax.set_xlim(0, n_max * 1.12)
+    ax.set_ylim(0, 4.2 * z1 * n_max / 60.0)
+    ax.set_xlabel("speed of gear 1 [rpm]")
+    ax.set_ylabel("frequency [Hz]")
+    ax.set_title("%s\nCampbell diagram: mesh orders against the mesh natural frequencies" % params.get("name", ""),
+                 fontsize=8)
+    ax.legend(fontsize=7, loc="upper left")
+    save(fig, d_dir / "campbell.png")
+
+
+def time_history_figure(d_dir, params, kn):
+    if not (d_dir / "time_history.csv").exists():
+        return
+    h = read_csv(d_dir / "time_history.csv")
+    i = int(h["torque_index"][0])
+    F0 = kn["tooth_force_N_%d" % i]
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 5.8), sharex=True)
+    a1.plot(h["t_ms"], h["dte_um"], color="C0")
+    a1.set_ylabel("DTE [um]")
+    a2.plot(h["t_ms"], h["drive_force_N"], color="C0", label="drive flank")
+    a2.plot(h["t_ms"], [-v for v in h["back_force_N"]], color="C3", label="back flank (drawn negative)")
+    a2.axhline(F0, color="0.4", ls=":", label="static tooth force F0 = %.0f N" % F0)
+    a2.axhline(0.0, color="0.6", lw=0.8)
+    a2.set_xlabel("time [ms] (two mesh periods)")
+    a2.set_ylabel("mesh force [N]")
+    a2.legend(fontsize=7, loc="upper right")
+    a1.set_title("%s\nT1 = %g N m at f_mesh = %.1f Hz: %s" % (
+        params.get("name", ""), params["torques"][i - 1], h["f_mesh_hz"][0],
+        "back-flank impacts" if max(h["back_force_N"]) > 0 else "drive-flank loss"), fontsize=8)
+    save(fig, d_dir / "time_history.png")
+
+
+def spectrum_figure(d_dir, params, torques):
+    s = read_csv(d_dir / "dte_spectrum.csv")
+    n = min(len(torques), 3)
+    fig, axes = plt.subplots(1, n, figsize=(4.0 * n, 3.8), squeeze=False)
+    for i in range(n):
+        ax = axes[0][i]
+        rows = [j for j in range(len(s["order"])) if int(s["torque_index"][j]) == i + 1]
+        speeds = sorted({s["f_mesh_hz"][j] for j in rows})
+        width = 0.8 / max(len(speeds), 1)
+        for k, f in enumerate(speeds):
+            o = [s["order"][j] for j in rows if s["f_mesh_hz"][j] == f]
+            a = [s["amplitude_um"][j] for j in rows if s["f_mesh_hz"][j] == f]
+            ax.bar([x - 0.4 + width * (k + 0.5) for x in o], a, width, label="f_mesh = %.0f Hz" % f)
+        ax.set_xlabel("mesh order")
+        ax.set_ylabel("DTE amplitude [um]")
+        ax.set_title(torque_label(torques[i]), fontsize=9)
+        ax.legend(fontsize=7)
+    fig.suptitle("%s: DTE per mesh order at three speeds" % params.get("name", ""), fontsize=9)
+    save(fig, d_dir / "dte_spectrum.png")
+
+
+def draw(d_dir, params, kn, torques):
+    frc = [read_csv(d_dir / ("frc_%d.csv" % (i + 1))) for i in range(len(torques))]
+    bif = [read_csv(d_dir / ("bifurcations_%d.csv" % (i + 1))) for i in range(len(torques))]
+    for b in bif:
+        b.setdefault("type", [])
+        b.setdefault("omega", [])
+    response_figure(d_dir, params, kn, torques, frc, bif)
+    campbell_figure(d_dir, params, kn, torques, frc)
+    time_history_figure(d_dir, params, kn)
+    spectrum_figure(d_dir, params, torques)
