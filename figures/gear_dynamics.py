@@ -90,7 +90,9 @@ def campbell_figure(d_dir, params, kn, torques, frc):
     fig, ax = plt.subplots(figsize=(7.2, 4.6))
     for k in range(1, 5):
         ax.plot([0, n_max], [0, k * z1 * n_max / 60.0], color="0.3", lw=1)
-        ax.text(n_max, k * z1 * n_max / 60.0, " %d x mesh" % k, fontsize=7, va="center")
+        f_top = 1.8 * max(modes["f_hz"])
+        n_end = min(n_max, 60.0 * f_top / (k * z1))
+        ax.text(n_end, k * z1 * n_end / 60.0, " %d x mesh" % k, fontsize=7, va="bottom")
     for i, T in enumerate(torques):
         f = [modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
         for j, fj in enumerate(f):
@@ -99,7 +101,7 @@ def campbell_figure(d_dir, params, kn, torques, frc):
         ax.axvline(kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1, color="C%d" % i, ls="-", lw=0.6, alpha=0.6,
                    label="DTE RMS peak, %s" % torque_label(T))
     ax.set_xlim(0, n_max * 1.12)
-    ax.set_ylim(0, 4.2 * z1 * n_max / 60.0)
+    ax.set_ylim(0, 1.8 * max(modes["f_hz"]))   # the orders that can meet a mode
     ax.set_xlabel("speed of gear 1 [rpm]")
     ax.set_ylabel("frequency [Hz]")
     ax.set_title("%s\nCampbell diagram: mesh orders against the mesh natural frequencies" % params.get("name", ""),

@@ -113,6 +113,33 @@ def pe_numbers(name, torques):
     return out
 
 
+def dynamics_numbers(torques, back_impact_torques=()):
+    """The dynamics of a file with a speed range (issue 21 §2): checked by the run's own GSL rk8pd
+    integration of the same mesh law (an independent integrator, hb/time_integration.hpp), never
+    by a stored value of gearhb's."""
+    out = {}
+    for i in torques:
+        n = str(i)
+        out["time_integration_rel_diff_max_" + n] = entry(
+            "time_integration_rel_diff_max_" + n, 0.0, "GSL rk8pd integrated to the periodic state of the same "
+            "two-flank mesh law at stable points (check_time_integration_%s.csv)" % n, {"abs": 0.01},
+            "issue 21 §2: HB and time integration within 1 % (DTE RMS and K_v) at every compared point")
+        out["time_integration_points_" + n] = entry(
+            "time_integration_points_" + n, 8.0, "dynamics.time_check_points", {"abs": 0},
+            "issue 21 §2: at least 8 stable points per curve against time integration")
+        out["mean_force_rel_dev_" + n] = entry(
+            "mean_force_rel_dev_" + n, 0.0, "static balance of the mesh: mean(drive force - back force) = F0 "
+            "(thesis §8.1), over every point of the curve", {"abs": 1e-9},
+            "issue 21 §2: the mean mesh force equals F0 to 1e-9")
+    for i in back_impact_torques:
+        n = str(i)
+        out["time_integration_back_impact_points_" + n] = entry(
+            "time_integration_back_impact_points_" + n, 2.0, "check_time_integration_%s.csv" % n, {"abs": 1},
+            "1 to 3: the check compares at least one point with back-flank impacts (a third of 8 points at most "
+            "when the curve has more than two)")
+    return out
+
+
 def write(name, example_file, args, numbers, bad_inputs=None, extra=None):
     ref = {"example": name, "example_file": example_file, "regression_args": args, "numbers": numbers}
     if bad_inputs:
@@ -136,6 +163,7 @@ n["ste_max_um_3"]["note"] = ("chapter 8's continuous reading (chapters/ch08_gear
 n["mesh_stiffness_mean_N_per_m_3"]["thesis_value"] = 473.2e6
 n["mesh_stiffness_mean_N_per_m_3"]["note"] = "chapter 8: 470.97 MN/m continuous, 473.29 on 8 positions (thesis 473.2)"
 n["iso6336_c_gamma_alpha"]["note"] = "times b = 20 mm: 440.2 MN/m (GEARS.md §3; reference/ch07_ste.json)"
+n.update(dynamics_numbers([1, 2, 3]))
 write("thesis_pair", "thesis_pair.json", ["--set", "plot=0"], n)
 
 # --- thesis pair on ch. 7's 8 node positions ------------------------------------------------
@@ -159,6 +187,11 @@ n = ste_numbers("thesis_pair_relief", [1, 2, 3])
 n["single_pair_deflection_um_3"]["note"] = ("the relief amount of the file (13.9165 um) is this number at 300 N m, "
                                             "rounded to 0.1 nm")
 write("thesis_pair_relief", "thesis_pair_relief.json", ["--set", "plot=0"], n)
+
+# --- the same relieved pair at light load: drive-flank loss and back-flank impacts ----------------
+n = ste_numbers("thesis_pair_light_load", [1, 2])
+n.update(dynamics_numbers([1, 2], back_impact_torques=[1]))
+write("thesis_pair_light_load", "thesis_pair_light_load.json", ["--set", "plot=0"], n)
 
 # --- FZG type C -------------------------------------------------------------------------------
 n = geometry_numbers("fzg_c", GEOM_KEYS + ["tip_thickness_2_m"])
