@@ -9,7 +9,8 @@ Then, if build/bin/gearhb_gear exists, every gear-pair example of
 chapters/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
 draws its own figures there) and its figures are copied to
 build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the beam /
-potential-energy comparison from those folders (build/figures/gear_methods*.png);
+potential-energy comparison from those folders (build/figures/gear_methods*.png) and
+figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png);
 build/figures/index.html (figures/report.py)
 links them all.
 """
@@ -72,6 +73,10 @@ def main():
         # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
         import gear_methods
         for png in gear_methods.draw(build / "data" / "gearhb_gear", fig_dir):
+            print("[figures]   %s" % png, flush=True)
+        # One DOF against six (figures/gear_models.py) from the dynamics examples.
+        import gear_models
+        for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):
             print("[figures]   %s" % png, flush=True)
     import report
     print("[figures] report: %s" % report.write(build))

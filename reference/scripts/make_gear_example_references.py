@@ -193,6 +193,14 @@ n = ste_numbers("thesis_pair_light_load", [1, 2])
 n.update(dynamics_numbers([1, 2], back_impact_torques=[1]))
 write("thesis_pair_light_load", "thesis_pair_light_load.json", ["--set", "plot=0"], n)
 
+# --- both on bearings (six DOFs): where the torsional model is not enough ---------------------------
+n = ste_numbers("thesis_pair_six_dof", [1, 2, 3])
+n.update(dynamics_numbers([1, 2, 3], back_impact_torques=[1, 2, 3]))
+write("thesis_pair_six_dof", "thesis_pair_six_dof.json", ["--set", "plot=0"], n)
+n = ste_numbers("thesis_pair_light_load_six_dof", [1, 2])
+n.update(dynamics_numbers([1, 2], back_impact_torques=[1]))
+write("thesis_pair_light_load_six_dof", "thesis_pair_light_load_six_dof.json", ["--set", "plot=0"], n)
+
 # --- FZG type C -------------------------------------------------------------------------------
 n = geometry_numbers("fzg_c", GEOM_KEYS + ["tip_thickness_2_m"])
 published = {"centre_distance_m": 91.5e-3, "contact_ratio": 1.4625, "base_radius_1_m": 33.829e-3,

@@ -67,7 +67,8 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
     std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
                                  contact_label ? contact_label(i) : std::string(to_string(r.contact)),
                                  cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
-                                 cell(fl, fl ? c.floquet[i].orbit_error : 0.0)};
+                                 // NaN where no corrected orbit exists (a time-varying stiffness)
+                                 cell(fl && std::isfinite(c.floquet[i].orbit_error), fl ? c.floquet[i].orbit_error : 0.0)};
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);
       row.insert(row.end(), more.begin(), more.end());
