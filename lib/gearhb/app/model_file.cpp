@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <fstream>
 #include <sstream>
 
@@ -10,6 +11,7 @@
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/text_file.hpp"
+#include "gearhb/gears/ste_continuous.hpp"
 
 namespace gearhb {
 
@@ -45,43 +47,46 @@ void symmetric(const Eigen::MatrixXd& m, const std::string& file, const std::str
         fail(file, key, "is not symmetric (entry " + std::to_string(r) + "," + std::to_string(c) + ")");
 }
 
-// A periodic gap from a CSV `phase,gap`: its first H harmonics, [0, a1, b1, ...].
-Eigen::VectorXd read_gap_file(const std::string& path, const std::string& key, int H) {
+// One period of a quantity from a CSV `phase,<value>` (uniform phases from 0): its mean and first
+// H harmonics [a0, a1, b1, ...] (core/fourier.hpp periodic_fourier; exact for a band-limited one).
+Eigen::VectorXd read_periodic_file(const std::string& path, const std::string& key, const std::string& value, int H) {
   std::vector<std::string> lines;
   try {
     lines = read_text_lines(path);
   } catch (const TextFileError& e) {
     fail(path, key, e.what());
   }
-  if (lines.empty() || lines[0] != "phase,gap") fail(path, key, "needs the header 'phase,gap'");
-  std::vector<double> phase, gap;
+  if (lines.empty() || lines[0] != "phase," + value) fail(path, key, "needs the header 'phase," + value + "'");
+  std::vector<double> phase, v;
   for (std::size_t i = 1; i < lines.size(); ++i) {
     const std::string& line = lines[i];
     const std::string row = std::to_string(i + 1);
     if (line.empty()) continue;
     const auto comma = line.find(',');
-    if (comma == std::string::npos) fail(path, key, "row " + row + ": expected phase,gap");
+    if (comma == std::string::npos) fail(path, key, "row " + row + ": expected phase," + value);
     const std::string where = path + " row " + row;
     phase.push_back(parse_decimal(line.substr(0, comma), where + " phase"));
-    gap.push_back(parse_decimal(line.substr(comma + 1), where + " gap"));
+    v.push_back(parse_decimal(line.substr(comma + 1), where + " " + value));
   }
-  const int n = int(gap.size());
+  const int n = int(v.size());
   if (n < 2 * H + 1) fail(path, key, "has " + std::to_string(n) + " rows; needs at least 2H+1 = " + std::to_string(2 * H + 1));
   for (int i = 0; i < n; ++i)
     if (std::fabs(phase[i] - double(i) / n) > 1e-6)
       fail(path, key, "row " + std::to_string(i + 2) + ": phases must be uniform in [0, 1) from 0 (expected " +
                           std::to_string(double(i) / n) + ")");
-  // Fourier coefficients by the uniform-sample transform (exact for a band-limited gap).
-  Eigen::VectorXd c = Eigen::VectorXd::Zero(2 * H + 1);
-  for (int i = 0; i < n; ++i) {
-    const double th = 2 * M_PI * i / n;
-    for (int k = 1; k <= H; ++k) {
-      c[2 * k - 1] += 2.0 / n * gap[i] * std::cos(k * th);
-      c[2 * k] += 2.0 / n * gap[i] * std::sin(k * th);
-    }
-    c[0] += gap[i] / n;
-  }
-  return c;
+  return periodic_fourier(v, H);
+}
+
+// A stiffness factor s(theta) > 0 from a CSV `phase,factor`: the contact's stiffness is kc s(theta)
+// with s cut to H harmonics (contact.hpp stiffness_profile), which must stay positive.
+std::function<double(double)> read_stiffness_file(const std::string& path, const std::string& key, int H) {
+  const Eigen::VectorXd c = read_periodic_file(path, key, "factor", H);
+  const Aft aft(H, 64 * (2 * H + 1));
+  const double lo = aft.to_time(c).minCoeff();
+  if (!(lo > 0.0))
+    fail(path, key, "the stiffness factor cut to H = " + std::to_string(H) + " harmonics must stay > 0 (min " +
+                        std::to_string(lo) + ")");
+  return [c](double th) { return trig_series(c, th); };
 }
 
 }  // namespace
@@ -136,7 +141,7 @@ ModelFile read_model_file(const std::string& path,
   if (!contacts.is_array()) fail(path, "contacts", "must be a list");
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const std::string key = "contacts." + std::to_string(i);
-    only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file"});
+    only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file", "kc_file"});
     UnilateralContact c;
     c.normal = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
     c.kc = number(contacts[i].value("kc", json()), path, key + ".kc");
@@ -146,7 +151,13 @@ ModelFile read_model_file(const std::string& path,
       if (!contacts[i]["gap_file"].is_string()) fail(path, key + ".gap_file", "must be a file name");
       std::filesystem::path gp = contacts[i]["gap_file"].get<std::string>();
       if (gp.is_relative()) gp = std::filesystem::path(path).parent_path() / gp;
-      c.gap_harmonics = read_gap_file(gp.string(), key + ".gap_file", m.harmonics);
+      c.gap_harmonics = read_periodic_file(gp.string(), key + ".gap_file", "gap", m.harmonics);
+    }
+    if (contacts[i].contains("kc_file")) {
+      if (!contacts[i]["kc_file"].is_string()) fail(path, key + ".kc_file", "must be a file name");
+      std::filesystem::path kp = contacts[i]["kc_file"].get<std::string>();
+      if (kp.is_relative()) kp = std::filesystem::path(path).parent_path() / kp;
+      c.stiffness_profile = read_stiffness_file(kp.string(), key + ".kc_file", m.harmonics);
     }
     m.contacts.push_back(c);
   }
@@ -176,6 +187,8 @@ std::string model_file_help() {
          "  contacts[i].kc        contact stiffness >= 0 [N/m]\n"
          "  contacts[i].gap       g [m]: < 0 clearance, > 0 preload (F = max(kc (g + direction'x), 0))\n"
          "  contacts[i].gap_file  optional CSV 'phase,gap' (one period, uniform phases from 0, gap [m])\n"
+         "  contacts[i].kc_file   optional CSV 'phase,factor': a time-varying stiffness kc s(theta), s the\n"
+         "                        factor's first H harmonics (> 0 over the period; e.g. a gear mesh's k(t) / kc)\n"
          "  forcing.static/cos/sin  n numbers each: f0 + fc cos(w t) + fs sin(w t) [N]\n"
          "  harmonics             H >= 1\n"
          "  samples               AFT samples per period (0 = 4(2H+1); else >= 4H+2)\n"

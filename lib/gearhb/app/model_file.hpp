@@ -9,7 +9,8 @@
 //     "damping":   [[0.03, -0.03], [-0.03, 0.06]],        n x n, or instead
 //     "rayleigh":  {"alpha": a, "beta": b},               C = a M + b K
 //     "contacts":  [ {"direction": [1, 0], "kc": 100, "gap": -1,
-//                     "gap_file": "gap.csv"} ],            optional periodic gap (phase,gap)
+//                     "gap_file": "gap.csv",               optional periodic gap (phase,gap)
+//                     "kc_file": "k.csv"} ],               optional stiffness factor (phase,factor)
 //     "forcing":   {"static": [0, 0], "cos": [0, 0.1], "sin": [0, 0]},
 //     "harmonics": 21,
 //     "samples":   0,                                     AFT samples (0 = 4 (2H+1))
@@ -22,7 +23,9 @@
 // clearance, g > 0 a preload. A gap file is a CSV with header `phase,gap`: one
 // period, uniform phases in [0, 1) starting at 0, gap in m, at least 2H+1 rows;
 // its first H harmonics are added to the constant `gap`. A relative gap_file path
-// is taken relative to the model file.
+// is taken relative to the model file. A kc_file (header `phase,factor`, same rules)
+// makes the contact stiffness kc s(theta), s its first H harmonics, which must stay > 0
+// (UnilateralContact::stiffness_profile).
 //
 // Overrides: `--set path=value` replaces a number at a dotted path
 // (`harmonics=10`, `omega.to=0.4`, `contacts.0.kc=50`, `mass.1.1=2`).
