@@ -25,7 +25,12 @@ A number in the prose or a table comes from the same run's key_numbers.json:
     worst difference <!-- key: xmax_rel_diff_hb_vs_time_integration %.1e -->5.4e-05<!-- /key -->
     <!-- key: ti_rms_rel_diff_T100_H5 *100 %.3f -->0.050<!-- /key --> %
 
-(name, an optional factor, a printf format); --write fills it in, --check compares.
+(name, an optional factor, a printf format); --write fills it in, --check compares. With
+several console blocks, `name@N` takes the number from the N-th block's run (1-based); a
+bare name from the last block that has it.
+
+The programs run in the repository's root folder, so a block may name an example file by
+its path there (`gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --set plot=0`).
 """
 import json
 import pathlib
@@ -35,7 +40,8 @@ import subprocess
 import sys
 import tempfile
 
-KEY = re.compile(r"<!-- key: (\S+)(?: \*(\S+))? (%\S+) -->(.*?)<!-- /key -->")
+KEY = re.compile(r"<!-- key: (\S+?)(?:@(\d+))?(?: \*(\S+))? (%\S+) -->(.*?)<!-- /key -->")
+ROOT = pathlib.Path(__file__).resolve().parent.parent
 MARK = re.compile(r"^<!-- console: (.+?) -->\n(.*?)^<!-- end console -->\n", re.M | re.S)
 DONE = re.compile(r"done in [0-9.]+ s, data in .*$")
 
@@ -45,31 +51,36 @@ def normalised(line):
 
 
 def run(build, command, key_numbers):
-    """The program's stdout lines; its key numbers are added to `key_numbers`."""
+    """The program's stdout lines; its key numbers are appended to the list `key_numbers`."""
     args = shlex.split(command)
     program = args[0]
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp) / program
         p = subprocess.run([str(build / "bin" / program)] + args[1:] + ["--out", str(out)],
-                           capture_output=True, text=True, timeout=600)
+                           capture_output=True, text=True, timeout=600, cwd=ROOT)
         if p.returncode != 0:
             sys.exit("%s exited %d: %s" % (command, p.returncode, p.stderr.strip()[-500:]))
-        key_numbers.update({k: v["value"] for k, v in json.loads((out / "key_numbers.json").read_text()).items()})
+        key_numbers.append({k: v["value"] for k, v in json.loads((out / "key_numbers.json").read_text()).items()})
     # the folder a reader's own run writes to (the program's default)
     return [DONE.sub(lambda m: m.group(0).split(", data in ")[0] + ", data in build/data/" + program, l)
             for l in p.stdout.splitlines()]
 
 
 def fill_keys(text, key_numbers, readme, check):
-    """Key-number markers filled from key_numbers; returns (text, number of differences)."""
+    """Key-number markers filled from key_numbers (one dict per console block, in order);
+    returns (text, number of differences)."""
     differ = 0
+    merged = {}
+    for k in key_numbers:
+        merged.update(k)
 
     def value(m):
         nonlocal differ
-        name, factor, fmt, old = m.group(1), float(m.group(2) or 1), m.group(3), m.group(4)
-        if name not in key_numbers:
-            sys.exit("%s: key number '%s' is not in the run's key_numbers.json" % (readme, name))
-        new = fmt % (key_numbers[name] * factor)
+        name, block, factor, fmt, old = m.group(1), m.group(2), float(m.group(3) or 1), m.group(4), m.group(5)
+        source = merged if block is None else (key_numbers[int(block) - 1] if 0 < int(block) <= len(key_numbers) else {})
+        if name not in source:
+            sys.exit("%s: key number '%s' is not in the run's key_numbers.json" % (readme, m.group(0)[:60]))
+        new = fmt % (source[name] * factor)
         if check and new != old:
             differ += 1
             print("%s: key number %s\n  README:  %s\n  program: %s" % (readme, name, old, new))
@@ -90,7 +101,7 @@ def main():
                 sys.exit("%s: no console block" % readme)
             print("%s: no console block" % readme)
             continue
-        pieces, last, key_numbers = [], 0, {}
+        pieces, last, key_numbers = [], 0, []
         for m in blocks:
             lines = run(build, m.group(1), key_numbers)
             quoted = [l for l in m.group(2).splitlines() if not l.startswith("```")]

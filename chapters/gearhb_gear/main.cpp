@@ -15,12 +15,26 @@
 // tooth model of the pair stiffness: the beams (default) or the potential-energy
 // method (potential_energy.hpp through mesh_phases' PairStiffnessFn seam).
 //
+// With `speed` and `dynamics` in the file, the pair over its speed range
+// (mesh_dynamics.hpp; README "The pair over its speed range"): per torque, the mesh
+//   m_e x'' + c x' + N(x, theta) = F0,   theta = 2 pi f_mesh t,
+// N the drive flank (penetration u = x + e(theta) > 0, constant kc, or the parametric
+// k(theta)) minus the back flank (penetration -u - b_n - g_b(theta) > 0: the same pairs
+// mirrored, phase psi - theta; dte_model.hpp), free flight between; harmonic balance
+// with arc-length continuation over f_mesh, Floquet
+// stability of the corrected orbit, bifurcations, DTE RMS, dynamic factor K_v and the
+// contact of each flank at every point, checked against GSL time integration.
+// Or the six-DOF model (bearings, mesh along the line of action), from the same file.
+//
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
-// written), geometry, transmission_error, iso6336, harris_map, draw.
+// written), geometry, transmission_error, iso6336, harris_map, dynamics (response,
+// response_tables, response_key_numbers, spectrum_and_history,
+// time_integration_check per torque), draw.
 //
 // Sample runs:
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c.json --set torques.0=150 --out /tmp/fzg
+//   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair_light_load.json --out /tmp/rattle
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
@@ -381,7 +395,9 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   o.omega_max = 2.0 * M_PI * d.f_mesh_to;
   o.direction = d.direction;
   o.continuation.ds_max = 0.05;
-  r.curve = timed_sweep(run, hb, o, "T" + std::to_string(i + 1));
+  char label[48];
+  std::snprintf(label, sizeof label, "T1 = %g N m", T);
+  r.curve = timed_sweep(run, hb, o, label);
   r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
   return r;
 }

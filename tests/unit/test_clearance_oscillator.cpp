@@ -254,3 +254,40 @@ TEST(ClearanceOscillator, FoldAndPeriodDoublingEachListedOnce) {
     }
   }
 }
+
+// The parametric clearance oscillator of Kahraman & Singh (1991): both flanks with the
+// stiffness 1 + 0.2 cos(Omega t) (gearhb_frc's parametric_clearance_oscillator.json). No
+// exact flow exists, so the HB orbit is corrected by shooting on GSL's period map
+// (floquet_of_hb_shooting_gsl). At Omega = 0.3, F_a = 0.1 (drive flank lost every period)
+// the corrected orbit's extremes match scipy's steady state, x_max = 1.2723016454,
+// x_min = 0.8821561106 (reference/scripts/clearance_oscillator_time_integration.py
+// --parametric, 'parametric example start'), to 1e-8, far below the H = 20 HB error
+// (~1e-5) that orbit_error reports.
+TEST(ClearanceOscillator, ParametricOrbitCorrectedByShootingMatchesScipy) {
+  const double w = 0.3;
+  HarmonicBalance base = clearance_oscillator(0.1);
+  std::vector<UnilateralContact> contacts = base.contacts();
+  for (auto& ct : contacts) ct.stiffness_profile = [](double th) { return 1.0 + 0.2 * std::cos(th); };
+  const HarmonicBalance hb(base.system(), contacts, base.excitation(), 20);
+  const Scaling s = hb.scaling(w, w);
+  const FirstPoint fp = find_first_point(hb, w, s);
+  ASSERT_TRUE(fp.found) << fp.failure;
+  const FloquetResult fl = floquet_of_hb_orbit(hb, fp.X, w, s.x[0]);
+  EXPECT_TRUE(fl.corrected);
+  EXPECT_LT(fl.shooting_residual, 1e-10);
+  EXPECT_GT(fl.orbit_error, 1e-7) << "H = 20 is not exact for an impacting orbit";
+  EXPECT_LT(fl.orbit_error, 1e-4);
+  TimeIntegrator ti(hb);
+  TimeIntegrationOptions to;
+  to.rel_tol = 1e-12;
+  to.abs_tol = 1e-13;
+  to.samples_per_period = 2000;
+  const Eigen::VectorXd one = Eigen::VectorXd::Ones(1);
+  EXPECT_NEAR(ti.max_over_period(fl.x0, fl.v0, w, one, to), 1.2723016454, 1e-8);
+  EXPECT_NEAR(-ti.max_over_period(fl.x0, fl.v0, w, -one, to), 0.8821561106, 1e-8);
+  // the corrected orbit is periodic under an independent integration (steady_state from it)
+  const SteadyState ss = ti.steady_state(fl.x0, fl.v0, w, to);
+  EXPECT_TRUE(ss.converged);
+  EXPECT_LE(ss.periods, 2);
+  EXPECT_TRUE(fl.stable);
+}

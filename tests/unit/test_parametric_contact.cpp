@@ -227,3 +227,49 @@ TEST(FirstGuess, FreeRigidBodyModeUnderLoad) {
   const HarmonicBalance unloaded(LinearSystem{M, C, K}, {}, f0, 3);
   EXPECT_TRUE(linear_first_guess(unloaded, 1.0).allFinite());
 }
+
+// A Mathieu tongue narrower than a continuation step. x'' + c x' + (1 + e cos(w t)) x = F0
+// in full contact (c = 0.05, e = 0.1002, just above the threshold e ~ 2c): the principal
+// parametric resonance near w = 2 is unstable over a band ~6e-3 wide, and a coarse sweep
+// steps over it with both neighbours stable. The sweep must list both crossings (period
+// doublings) at the band's edges; the edges are checked against an independent bisection
+// on the monodromy of the linear Hill equation (monodromy_linear_periodic, no harmonic
+// balance), to 1e-6 in w (the HB orbit is in full contact, so its linearisation is the
+// Hill equation itself).
+TEST(ParametricContact, NarrowMathieuTongueBetweenTwoStablePointsIsFound) {
+  const double c = 0.05, e = 0.1002;
+  const HarmonicBalance hb = parametric_oscillator(c, 1.0, [e](double t) { return 1.0 + e * std::cos(t); }, 1.0, 8);
+  SweepOptions o;
+  o.omega_min = 1.6;
+  o.omega_max = 2.4;
+  o.continuation.ds_max = 0.2;
+  const FrequencyCurve fc = sweep_frequency(hb, o, "narrow tongue");
+  ASSERT_TRUE(fc.complete) << fc.failure;
+  for (bool st : fc.stable) ASSERT_TRUE(st) << "the sweep must step over the band (it has a point inside)";
+  // independent band edges: |mu| of the Hill equation = 1, by bisection in w
+  auto hill_modulus = [&](double w) {
+    auto A = [&](double t, MatrixXd& out) {
+      out.resize(2, 2);
+      out << 0, 1, -(1 + e * std::cos(w * t)), -c;
+    };
+    return Eigen::EigenSolver<MatrixXd>(monodromy_linear_periodic(A, 2, 2 * M_PI / w), false)
+        .eigenvalues().cwiseAbs().maxCoeff();
+  };
+  ASSERT_GT(hill_modulus(2.0 - 2.5e-4), 1.0) << "the band must exist";
+  auto edge = [&](double inside, double outside) {
+    for (int k = 0; k < 40; ++k) {
+      const double m = 0.5 * (inside + outside);
+      (hill_modulus(m) > 1.0 ? inside : outside) = m;
+    }
+    return 0.5 * (inside + outside);
+  };
+  const double lo = edge(2.0 - 2.5e-4, 1.98), hi = edge(2.0 - 2.5e-4, 2.02);
+  EXPECT_LT(hi - lo, 1e-2);
+  std::vector<double> pd;
+  for (const auto& b : fc.bifurcations)
+    if (b.type == BifurcationType::period_doubling) pd.push_back(b.omega);
+  ASSERT_EQ(pd.size(), 2u);
+  std::sort(pd.begin(), pd.end());
+  EXPECT_NEAR(pd[0], lo, 1e-6);
+  EXPECT_NEAR(pd[1], hi, 1e-6);
+}

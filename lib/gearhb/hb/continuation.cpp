@@ -271,15 +271,25 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
   return w;
 }
 
+BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
+                           double t, double corrector_tolerance) {
+  Scaled S(p, s);
+  const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
+  Eigen::VectorXd y = (1 - t) * ya + t * yb;
+  int iters = 0;
+  double res = 0.0;
+  if (!correct(S, y, (yb - ya).normalized(), 30, corrector_tolerance, iters, res))
+    throw std::runtime_error("point_on_chord: corrector failed near omega = " + std::to_string(S.omega(y)) +
+                             " (residual " + std::to_string(res) + ")");
+  return {S.X(y), S.omega(y), iters, res, 0.0, 0.0};
+}
+
 BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,
                                 const Scaling& s,
                                 const std::function<StateProbe(const Eigen::VectorXd&, double)>& probe,
                                 double tol, double corrector_tolerance, double indicator_tol) {
   const StateProbe pa = probe(a.X, a.omega), pb = probe(b.X, b.omega);
   if (pa.state == pb.state) throw std::invalid_argument("locate_state_change: no change of state between the points");
-  Scaled S(p, s);
-  const Eigen::VectorXd ya = S.y(a.X, a.omega), yb = S.y(b.X, b.omega);
-  const Eigen::VectorXd normal = (yb - ya).normalized();
   double lo = 0.0, hi = 1.0, h_lo = pa.indicator, h_hi = pb.indicator;
   int last_side = 0;   // Illinois: halve the value kept twice in a row
   BranchPoint found = b;
@@ -287,15 +297,8 @@ BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a
     const bool secant = std::isfinite(h_lo) && std::isfinite(h_hi) && h_lo * h_hi < 0.0;
     double mid = secant ? lo + (hi - lo) * h_lo / (h_lo - h_hi) : 0.5 * (lo + hi);
     mid = std::clamp(mid, lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));   // keep the bracket shrinking
-    Eigen::VectorXd y = (1 - mid) * ya + mid * yb;
-    int iters = 0;
-    double res = 0.0;
-    if (!correct(S, y, normal, 30, corrector_tolerance, iters, res))
-      throw std::runtime_error("locate_state_change: corrector failed near omega = " +
-                               std::to_string(S.omega(y)) + " (residual " + std::to_string(res) + ")");
-    const Eigen::VectorXd X = S.X(y);
-    const double w = S.omega(y);
-    const StateProbe pm = probe(X, w);
+    const BranchPoint q = point_on_chord(p, a, b, s, mid, corrector_tolerance);
+    const StateProbe pm = probe(q.X, q.omega);
     if (pm.state == pa.state) {
       lo = mid;
       h_lo = pm.indicator;
@@ -304,13 +307,13 @@ BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a
     } else {
       hi = mid;
       h_hi = pm.indicator;
-      found = {X, w, iters, res, 0.0, 0.0};
+      found = q;
       if (last_side == 1) h_lo *= 0.5;
       last_side = 1;
     }
     if (std::isfinite(pm.indicator) && std::fabs(pm.indicator) < indicator_tol) {
       if (pm.state != pa.state) break;
-      found = {X, w, iters, res, 0.0, 0.0};   // on the circle to indicator_tol: the change itself
+      found = q;   // on the circle to indicator_tol: the change itself
       break;
     }
   }

@@ -133,6 +133,12 @@ struct StateProbe {
   double indicator = NAN;
 };
 
+// The point on the branch at chord fraction t in [0, 1] between a and b: the chord point
+// corrected back onto the branch in the hyperplane normal to the chord (as every trial of
+// locate_state_change). Throws if the corrector fails.
+BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
+                           double t, double corrector_tolerance = 1e-10);
+
 // The point on the branch between a and b where the state of `probe` changes: each trial
 // point on the chord a -> b is corrected back onto the branch in the hyperplane normal to
 // the chord. With a finite indicator of opposite signs at the bracket ends the trial is

@@ -301,10 +301,105 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
   return r;
 }
 
+namespace {
+
+// x of the HB orbit at the phases 2 pi j / M (columns).
+Eigen::MatrixXd hb_orbit_samples(const HarmonicBalance& hb, const Eigen::VectorXd& X, int M) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  Eigen::MatrixXd xhb(n, M);
+  for (int j = 0; j < M; ++j) {
+    const double th = 2.0 * M_PI * j / M;
+    Eigen::VectorXd x = X.segment(0, n);
+    for (int k = 1; k <= H; ++k)
+      x += X.segment(hb.index(2 * k - 1, 0), n) * std::cos(k * th) + X.segment(hb.index(2 * k, 0), n) * std::sin(k * th);
+    xhb.col(j) = x;
+  }
+  return xhb;
+}
+
+// A period map on the shooting variable y = (x0, v0) at phase 0: y(T), the monodromy
+// matrix, and x at the map's sampling nodes (columns).
+using ShootingMap = std::function<void(const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi,
+                                       Eigen::MatrixXd& xs)>;
+
+// Newton's method on the shooting equations P(y) - y = 0 from the HB state (dP/dy the
+// monodromy matrix; Seydel, Practical Bifurcation and Stability Analysis, 3rd ed., §7.3),
+// residual scaled by sc, keeping the best iterate (a step that does not lower the
+// residual ends the iteration). Fills r (state, monodromy, residual, corrected, steps,
+// multipliers) and returns x at the nodes on the best orbit.
+Eigen::MatrixXd shooting_newton(const ShootingMap& P, const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+                                const Eigen::VectorXd& sc, const FloquetOptions& opt, FloquetResult& r) {
+  const int n = hb.dofs(), m = 2 * n;
+  Eigen::VectorXd x0, v0, yT;
+  hb_initial_state(hb, X, w, x0, v0);
+  Eigen::VectorXd y(m), ybest;
+  y << x0, v0;
+  Eigen::MatrixXd Phi, xs, Phi_best, xs_best;
+  double best = INFINITY;
+  for (int it = 0; it <= opt.max_newton; ++it) {
+    P(y, yT, Phi, xs);
+    const Eigen::VectorXd F = yT - y;
+    const double res = F.cwiseQuotient(sc).cwiseAbs().maxCoeff();
+    if (!(res < best)) break;   // no progress (or NaN): keep the best orbit
+    best = res;
+    ybest = y;
+    Phi_best = Phi;
+    xs_best = xs;
+    r.newton_steps = it;
+    if (res < opt.tolerance) {
+      r.corrected = true;
+      break;
+    }
+    if (it == opt.max_newton) break;
+    const Eigen::VectorXd dy = (Phi - Eigen::MatrixXd::Identity(m, m)).partialPivLu().solve(-F);
+    if (!dy.allFinite()) break;
+    y += dy;
+  }
+  if (ybest.size() == 0 || Phi_best.size() == 0)   // the first residual was already not finite
+    throw std::runtime_error("Floquet: the period map of the harmonic-balance orbit is not finite at omega = " +
+                             std::to_string(w) + " rad/s (a parameter far outside the model's scale?)");
+  r.shooting_residual = best;
+  r.x0 = ybest.head(n);
+  r.v0 = ybest.tail(n);
+  r.monodromy = Phi_best;
+  set_multipliers(r, Phi_best, opt, w);
+  return xs_best;
+}
+
+Eigen::VectorXd shooting_scale(int n, double w, double x_scale) {
+  Eigen::VectorXd sc(2 * n);
+  sc.head(n).setConstant(x_scale);
+  sc.tail(n).setConstant(w * x_scale);
+  return sc;
+}
+
+}  // namespace
+
+FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+                                         double x_scale, const FloquetOptions& opt) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
+  const TimeIntegrator ti(hb);
+  TimeIntegrationOptions to;
+  to.rel_tol = 1e-12;
+  to.abs_tol = 1e-13;
+  to.x_scale = x_scale;
+  const ShootingMap P = [&](const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi, Eigen::MatrixXd& xs) {
+    Eigen::VectorXd xT, vT;
+    ti.period_map(y.head(n), y.tail(n), w, to, xT, vT, Phi, M, &xs);
+    yT.resize(2 * n);
+    yT << xT, vT;
+  };
+  FloquetResult r;
+  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, w, shooting_scale(n, w, x_scale), opt, r);
+  r.orbit_error = (xs - hb_orbit_samples(hb, X, M)).cwiseAbs().maxCoeff();
+  return r;
+}
+
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, double x_scale,
                                   const FloquetOptions& opt) {
-  if (has_stiffness_profile(hb)) return floquet_of_hb_variational(hb, X, w, opt);
-  const int n = hb.dofs(), H = hb.harmonics(), m = 2 * n;
+  if (has_stiffness_profile(hb)) return floquet_of_hb_shooting_gsl(hb, X, w, x_scale, opt);
+  const int n = hb.dofs(), H = hb.harmonics();
   const double T = 2.0 * M_PI / w;
   const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
   // Nodes: a uniform grid, plus the midpoint of every HB contact interval or gap
@@ -325,68 +420,25 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
     }
     std::sort(nodes.begin(), nodes.end());
   }
-  // HB orbit at the uniform nodes
-  Eigen::MatrixXd xhb(n, M);
-  for (int j = 0; j < M; ++j) {
-    const double th = 2.0 * M_PI * j / M;
-    Eigen::VectorXd x = X.segment(0, n);
-    for (int k = 1; k <= H; ++k)
-      x += X.segment(hb.index(2 * k - 1, 0), n) * std::cos(k * th) + X.segment(hb.index(2 * k, 0), n) * std::sin(k * th);
-    xhb.col(j) = x;
-  }
   PiecewiseLinearFlow flow(hb);
-  FloquetResult r;
-  Eigen::VectorXd x0, v0, xT, vT;
-  hb_initial_state(hb, X, w, x0, v0);
-  Eigen::VectorXd sc(m);
-  sc.head(n).setConstant(x_scale);
-  sc.tail(n).setConstant(w * x_scale);
-  Eigen::MatrixXd Phi, xs;
-  double best = INFINITY;
-  Eigen::VectorXd y(m), ybest;
-  y << x0, v0;
-  Eigen::MatrixXd Phi_best, xs_best;
-  for (int it = 0; it <= opt.max_newton; ++it) {
+  const ShootingMap P = [&](const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi, Eigen::MatrixXd& xs) {
+    Eigen::VectorXd xT, vT;
     flow.period_map(y.head(n), y.tail(n), w, nodes, xT, vT, Phi, &xs);
-    Eigen::VectorXd F(m);
-    F << xT - y.head(n), vT - y.tail(n);
-    const double res = F.cwiseQuotient(sc).cwiseAbs().maxCoeff();
-    if (!(res < best)) break;   // no progress (or NaN): keep the best orbit
-    best = res;
-    ybest = y;
-    Phi_best = Phi;
-    xs_best = xs;
-    r.newton_steps = it;
-    if (res < opt.tolerance) {
-      r.corrected = true;
-      break;
-    }
-    if (it == opt.max_newton) break;
-    const Eigen::VectorXd dy = (Phi - Eigen::MatrixXd::Identity(m, m)).partialPivLu().solve(-F);
-    if (!dy.allFinite()) break;
-    y += dy;
-  }
-  if (ybest.size() == 0)   // the first residual was already not finite: no orbit to report
-    throw std::runtime_error("Floquet: the exact period map of the harmonic-balance orbit is not finite at omega = " +
-                             std::to_string(w) + " rad/s (a parameter far outside the model's scale?)");
-  r.shooting_residual = best;
-  r.x0 = ybest.head(n);
-  r.v0 = ybest.tail(n);
-  r.monodromy = Phi_best;
+    yT.resize(2 * n);
+    yT << xT, vT;
+  };
+  FloquetResult r;
+  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, w, shooting_scale(n, w, x_scale), opt, r);
   // orbit error over the uniform nodes (their columns in the node list)
-  {
-    double e = 0.0;
-    std::size_t col = 0;
-    for (int j = 0; j < M; ++j) {
-      const double t = T * j / M;
-      while (col < nodes.size() && nodes[col] < t - 1e-12 * T) ++col;
-      e = std::max(e, (xs_best.col(Eigen::Index(col)) - xhb.col(j)).cwiseAbs().maxCoeff());
-    }
-    r.orbit_error = e;
+  const Eigen::MatrixXd xhb = hb_orbit_samples(hb, X, M);
+  double e = 0.0;
+  std::size_t col = 0;
+  for (int j = 0; j < M; ++j) {
+    const double t = T * j / M;
+    while (col < nodes.size() && nodes[col] < t - 1e-12 * T) ++col;
+    e = std::max(e, (xs.col(Eigen::Index(col)) - xhb.col(j)).cwiseAbs().maxCoeff());
   }
-  if (Phi_best.size() == 0)
-    throw std::runtime_error("floquet_of_hb_orbit: the exact period map is not finite at omega = " + std::to_string(w));
-  set_multipliers(r, Phi_best, opt, w);
+  r.orbit_error = e;
   return r;
 }
 

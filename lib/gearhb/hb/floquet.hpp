@@ -22,9 +22,10 @@
 // the corrected orbit. The largest distance between the HB and the corrected orbit
 // over the period is an a-posteriori error of the HB point.
 //
-// For a smooth time-varying stiffness (a parametric model) `monodromy_linear_periodic`
-// integrates the variational equation Phi' = A(t) Phi over one period with GSL's
-// rk8pd, segment by segment between optional breakpoints where A may jump.
+// For a smooth time-varying stiffness (a parametric model) there is no exact flow:
+// floquet_of_hb_shooting_gsl corrects the orbit the same way on GSL's rk8pd period map.
+// `monodromy_linear_periodic` integrates the variational equation Phi' = A(t) Phi over
+// one period, segment by segment between optional breakpoints where A may jump.
 #include <complex>
 #include <cmath>
 #include <functional>
@@ -103,9 +104,19 @@ class PiecewiseLinearFlow {
 // Multipliers of the HB point (X, omega) after correcting the orbit by shooting.
 // x_scale: characteristic displacement (HarmonicBalance::scaling).
 // A model with a time-varying contact stiffness (contact.hpp stiffness_profile)
-// has no piecewise-constant generator: it goes to floquet_of_hb_variational.
+// has no piecewise-constant generator: it goes to floquet_of_hb_shooting_gsl.
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                   double x_scale, const FloquetOptions& opt = {});
+
+// The same correction for any model, on GSL's rk8pd period map with its variational
+// equations (TimeIntegrator::period_map, relative tolerance 1e-12, absolute 1e-13 x_scale):
+// the path of a time-varying contact stiffness, where no exact flow exists. The vector
+// field is continuous in x, so the contact switches need no saltation; rk8pd's step
+// control resolves the kinks. orbit_error: the largest |x_HB - x| over opt.steps (or
+// max(64, 2(2H+1))) uniform samples. Costs one integration of 2n + 4n^2 equations per
+// Newton step (about 10x the exact flow for n = 1; README of gearhb_frc).
+FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                         double x_scale, const FloquetOptions& opt = {});
 
 // Multipliers from the variational equation about the HB orbit itself (not
 // corrected; orbit_error = NaN, corrected = false):

@@ -44,6 +44,8 @@ namespace gearhb {
 enum class SweepDirection { up, down };
 enum class StabilityMethod { floquet, hill, none };
 
+enum class BandSearch { parametric, always, never };
+
 struct SweepOptions {
   double omega_min = 0.0, omega_max = 1.0;   // [rad/s]
   SweepDirection direction = SweepDirection::up;   // up: from omega_min; down: from omega_max
@@ -51,6 +53,13 @@ struct SweepOptions {
   StabilityMethod stability = StabilityMethod::floquet;
   bool hill_cross_check = false;             // also Hill at every point (FrequencyCurve::hill_stable)
   bool locate_bifurcations = true;           // Floquet only
+  // A band of instability narrower than a step (a Mathieu tongue of a time-varying
+  // stiffness crossed in one step) between two stable points: see add_narrow_bands in
+  // frequency_sweep.cpp (criterion and cost). Its two crossings are listed in
+  // FrequencyCurve::bifurcations (after_point the interval); the band has no point of its
+  // own. parametric: searched only for a model with a time-varying contact stiffness (where
+  // the tongues are; the search doubles the cost of a constant-stiffness gear sweep).
+  BandSearch narrow_bands = BandSearch::parametric;   // Floquet and locate_bifurcations only
   FloquetOptions floquet;
   ContinuationOptions continuation;          // omega_start / omega_end are overwritten
 };

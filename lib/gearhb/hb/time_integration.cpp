@@ -228,23 +228,35 @@ double TimeIntegrator::max_over_period(const Eigen::VectorXd& x0, const Eigen::V
 
 Eigen::MatrixXd TimeIntegrator::monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                           double omega, const TimeIntegrationOptions& opt) const {
+  Eigen::VectorXd xT, vT;
+  Eigen::MatrixXd Phi;
+  period_map(x0, v0, omega, opt, xT, vT, Phi);
+  return Phi;
+}
+
+void TimeIntegrator::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                                const TimeIntegrationOptions& opt, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                                Eigen::MatrixXd& Phi, int samples, Eigen::MatrixXd* xs) const {
   const int n = hb_.dofs(), d = 2 * n;
   const GslErrorsReturned gsl_errors;
   OdeContext ctx{this, &hb_, omega, n, true, Minv_};
   Driver drv(ctx, d + d * d, 2.0 * M_PI / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
-  std::vector<double> y(d + d * d, 0.0);
-  for (int i = 0; i < n; ++i) {
-    y[i] = x0[i];
-    y[n + i] = v0[i] / omega;
-  }
-  for (int i = 0; i < d; ++i) y[d + i * d + i] = 1.0;
+  std::vector<double> y = phase_state(x0, v0, omega);
+  y.resize(std::size_t(d + d * d), 0.0);
+  for (int i = 0; i < d; ++i) y[std::size_t(d + i * d + i)] = 1.0;
   double theta = 0.0;
+  if (xs) xs->resize(n, std::max(samples, 0));
+  for (int j = 0; j < samples && xs; ++j) {
+    drv.advance(theta, 2.0 * M_PI * j / samples, y.data(), omega);
+    xs->col(j) = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
+  }
   drv.advance(theta, 2.0 * M_PI, y.data(), omega);
+  xT = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
+  vT = omega * Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
   // Back to (x, v): Phi_v = D Phi_theta D^-1, D = diag(I, omega I).
-  Eigen::MatrixXd Phi = Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
+  Phi = Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
   Phi.bottomRows(n) *= omega;
   Phi.rightCols(n) /= omega;
-  return Phi;
 }
 
 void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,

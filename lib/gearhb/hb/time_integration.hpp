@@ -71,6 +71,14 @@ class TimeIntegrator {
   Eigen::MatrixXd monodromy(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                             const TimeIntegrationOptions& opt) const;
 
+  // The period map: the state (xT, vT) one forcing period after (x0, v0) at phase 0 and
+  // the monodromy matrix Phi = d(xT, vT)/d(x0, v0) (2n x 2n, variational equations); xs
+  // (if not null) receives x at the phases 2 pi j / samples, j = 0..samples-1 (columns).
+  // The shooting correction of a parametric model's orbit (floquet.hpp) runs on it.
+  void period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                  const TimeIntegrationOptions& opt, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                  Eigen::MatrixXd& Phi, int samples = 0, Eigen::MatrixXd* xs = nullptr) const;
+
   // Right-hand side: acceleration for state (x, v) at time t.
   Eigen::VectorXd acceleration(double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                                double omega) const;
