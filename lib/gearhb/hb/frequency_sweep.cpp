@@ -193,7 +193,8 @@ namespace {
 // nothing. The multipliers' trend says where to look: an interval is searched when the
 // critical multiplier is near the real axis at an end (|arg mu| within 0.15 pi of 0 or
 // pi: a tongue opens where a pair meets on the real axis), within 0.25 of the circle
-// there (|mu| > 0.75). The largest |mu| on the chord is then found by
+// there (|mu| > 0.75), and no fold of the branch within 2 points (whose +1 multiplier
+// is not a band). The largest |mu| on the chord is then found by
 // golden-section search (12 corrected points); if it lies outside the circle, both
 // crossings are located on either side of it as the loop above does. A band whose peak
 // stays below |mu| 0.75 at both neighbours, or that a smooth |mu| does not announce,
@@ -213,6 +214,9 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
   for (std::size_t i = 1; i < P.size(); ++i) {
     if (outside(F[i - 1]) != 0 || outside(F[i]) != 0) continue;
     if (!near_real(F[i - 1]) && !near_real(F[i])) continue;
+    bool near_fold = false;   // a +1 multiplier of a fold of the branch is not a band
+    for (const auto& f : c.branch.folds) near_fold = near_fold || std::abs(f.after_point - int(i - 1)) <= 2;
+    if (near_fold) continue;
     try {
       const double g = 0.5 * (std::sqrt(5.0) - 1.0);
       double lo = 0.0, hi = 1.0;
