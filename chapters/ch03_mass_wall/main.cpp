@@ -174,6 +174,7 @@ void MassAgainstWall::frequency_responses(Run& run) const {
     const HarmonicBalance hb = model(cs.load, sol_);
     const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
     run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kX));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
     index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
@@ -279,6 +280,7 @@ void MassAgainstWall::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_);
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", frequency_response_table(hb, c, kX));
+  run.write("bifurcations.csv", bifurcation_table(c));
   const ResponseEvaluator ev(hb, kX);
   double peak = -INFINITY;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);

@@ -106,7 +106,7 @@ class TwoMassesChapter {
 
   LinearSystem open_system() const;
   HarmonicBalance model(const Loading& l) const;
-  void write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const std::string& stem) const;
+  void write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const std::string& label) const;
   void normal_modes(Run& run) const;
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -123,8 +123,12 @@ TwoMassesChapter::TwoMassesChapter(Study& study) {
   P.add("m", &sys_.m, "kg", "each mass", Range::mass());
   P.add("k", &sys_.k, "N/m", "each support spring to ground", Range::positive());
   P.add("kc", &sys_.kc, "N/m", "contact stiffness on x1 - x2", Range::nonnegative());
-  P.add("alpha", &sys_.alpha, "1/s", "Rayleigh damping, mass-proportional", Range::nonnegative());
-  P.add("beta", &sys_.beta, "s", "Rayleigh damping, stiffness-proportional", Range::nonnegative());
+  P.add("rayleigh_alpha", &sys_.alpha, "1/s", "Rayleigh damping C = alpha M + beta K, mass-proportional",
+        Range::nonnegative());
+  P.add("rayleigh_beta", &sys_.beta, "s", "Rayleigh damping C = alpha M + beta K, stiffness-proportional",
+        Range::nonnegative());
+  P.renamed("alpha", "rayleigh_alpha");
+  P.renamed("beta", "rayleigh_beta");
   P.group("own case (--case own)", true);
   P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload");
   P.add("F1", &own_.F1, "N", "harmonic force on mass 1");
@@ -157,10 +161,13 @@ HarmonicBalance TwoMassesChapter::model(const Loading& l) const {
   return HarmonicBalance(open_system(), {contact}, f, sol_.H, sol_.N, contact_quadrature(sol_));
 }
 
-// One curve as three tables: d = x1 - x2 (<stem>.csv) and each mass (<stem>_x1/_x2.csv).
+// One curve as three tables, d = x1 - x2 (frc<label>.csv) and each mass (frc<label>_x1/_x2.csv),
+// and its bifurcations (bifurcations<label>.csv); label "" or "_<case>".
 void TwoMassesChapter::write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                    const std::string& stem) const {
+                                    const std::string& label) const {
+  const std::string stem = "frc" + label;
   run.write(stem + ".csv", frequency_response_table(hb, c, kNormal));
+  run.write("bifurcations" + label + ".csv", bifurcation_table(c));
   run.write(stem + "_x1.csv", frequency_response_table(hb, c, Vector2d(1, 0)));
   run.write(stem + "_x2.csv", frequency_response_table(hb, c, Vector2d(0, 1)));
 }
@@ -197,7 +204,7 @@ void TwoMassesChapter::frequency_responses(Run& run) const {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.load);
     const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
-    write_curves(run, hb, c, "frc_" + cs.label);
+    write_curves(run, hb, c, "_" + cs.label);
     const ResponseEvaluator ev(hb, kNormal);
     ContactCounts n;
     for (const auto& pt : c.branch.points) {
@@ -291,7 +298,7 @@ void TwoMassesChapter::time_integration_check(Run& run, const HarmonicBalance& h
 void TwoMassesChapter::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_);
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  write_curves(run, hb, c, "frc");
+  write_curves(run, hb, c, "");
   run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");
   run.key_numbers().add("folds", double(c.branch.folds.size()), "-");
   run.key_numbers().add("points", double(c.branch.points.size()), "-");

@@ -402,6 +402,7 @@ void ComparinSingh::thesis_cases(Run& run) const {
     const FrequencyCurve c =
         run.timed("sweep " + cs.label, [&] { return require_complete(sweep_frequency(hb, sweep_options(sol_), cs.label), cs.label); });
     run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kDelta));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
     const Classifier cls{pair_, cs.load};
     write_prediction(run, cls, "prediction_" + cs.label + ".csv");
     const States seen = visited_states(hb, c), pred = predicted_states(cls, sol_);
@@ -593,6 +594,7 @@ void ComparinSingh::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_.H, sol_.N);
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", frequency_response_table(hb, c, kDelta));
+  run.write("bifurcations.csv", bifurcation_table(c));
   const Classifier cls{pair_, own_};
   write_prediction(run, cls, "prediction.csv");
   run.say("predicted: " + cls.describe(sol_.omega_min, sol_.omega_max) + "; HB states " +

@@ -179,8 +179,12 @@ GearPairChapter::GearPairChapter(Study& study) {
   P.add("ky2", &gear_.ky2, "N/m", "gear 2 support stiffness along y", kStiffness);
   P.add("kth2", &gear_.kth2, "N m/rad", "gear 2 torsional support stiffness (thesis prints 'N')", kStiffness);
   P.add("kc", &gear_.kc, "N/m", "mesh stiffness (thesis prints 5e2; 5e8 reproduces its text)", kStiffness);
-  P.add("ray_alpha", &gear_.rayleigh_alpha, "1/s", "C = alpha M + beta K", Range::between(0.0, 1e6));
-  P.add("ray_beta", &gear_.rayleigh_beta, "s", "C = alpha M + beta K", Range::between(0.0, 1.0));
+  P.add("rayleigh_alpha", &gear_.rayleigh_alpha, "1/s", "Rayleigh damping C = alpha M + beta K, mass-proportional",
+        Range::between(0.0, 1e6));
+  P.add("rayleigh_beta", &gear_.rayleigh_beta, "s", "Rayleigh damping C = alpha M + beta K, stiffness-proportional",
+        Range::between(0.0, 1.0));
+  P.renamed("ray_alpha", "rayleigh_alpha");
+  P.renamed("ray_beta", "rayleigh_beta");
   P.group("kc study");
   P.add("kc_alt", &mesh_.kc_alt, "N/m", "the other mesh stiffness (cases *_kc_alt)", kStiffness);
   P.add("ds_max_alt", &mesh_.ds_max_alt, "-", "arc-length step cap of the kc_alt curves", Range::between(1e-6, 1.0));
@@ -194,7 +198,9 @@ GearPairChapter::GearPairChapter(Study& study) {
   add_solver_parameters(P, sol_, 6);
   P.group("corrector");
   P.add("tolerance", &corrector_.tolerance, "-", "Newton tolerance (scaled residual and step)", Range::between(1e-14, 1e-3));
-  P.add("corr_iter", &corrector_.iterations, "-", "Newton iterations per continuation step", Range::between(1, 100));
+  P.add("corrector_max_iterations", &corrector_.iterations, "-", "Newton iterations per continuation step",
+        Range::between(1, 100));
+  P.renamed("corr_iter", "corrector_max_iterations");
   P.add("ds_min", &corrector_.ds_min, "-", "smallest scaled arc-length step before a sweep gives up", Range::between(1e-14, 1e-3));
   P.group("checks");
   P.add("H_check", &checks_.H_check, "-", "harmonics of the HB vs time-integration check",

@@ -176,7 +176,8 @@ int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(w t) + fs sin(w t)\n"
-              "Writes DIR/frc.csv, modes.csv, key_numbers.json, params.json (the resolved model), frc.png.\n\n" +
+              "Writes DIR/frc.csv, bifurcations.csv, modes.csv, key_numbers.json, params.json (the resolved model),\n"
+              "timings.csv (wall time per step) and frc.png.\n\n" +
                   model_file_help());
   FrequencyResponseFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

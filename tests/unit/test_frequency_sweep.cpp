@@ -86,3 +86,24 @@ TEST(FrequencySweep, TimeIntegrationCheckPicksStableIntermittentPointsAwayFromFo
   // The chapters' criterion (README "Reference files and tests"): x_max within 0.5 % of GSL time integration.
   EXPECT_LT(chk.worst_rel_diff, 5e-3);
 }
+
+// Every contact counts in the sweep's contact regime (issue 23: it stopped at 15 contacts,
+// so a model with 16-30 lost the grazing step control on the others). One DOF against 25
+// stops at 0.1, 0.2, ..., 2.5: at x = 2.05 stops 1-20 are closed, at x = 2.15 also stop 21
+// (index 20); the two regimes differ only there. 31 contacts are refused.
+TEST(FrequencySweep, ContactRegimeSeesEveryContact) {
+  const LinearSystem s{Eigen::MatrixXd::Ones(1, 1), Eigen::MatrixXd::Constant(1, 1, 0.01), Eigen::MatrixXd::Ones(1, 1)};
+  std::vector<UnilateralContact> stops;
+  for (int i = 0; i < 25; ++i) stops.push_back({Eigen::VectorXd::Ones(1), 1.0, -0.1 * (i + 1), {}, {}});
+  const Excitation f{Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.1), Eigen::VectorXd::Zero(1)};
+  const HarmonicBalance hb(s, stops, f, 3);
+  const auto regime = contact_regime(hb);
+  Eigen::VectorXd a = Eigen::VectorXd::Zero(hb.size()), b = a;
+  a[0] = 2.05;
+  b[0] = 2.15;
+  const std::uint64_t ra = regime(a), rb = regime(b);
+  EXPECT_NE(ra, rb);
+  EXPECT_EQ(ra ^ rb, std::uint64_t(1) << 40) << "only contact 20 differs: open (0) at 2.05, full (1) at 2.15";
+  stops.resize(31, stops.front());
+  EXPECT_THROW(HarmonicBalance(s, stops, f, 3), std::invalid_argument);
+}

@@ -89,12 +89,18 @@ const ParameterSet::Entry* ParameterSet::find(const std::string& name) const {
   return nullptr;
 }
 
+void ParameterSet::renamed(const std::string& old_name, const std::string& new_name) {
+  renamed_.emplace_back(old_name, new_name);
+}
+
 void ParameterSet::set(const std::string& assignment) {
   const auto eq = assignment.find('=');
   if (eq == std::string::npos || eq == 0)
     throw UsageError("--set expects key=value, got '" + assignment + "'");
   const std::string key = assignment.substr(0, eq), text = assignment.substr(eq + 1);
   const Entry* e = find(key);
+  for (const auto& [old_name, new_name] : renamed_)
+    if (!e && key == old_name) throw UsageError("parameter '" + key + "' was renamed to '" + new_name + "'");
   if (!e && keep_unregistered_) {
     unregistered_.emplace_back(key, text);
     return;

@@ -54,6 +54,10 @@ class ParameterSet {
   // cross-parameter check.
   void add(const std::string& name, std::string* value, const std::string& unit, const std::string& help);
 
+  // A parameter's former name (README glossary: one name per quantity): --set of it is
+  // refused with "'old' was renamed to 'new'".
+  void renamed(const std::string& old_name, const std::string& new_name);
+
   // Parameters added after this call are listed under `title` in --help. An
   // own-case group holds the parameters of the user's own case (--case own):
   // setting one of them for another selection is a usage error.
@@ -97,6 +101,7 @@ class ParameterSet {
   bool group_own_ = false;
   bool keep_unregistered_ = false;
   std::vector<std::pair<std::string, std::string>> unregistered_;
+  std::vector<std::pair<std::string, std::string>> renamed_;   // (old, new)
 };
 
 // Parse a decimal floating-point number (digits, one optional point, optional

@@ -139,6 +139,9 @@ ModelFile read_model_file(const std::string& path,
   m.forcing = {force("static"), force("cos"), force("sin")};
   const json contacts = j.value("contacts", json::array());
   if (!contacts.is_array()) fail(path, "contacts", "must be a list");
+  if (contacts.size() > std::size_t(kMaxContacts))
+    fail(path, "contacts", "has " + std::to_string(contacts.size()) + " contacts; at most " + std::to_string(kMaxContacts) +
+                               " (the exact flow indexes contact states by the bits of one word)");
   for (std::size_t i = 0; i < contacts.size(); ++i) {
     const std::string key = "contacts." + std::to_string(i);
     only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file", "kc_file"});
@@ -184,6 +187,7 @@ std::string model_file_help() {
          "  damping               n x n [N s/m], or instead\n"
          "  rayleigh.alpha/beta   C = alpha M + beta K [1/s, s]\n"
          "  contacts[i].direction n numbers: the contact normal (penetration g + direction'x)\n"
+         "  contacts              at most 30\n"
          "  contacts[i].kc        contact stiffness >= 0 [N/m]\n"
          "  contacts[i].gap       g [m]: < 0 clearance, > 0 preload (F = max(kc (g + direction'x), 0))\n"
          "  contacts[i].gap_file  optional CSV 'phase,gap' (one period, uniform phases from 0, gap [m])\n"

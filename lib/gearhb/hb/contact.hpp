@@ -32,6 +32,11 @@ struct UnilateralContact {
   std::function<double(double)> stiffness_profile = {};
 };
 
+// The most contacts a model may have: the exact flow (floquet.hpp) and the sweep's
+// contact regime (frequency_sweep.cpp) index contact states by the bits of one word.
+// HarmonicBalance refuses more; model files say so naming `contacts`.
+constexpr int kMaxContacts = 30;
+
 // The contact stiffness at phase theta: kc, or kc s(theta) with a profile.
 inline double stiffness_at(const UnilateralContact& c, double theta) {
   return c.stiffness_profile ? c.kc * c.stiffness_profile(theta) : c.kc;

@@ -91,7 +91,8 @@ bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int m
 // If a corrector fails (it should not on a short chord) the linear interpolation
 // of the omega-tangent is kept.
 Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::VectorXd& ta,
-                            const Eigen::VectorXd& yb, const Eigen::VectorXd& tb, double tolerance) {
+                            const Eigen::VectorXd& yb, const Eigen::VectorXd& tb, double tolerance,
+                            int corrector_iterations) {
   const int n = S.n;
   const double a_lin = ta[n] / (ta[n] - tb[n]);
   Eigen::VectorXd best = (1.0 - a_lin) * ya + a_lin * yb;
@@ -103,7 +104,7 @@ Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::V
     Eigen::VectorXd y = (1.0 - mid) * ya + mid * yb, tm;
     int iters = 0;
     double res = 0.0;
-    if (!correct(S, y, normal, 30, tolerance, iters, res) || !tangent_here(S, ta, tm)) return best;
+    if (!correct(S, y, normal, corrector_iterations, tolerance, iters, res) || !tangent_here(S, ta, tm)) return best;
     best = y;
     ((tm[n] > 0) == sign_a ? lo : hi) = mid;
   }
@@ -121,7 +122,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
 
   // 1. First point: Newton at omega_start.
   Eigen::VectorXd X = X0;
-  NewtonOptions nopt{opt.tolerance, 50};
+  NewtonOptions nopt{opt.tolerance, opt.endpoint_iterations};
   NewtonReport nr = newton_solve(p, X, opt.omega_start, s, nopt);
   if (!nr.converged) {
     b.failures.push_back({opt.omega_start, nr.residual, 0.0, "first point: " + nr.message});
@@ -140,7 +141,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
 
   const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
   double ds = std::min(opt.ds_initial, opt.ds_max);
-  int regime = opt.regime ? opt.regime(X) : 0, new_regime = regime;
+  std::uint64_t regime = opt.regime ? opt.regime(X) : 0, new_regime = regime;
   for (int step = 0;; ++step) {
     if (step >= opt.max_steps) {
       b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
@@ -162,7 +163,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
         if (!tangent_here(S, t, tn)) {
           converged = false;
           why = "singular augmented Jacobian";
-        } else if (tn.dot(t) < cos_turn && ds > 4.0 * opt.ds_min) {
+        } else if (tn.dot(t) < cos_turn && ds > opt.turn_floor * opt.ds_min) {
           converged = false;   // the branch turns too fast for this step: refine
           why = "tangent turned too sharply";
         } else if (opt.regime && (new_regime = opt.regime(S.X(yn))) != regime && ds > opt.ds_regime_change) {
@@ -174,7 +175,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
         accepted = true;
       } else {
         ++b.rejected_steps;
-        ds *= 0.5;
+        ds *= opt.cut;
         if (ds < opt.ds_min) {
           b.failures.push_back({S.omega(y), res, ds, why + " with ds below ds_min"});
           return b;
@@ -185,7 +186,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     const double w_new = S.omega(yn);
     BranchPoint pt{S.X(yn), w_new, iters, res, ds, tn[n]};
     if ((t[n] > 0) != (tn[n] > 0) && t[n] != 0.0) {
-      const Eigen::VectorXd yf = locate_fold(S, y, t, yn, tn, opt.tolerance);
+      const Eigen::VectorXd yf = locate_fold(S, y, t, yn, tn, opt.tolerance, opt.locate_iterations);
       b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
     }
     // Reached the end of the range: finish with a Newton solve exactly at omega_end.
@@ -211,8 +212,8 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
     t = tn;
     regime = new_regime;
     double next = ds;
-    if (iters <= 3) next = ds * 1.5;
-    else if (iters >= 7) next = ds * 0.7;
+    if (iters <= opt.fast_iterations) next = ds * opt.grow;
+    else if (iters >= opt.slow_iterations) next = ds * opt.shrink;
     if (opt.target_turn_deg > 0.0)
       next = std::min(next, ds * std::clamp(opt.target_turn_deg / std::max(turn, 1e-12), 0.5, 2.0));
     ds = std::clamp(next, opt.ds_min, opt.ds_max);
@@ -271,6 +272,10 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
   return w;
 }
 
+// The chord corrector's iteration limit (a trial point lies on a short chord between two
+// converged points: 30 is ample, as for ContinuationOptions::locate_iterations).
+constexpr int kChordCorrectorIterations = 30;
+
 BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
                            double t, double corrector_tolerance) {
   Scaled S(p, s);
@@ -278,7 +283,7 @@ BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, con
   Eigen::VectorXd y = (1 - t) * ya + t * yb;
   int iters = 0;
   double res = 0.0;
-  if (!correct(S, y, (yb - ya).normalized(), 30, corrector_tolerance, iters, res))
+  if (!correct(S, y, (yb - ya).normalized(), kChordCorrectorIterations, corrector_tolerance, iters, res))
     throw std::runtime_error("point_on_chord: corrector failed near omega = " + std::to_string(S.omega(y)) +
                              " (residual " + std::to_string(res) + ")");
   return {S.X(y), S.omega(y), iters, res, 0.0, 0.0};

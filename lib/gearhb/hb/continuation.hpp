@@ -20,6 +20,7 @@
 // fixed step, Newton restarts from the previous solution. It cannot pass a
 // fold: it stops at the first omega where Newton fails and reports it.
 #include <cmath>
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -46,6 +47,17 @@ struct ContinuationOptions {
   int max_steps = 20000;      // hard cap; reaching it is reported as a failure
   int corrector_max_iterations = 12;
   double tolerance = 1e-10;   // Newton tolerance (scaled residual and step)
+  // Step-length control by the corrector's iteration count (the rule of Seydel, Practical
+  // Bifurcation and Stability Analysis, 3rd ed., ch. 4 "step length control"; NLvib adapts
+  // its step the same way): after an accepted point that took <= fast_iterations corrector
+  // iterations ds *= grow, >= slow_iterations ds *= shrink; a rejected step (corrector
+  // failure, a turn above max_turn_deg, a regime change) is retried with ds *= cut. The
+  // turn test is waived once ds <= turn_floor * ds_min (a true corner must be passable).
+  int fast_iterations = 3, slow_iterations = 7;
+  double grow = 1.5, shrink = 0.7, cut = 0.5;
+  double turn_floor = 4.0;
+  int endpoint_iterations = 50;   // Newton at omega_start and at omega_end (from a predictor far away)
+  int locate_iterations = 30;     // corrector of each bisection trial locating a fold
   int natural_points = 400;   // natural continuation only: number of omega steps
   // Curvature step control (off at 0): after each accepted step, ds is scaled by
   // target_turn_deg / (angle between the two tangents), within [0.5, 2] and ds_max,
@@ -57,7 +69,7 @@ struct ContinuationOptions {
   // stepping across it: there the solution is only C1, and a long step may let the
   // corrector land on another part of the branch (a small fold pair beside a
   // grazing point is then skipped, or traversed backwards).
-  std::function<int(const Eigen::VectorXd&)> regime;
+  std::function<std::uint64_t(const Eigen::VectorXd&)> regime;
   double ds_regime_change = 2e-4;
   // How far [rad/s] the branch may turn back beyond omega_start (a fold pair next to the
   // start: the branch from the first point folds, leaves the range at its start, turns

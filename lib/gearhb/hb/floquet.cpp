@@ -26,7 +26,8 @@ PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb, bool spectra
     if (used) harmonics_.push_back(k);
   }
   dim_ = 2 * n_ + 1 + 2 * int(harmonics_.size());
-  if (hb.contacts().size() > 30) throw std::invalid_argument("PiecewiseLinearFlow: at most 30 contacts");
+  if (hb.contacts().size() > std::size_t(kMaxContacts))
+    throw std::invalid_argument("PiecewiseLinearFlow: at most " + std::to_string(kMaxContacts) + " contacts");
   for (const auto& ct : hb.contacts())
     if (ct.stiffness_profile)
       throw std::invalid_argument("PiecewiseLinearFlow: a time-varying contact stiffness has no piecewise-constant flow");

@@ -258,6 +258,19 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
 
 }  // namespace
 
+std::function<std::uint64_t(const Eigen::VectorXd&)> contact_regime(const HarmonicBalance& hb) {
+  static_assert(2 * kMaxContacts <= 64, "two bits per contact in one 64-bit word");
+  const auto aft = std::make_shared<Aft>(hb.harmonics(), std::max(256, 2 * hb.harmonics() + 2));
+  return [aft, &hb](const Eigen::VectorXd& X) {
+    std::uint64_t code = 0;
+    for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
+      const Eigen::VectorXd uc = hb.penetration(X, i);
+      code |= std::uint64_t(contact_state(uc, aft->to_time(uc))) << (2 * i);
+    }
+    return code;
+  };
+}
+
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label) {
   ContinuationOptions co = opt.continuation;
@@ -282,16 +295,9 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   }
   if (!co.regime && !hb.contacts().empty()) {
     // Steps across a change of the contact state are kept short (continuation.hpp). The
-    // regime: the state (open / full / intermittent) of every contact, two bits each.
-    const auto aft = std::make_shared<Aft>(hb.harmonics(), std::max(256, 2 * hb.harmonics() + 2));
-    co.regime = [aft, &hb](const Eigen::VectorXd& X) {
-      int code = 0;
-      for (std::size_t i = 0; i < hb.contacts().size() && i < 15; ++i) {
-        const Eigen::VectorXd uc = hb.penetration(X, i);
-        code |= static_cast<int>(contact_state(uc, aft->to_time(uc))) << (2 * i);
-      }
-      return code;
-    };
+    // regime: the state (open / full / intermittent) of every contact, two bits each
+    // (kMaxContacts = 30 of them fill 60 bits).
+    co.regime = contact_regime(hb);
   }
   // The first point: Newton from the linear guess inside the continuation (as always);
   // if that fails, find_first_point's contact sets and forcing-amplitude continuation

@@ -44,6 +44,10 @@ namespace gearhb {
 enum class SweepDirection { up, down };
 enum class StabilityMethod { floquet, hill, none };
 
+// The contact regime of a solution X (two bits per contact: its ContactState over the
+// period), the sweep's ContinuationOptions::regime: every contact counts, up to kMaxContacts.
+std::function<std::uint64_t(const Eigen::VectorXd&)> contact_regime(const HarmonicBalance& hb);
+
 enum class BandSearch { parametric, always, never };
 
 struct SweepOptions {

@@ -21,6 +21,9 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
   vec(f_.f0, "f0");
   vec(f_.fc, "fc");
   vec(f_.fs, "fs");
+  if (contacts_.size() > std::size_t(kMaxContacts))
+    throw std::invalid_argument("HarmonicBalance: " + std::to_string(contacts_.size()) + " contacts; at most " +
+                                std::to_string(kMaxContacts));
   for (auto& c : contacts_) {
     if (c.normal.size() != n_) throw std::invalid_argument("HarmonicBalance: contact normal has wrong size");
     if (!(c.kc >= 0.0)) throw std::invalid_argument("HarmonicBalance: contact stiffness must be >= 0");
