@@ -14,7 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from style import read_params  # noqa: E402
+from style import read_params, torque_colour  # noqa: E402
 
 
 def read(path):
@@ -211,6 +211,7 @@ def draw(data_dir, fig_dir):
         mine = sorted([c for c in cases if c["model"] == model], key=lambda c: c["torque_N_m"])
         if not mine:
             return
+        torques = [c["torque_N_m"] for c in mine]
         label = "%d elements, %d positions per base pitch" % (mine[0]["tooth_elements"],
                                                               mine[0]["positions_per_base_pitch"])
         fig, ax = plt.subplots(figsize=(7, 4.2))
@@ -218,7 +219,8 @@ def draw(data_dir, fig_dir):
             d = D(c["file"])
             ph = d["phase"] + [1.0]
             ste = d["ste_um"] + [d["ste_um"][0]]
-            ax.step(ph, ste, where="post", label="T = %g Nm" % c["torque_N_m"])
+            ax.step(ph, ste, where="post", color=torque_colour(c["torque_N_m"], torques),
+                    label="T = %g Nm" % c["torque_N_m"])
             ax.plot(d["phase"], d["ste_um"], "k.", ms=4)
         n = len(D(mine[0]["file"])["phase"])
         pairs = D(mine[0]["file"])["pairs_in_contact"]
@@ -241,7 +243,8 @@ def draw(data_dir, fig_dir):
             d = D(c["fourier_file"])
             h = [k for k in d["harmonic"] if k > 0]
             a = [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k > 0]
-            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width, label="T = %g Nm" % c["torque_N_m"])
+            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width,
+                   color=torque_colour(c["torque_N_m"], torques), label="T = %g Nm" % c["torque_N_m"])
         ax.set_xlabel("harmonic of the mesh frequency k")
         ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
         ax.set_xticks(h)

@@ -65,16 +65,45 @@ def runs(flags):
     return out
 
 
-def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0):
-    """One continuation branch: solid where stable, dashed where unstable.
+def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, unresolved=()):
+    """One continuation branch: solid where stable, dashed where unstable, grey (UNRESOLVED)
+    at the indices `unresolved` (a stability label that is not trusted).
     Consecutive runs share their end point so the curve stays connected."""
     xs, ys = d[x], [v * scale for v in d[y]]
+    bad = set(unresolved)
     first = True
-    for flag, i0, i1 in runs([int(s) for s in d["stable"]]):
+    for flag, i0, i1 in runs([2 if i in bad else int(s) for i, s in enumerate(d["stable"])]):
         j1 = min(i1 + 1, len(xs) - 1)
+        if flag == 2:
+            ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=UNRESOLVED, ls="-", lw=2.4, alpha=0.9, zorder=3)
+            continue
         ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=color, ls="-" if flag else "--",
                 lw=1.4, label=label if first else None)
         first = False
+
+
+def flickering_stability(d, x="omega", margin=2):
+    """Indices where the stability label is not trusted. Between two turning points (folds in x)
+    the label of a simple overhang is constant, and it changes at the folds (give or take
+    `margin` points). On each such piece of the branch the points whose label differs from the
+    piece's majority, away from its ends, are the untrusted ones; the whole span from the first
+    to the last of them is returned (the label flips there)."""
+    xs, st = d[x], [int(s) for s in d["stable"]]
+    turns = [0] + [i for i in range(1, len(xs) - 1) if (xs[i] - xs[i - 1]) * (xs[i + 1] - xs[i]) < 0] + [len(xs) - 1]
+    out = []
+    for a, b in zip(turns[:-1], turns[1:]):
+        piece = st[a:b + 1]
+        majority = 1 if 2 * sum(piece) >= len(piece) else 0
+        odd = [i for i in range(a + margin + 1, b - margin) if st[i] != majority]
+        if odd:
+            out += range(odd[0] - 1, odd[-1] + 2)
+    return out
+
+
+def unresolved_handle(H):
+    from matplotlib.lines import Line2D
+    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %d: the label flips\n"
+                  "between folds (the %d-harmonic orbit is too far from the exact one)" % (H, H))
 
 
 # The thesis' torques in every chapter (N m) and their colours: blue, orange, red.
