@@ -123,7 +123,9 @@ NATURAL_OPEN = dict(color="0.6", ls=":", lw=0.9)
 NATURAL_CLOSED = dict(color="0.25", ls=":", lw=0.9)
 CONTACT_LEVEL = dict(color="#b22222", ls=":", lw=1.2)
 
-CONTACT_COLOURS = {"intermittent": "#e6b800", "full": "0.55"}
+CONTACT_COLOURS = {"intermittent": "#e6b800", "full": "0.55",
+                   # a gear mesh with backlash (figures/gear_dynamics.py): the back flank hits
+                   "back_impact": "#5e3c99", "drive_loss+back_impact": "#2d004b"}
 RUG_HEIGHT = 0.022     # axes fraction per rug row
 
 
