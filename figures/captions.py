@@ -85,17 +85,20 @@ CHAPTERS = [
     ]},
     {"program": "ch06_gear_pair", "title": "Chapter 6: a 6-DOF spur-gear pair with external forcing", "figures": [
         ("fig40_*.png", "Fig. 40", "Fi = 1e5 (static) with harmonic forcing, kc = 5e8 N/m: Delta_max and Delta_min (top), "
-         "oscillating amplitude (bottom). Notice the mesh opens at 7638 rad/s, the fold pairs and bifurcations at "
-         "7-12 krad/s, and the deep Delta_min dip at 22.2 krad/s."),
+         "oscillating amplitude (bottom), a zoom on the folds (middle). Notice the mesh opens at 7638 rad/s, the fold "
+         "pairs and bifurcations at 7-12 krad/s (zoom), and the deep Delta_min dip at 22.2 krad/s on no natural-frequency "
+         "line: the bilinear mode of the mesh (closed-mesh mode 5 while in contact, free gears while apart; README)."),
         ("fig41_*.png", "Fig. 41", "Fi = 1e7. Notice full contact everywhere except two narrow windows: 13.53-13.87 krad/s "
-         "(four folds, near the closed-mesh mode 13.69 krad/s) and near 47 krad/s. The thesis says it stays in full "
+         "(four folds, near the closed-mesh mode 13.69 krad/s; middle panel: zoom) and near 47 krad/s. The thesis says it stays in full "
          "contact (chapter README)."),
         ("fig42_*.png", "Fig. 42", "Fi = -1e8: the static load pulls the teeth apart. Notice the mesh never closes: the "
          "open linear response."),
         ("fig43_*.png", "Fig. 43", "Fi = -1e6. Notice the first touch at 10716 rad/s, then a hardening band up to the fold "
-         "at 21718 rad/s with period doublings and Neimark-Sacker points on it."),
+         "at 21718 rad/s (towards the mesh's bilinear mode, 22.18 krad/s: README) with period doublings and "
+         "Neimark-Sacker points on it."),
         ("fig44_*.png", "Fig. 44", "Fi = 1e7 with 100x the harmonic forcing. Notice it is Fig. 40 multiplied by 100 "
-         "(the contact law with zero gap is positively homogeneous; only Fi/Fa matters)."),
+         "(the contact law with zero gap is positively homogeneous; only Fi/Fa matters): the same folds (zoom) and "
+         "the same bilinear-mode dip at 22.2 krad/s, now -388 mm."),
         ("fig45_*.png", "Fig. 45", "Fi = -1e8 with 100x the harmonic forcing. Notice it is Fig. 43 multiplied by 100."),
     ] + [("figS%d_*.png" % n, "supplement S%d" % n, "Fig. %d's case (%s) with the printed kc = 5e2 N/m (kc_alt). "
            "Notice the curve is the linear open response shifted: a 5e2 N/m contact does nothing, which is why 5e8 is "
