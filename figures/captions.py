@@ -14,8 +14,9 @@ CHAPTERS = [
         ("figM4_*.png", "supplement M4", "Time-integration sweeps up and down in frequency against the HB branch. Notice the jumps "
          "at the two folds (hysteresis): a sweep never sees the unstable middle branch."),
         ("figM5_*.png", "supplement M5", "Classic sampled AFT (contact force sampled at N times) against the exact projection. "
-         "Notice the spurious folds and stalled branches of the sampled version where the contact opens and closes; "
-         "the exact projection has none."),
+         "Lower panels: zoom on the dashed boxes. Notice the spurious folds (22 at N = 4(2H+1), 24 at 8(2H+1) on the "
+         "mass against the wall) and the stalled branches of the sampled version where the contact opens and closes; "
+         "the exact projection has only the 2 true folds."),
         ("figM6_*.png", "supplement M6", "Gear response with too few harmonics. Notice the superharmonic resonances below the "
          "primary one, present with enough harmonics, missing with H = 1."),
         ("figM7_*.png", "supplement M7", "Hill's method truncated at H against Floquet on the Mathieu and Meissner stability "
