@@ -110,25 +110,28 @@ CHAPTERS = [
          "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
-        ("fig48_*.png", "Fig. 48", "Nodal deflections of one tooth pair loaded at contact nodes 6 and 18 (constant thickness, "
-         "300 N m). Notice the STE read at the contact nodes: 1.8764 um, the thesis' printed value."),
+        ("fig48_*.png", "Fig. 48", "Nodal deflections of one tooth pair loaded at contact nodes 6 and 18 (circled; constant "
+         "thickness, 300 N m). Notice the STE, the sum of the two teeth's deflections at the contact nodes: 1.8764 um, "
+         "the thesis' printed value (box)."),
         ("fig49_*.png", "Fig. 49", "The same with the load at nodes 7 and 17, the next contact position along the "
          "profile."),
         ("fig50_*.png", "Fig. 50", "The FE cantilever loaded at node 7 against the exact cubic elastic line. Notice the FE "
          "nodes lie on the exact line (to round-off)."),
         ("fig51_*.png", "Fig. 51", "The same loaded at node 6."),
-        ("fig52_*.png", "Fig. 52", "Two pairs in contact, nodes 2-22: the two teeth fused by a common transmission error. "
-         "Notice the load sharing makes the STE smaller than with one pair."),
-        ("fig53_*.png", "Fig. 53", "Two pairs in contact, nodes 3-21."),
-        ("fig54_*.png", "Fig. 54", "Two pairs in contact, nodes 4-20."),
-        ("fig55_*.png", "Fig. 55", "Two pairs in contact, nodes 5-19."),
+        ("fig52_*.png", "Fig. 52", "Two pairs in contact, fused node pairs 2-22 and 30-38 (circled): a common transmission "
+         "error. Notice the driving roots moved by -X_STE = -0.9155 um: load sharing halves the STE of one pair."),
+        ("fig53_*.png", "Fig. 53", "Two pairs, fused node pairs 3-21 and 31-37 (circled), the next contact position."),
+        ("fig54_*.png", "Fig. 54", "Two pairs, fused node pairs 4-20 and 32-36 (circled)."),
+        ("fig55_*.png", "Fig. 55", "Two pairs, fused node pairs 5-19 and 33-35 (circled). Notice X_STE is the same "
+         "0.9155 um at every position of the constant-thickness model."),
         ("fig56_*.png", "Fig. 56", "Bending moment along the fused 11-element beam. Notice it runs from +7.425 to -7.425 N m "
          "and is zero mid-span: the reaction moments the thesis prints."),
         ("fig57_*.png", "Fig. 57", "The involute tooth thickness and the stepped beam thickness of the 10- and 14-element "
          "models. Notice the steps approximate the involute."),
-        ("fig58_*.png", "Fig. 58", "Deformed teeth, one pair in contact, 300 N m (deflection x200)."),
-        ("fig59_*.png", "Fig. 59", "Deformed teeth, two pairs in contact, 300 N m (deflection x200). Notice each pair "
-         "carries part of the load."),
+        ("fig58_*.png", "Fig. 58", "Deformed teeth, one pair in contact at nodes 6 and 18 (circled), involute "
+         "thickness, 300 N m (deflection x200)."),
+        ("fig59_*.png", "Fig. 59", "Deformed teeth, two pairs in contact, fused nodes 2-22 and 30-38 circled, 300 N m "
+         "(deflection x200). Notice each pair carries part of the load."),
         ("fig60_*.png", "Fig. 60", "STE over the mesh cycle for 100, 200, 300 N m. Notice the jumps where the second pair "
          "enters and leaves: the single-pair zone has the largest STE."),
         ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE. Notice the mean and the first few harmonics: they are "

@@ -30,9 +30,9 @@ def read(path):
     return out
 
 
-def save(fig, fig_dir, name, made):
+def save(fig, fig_dir, name, made, rect=(0, 0, 1, 1)):
     path = os.path.join(fig_dir, name)
-    fig.tight_layout()
+    fig.tight_layout(rect=rect)
     fig.savefig(path, dpi=120)
     plt.close(fig)
     made.append(path)
@@ -47,20 +47,46 @@ def beams_of(d):
     return beams
 
 
-def deflection_figure(d, title, fig_dir, name, made, exact=None):
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+def node_pairs(nodes):
+    """'6-18' -> [(6, 18)]; '2-22_30-38' -> [(2, 22), (30, 38)]."""
+    return [tuple(int(n) for n in p.split("-")) for p in nodes.split("_")]
+
+
+def mark_contact_nodes(ax, d, pairs, fused):
+    """Hollow circles on the contact (or fused) node pairs, each pair labelled."""
+    at = {int(n): (x, w) for n, x, w in zip(d["node"], d["x_mm"], d["w_um"])}
+    for k, (a, b) in enumerate(pairs):
+        pts = [at[n] for n in (a, b) if n in at]
+        ax.plot(*zip(*pts), ls="none", marker="o", ms=11, mfc="none", mec="k", mew=1.3,
+                label=("fused node pairs (common transmission error)" if fused else "contact node pair") if k == 0
+                else None)
+        x, w = pts[-1]
+        ax.annotate("%d-%d" % (a, b), (x, w), xytext=(6, -12 if w < 0 else 6), textcoords="offset points", fontsize=8)
+    return at
+
+
+def deflection_figure(d, title, fig_dir, name, made, pairs=(), fused=False):
+    fig, ax = plt.subplots(figsize=(7.4, 5.0))
     for b, (x, w) in sorted(beams_of(d).items()):
         role = "driving" if b % 2 == 1 else "driven"
-        ax.plot(x, w, "o-", ms=4, label="beam %d (%s tooth, nodes %d-%d)" % (
-            b, role, (b - 1) * len(x) + 1, b * len(x)))
-    if exact is not None:
-        for (xe, ye, lab) in exact:
-            ax.plot(xe, ye, "k--", lw=1, label=lab)
+        nodes = [int(n) for n, bb in zip(d["node"], d["beam"]) if int(bb) == b]
+        ax.plot(x, w, "o-", ms=4, label="beam %d (%s tooth, nodes %d-%d)" % (b, role, min(nodes), max(nodes)))
+    at = mark_contact_nodes(ax, d, pairs, fused)
+    if len(pairs) == 1:   # one pair: the STE is the sum of the two teeth's deflections at the contact
+        (a, b), = pairs
+        ax.text(0.02, 0.04, "STE = |w(%d)| + |w(%d)| = %.4f + %.4f = %.4f um" % (
+            a, b, abs(at[a][1]), abs(at[b][1]), abs(at[a][1]) + abs(at[b][1])), transform=ax.transAxes, fontsize=9,
+            bbox=dict(fc="white", ec="0.6"))
+    elif pairs:           # fused pairs: the driving roots are moved by -X_STE
+        roots = [w for x, w in zip(d["x_mm"], d["w_um"]) if x == 0 and w != 0]
+        if roots:
+            ax.text(0.02, 0.96, "driving roots moved by -X_STE: X_STE = %.4f um" % abs(roots[0]),
+                    transform=ax.transAxes, fontsize=9, va="top", bbox=dict(fc="white", ec="0.6"))
     ax.axhline(0, color="grey", lw=0.5)
     ax.set_xlabel("distance from the tooth root x [mm]")
     ax.set_ylabel("transverse deflection w [um]")
     ax.set_title(title, fontsize=10)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
     ax.grid(alpha=0.3)
     save(fig, fig_dir, name, made)
 
@@ -89,7 +115,8 @@ def draw(data_dir, fig_dir):
             continue
         deflection_figure(D(r["file"]), "Fig. %d: one pair in contact, nodes %s, %s, T = %g Nm\n(both roots clamped, "
                           "force -T/r on both contact nodes)" % (fig_no, r["nodes"], thickness_text(r), r["torque_N_m"]),
-                          fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made)
+                          fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made,
+                          pairs=node_pairs(r["nodes"]))
 
     # Figs. 50-51: exact cantilever elastic line with the FE nodes of the loaded beam.
     for fig_no in (50, 51):
@@ -125,7 +152,8 @@ def draw(data_dir, fig_dir):
         deflection_figure(D(r["file"]), "Fig. %d: two pairs, nodes %s fused, %s, T = %g Nm\n"
                           "(driving roots guided and moved by -X_STE, driven roots clamped)"
                           % (fig_no, pairs, thickness_text(r).replace(" thickness", ""), r["torque_N_m"]),
-                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made)
+                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made,
+                          pairs=node_pairs(r["nodes"]), fused=True)
 
     # Fig. 56: moment along the fused beam.
     r = index[56]
@@ -176,10 +204,10 @@ def draw(data_dir, fig_dir):
             continue
         d = D(r["file"])
         title = "%s in contact (%s)" % ("one pair" if r["pairs"] == 1 else "two pairs", r["nodes"].replace("_", " and "))
-        beams = {}
-        for b, x, w, th in zip(d["beam"], d["x_mm"], d["w_um"], d["thickness_mm"]):
-            beams.setdefault(int(b), []).append((x, w, th))
-        fig, axes = plt.subplots(1, len(beams), figsize=(max(7.5, 2.4 * len(beams)), 4.4), sharey=True)
+        beams, contact = {}, {n for pair in node_pairs(r["nodes"]) for n in pair}
+        for b, n, x, w, th in zip(d["beam"], d["node"], d["x_mm"], d["w_um"], d["thickness_mm"]):
+            beams.setdefault(int(b), []).append((x, w, th, int(n)))
+        fig, axes = plt.subplots(1, len(beams), figsize=(max(7.5, 2.4 * len(beams)), 4.8), sharey=True)
         scale = 200.0  # deflection magnification
         for ax, (b, pts) in zip(axes, sorted(beams.items())):
             x = [p[0] for p in pts]
@@ -191,18 +219,25 @@ def draw(data_dir, fig_dir):
             ax.plot([wi * 1e-3 * scale - t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1,
                     label="deformed (x%d)" % scale)
             ax.plot([wi * 1e-3 * scale for wi in w], x, "C3.", ms=3)
+            hit = [(wi * 1e-3 * scale, xi, n) for xi, wi, _, n in pts if n in contact]
+            for u, xi, n in hit:
+                ax.plot([u], [xi], "o", ms=9, mfc="none", mec="k", mew=1.2,
+                        label=("contact node" if r["pairs"] == 1 else "fused contact node") if n == hit[0][2] else None)
+                ax.annotate("node %d" % n, (u, xi), xytext=(6, 4), textcoords="offset points", fontsize=7)
             ax.set_title("beam %d (%s)\nmax |w| = %.2f um" % (b, "driving" if b % 2 else "driven",
                                                                max(abs(v) for v in w)), fontsize=8)
             ax.set_xlabel("transverse position [mm]", fontsize=8)
             ax.set_xlim(-4.5, 4.5)
             ax.grid(alpha=0.3)
         axes[0].set_ylabel("height above the root [mm]")
-        axes[0].legend(fontsize=6, loc="upper left")
+        handles, labels = axes[0].get_legend_handles_labels()
+        fig.legend(handles, labels, fontsize=7, loc="lower center", ncol=3, frameon=False)   # off the teeth
         fig.suptitle("Fig. %d: deformed teeth, involute thickness, T = %g Nm, %s\n"
                      "(each tooth in its own frame; deflections magnified %d times)"
                      % (fig_no, r["torque_N_m"], title, scale),
                      fontsize=9)
-        save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made)
+        save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made,
+             rect=(0, 0.07, 1, 1))
 
     # Figs. 60/63: STE over the mesh cycle; Figs. 61/64 its Fourier coefficients.
     cases = rows(D("cases.csv"))
