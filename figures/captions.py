@@ -110,6 +110,12 @@ CHAPTERS = [
          "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
+        ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "
+         "driving roots below, driven roots above) with the contact node pairs of Figs. 48-49 and 52-55. Notice a "
+         "pair sits at one height: contact near A meets the driven tooth's tip (2-22), near C the middle (6-18)."),
+        ("fig73_*.png", "Fig. 73", "One base pitch laid along the path of contact from each end (geometry.csv): "
+         "A-A' and E'-E have two pairs in contact, A'-E' one. Notice AE/p_b = 1.7547, the contact ratio, and that "
+         "the single-pair zone around C is where chapter 9's backlash can be reached."),
         ("fig48_*.png", "Fig. 48", "Nodal deflections of one tooth pair loaded at contact nodes 6 and 18 (circled; constant "
          "thickness, 300 N m). Notice the STE, the sum of the two teeth's deflections at the contact nodes: 1.8764 um, "
          "the thesis' printed value (box)."),
@@ -182,11 +188,17 @@ NOT_COMPUTABLE = [
     ("Fig. 19", "sketch of the two-mass system"),
     ("Fig. 24", "sketch of the Comparin & Singh system"),
     ("Figs. 31-39", "sketches: tooth profile, line of action, pressure angle, gear-pair reference frames, forces and displacements"),
-    ("Figs. 46-47", "sketches of the tooth model (teeth as beams and as springs)"),
-    ("Fig. 65", "sketch of the limit positions for the angle of the tooth axis"),
+    ("Fig. 47", "sketch of the teeth as springs in series and in parallel (Fig. 46 is drawn from the model's nodes: "
+     "fig46_four_beam_model.png)"),
+    ("Fig. 65", "the limit positions of the tooth axis: a geometric construction from beta and epsilon "
+     "(ch07 tooth_axis_angles.csv has the angles); not drawn yet"),
     ("Fig. 66", "sketch of the 1-DOF gear model (after Ozguven & Houser)"),
     ("Fig. 68", "mesh stiffness found by Parker, Vijayakar & Imajo (2000): their data are not available"),
     ("Figs. 71-72, 83-84", "comparisons with the FE and experimental curves of Parker, Vijayakar & Imajo (2000): not available; our curves are drawn alone"),
-    ("Figs. 73-76", "sketches of the base pitch along the line of action and of the backlash geometry"),
+    ("Fig. 74", "sketch of the normal and nominal directions (Fig. 73 is drawn from geometry.csv: "
+     "fig73_base_pitch.png)"),
+    ("Fig. 76", "a contact condition taken from the thesis' reference [27] (another source)"),
+    ("Fig. 75", "the limit condition for the normal backlash: a construction from epsilon, epsilon' and mu "
+     "(ch09 backlash_geometry.csv has them); not drawn yet"),
     ("Parker's curves in Figs. 60 and 79", "not available: our STE and coefficients are drawn alone, nothing in their place"),
 ]

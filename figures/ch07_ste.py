@@ -14,7 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from style import read_params, torque_colour  # noqa: E402
+from style import COMPARISON_COLOURS, read_params, torque_colour  # noqa: E402
 
 
 def read(path):
@@ -337,4 +337,86 @@ def draw(data_dir, fig_dir):
     ax1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
     ax1.grid(alpha=0.3)
     save(fig, fig_dir, "ch07_extra_convergence.png", made)
+    four_beam_model(D, index, fig_dir, made)
+    base_pitch_figure(D("geometry.csv"), fig_dir, made)
     return made
+
+
+def four_beam_model(D, index, fig_dir, made):
+    """Fig. 46: the four beams of the 10-element model (two tooth pairs), nodes numbered, the
+    contact node pairs of every position the thesis lists (deflection_cases.csv). Node heights
+    from the run's deflection files; a driven tooth hangs from its root above, so a contact pair
+    (i, j) is at one height: x_i + x_j is the same for every pair (the beams' common span)."""
+    two = D(index[52]["file"])
+    x = {int(n): v for n, v in zip(two["node"], two["x_mm"])}
+    beam = {int(n): int(b) for n, b in zip(two["node"], two["beam"])}
+    cases = sorted((r for r in index.values() if r["file"].startswith("deflection_") and r["thickness"] == "constant"),
+                   key=lambda r: r["figure"])
+    a0, b0 = node_pairs(cases[0]["nodes"])[0]
+    span = x[a0] + x[b0]
+    column = {1: 0.0, 2: 1.0, 3: 3.2, 4: 4.2}
+
+    def height(n):
+        return x[n] if beam[n] % 2 else span - x[n]
+
+    fig, ax = plt.subplots(figsize=(8.6, 6.4))
+    for b, cx in column.items():
+        nodes = sorted(n for n in beam if beam[n] == b)
+        ax.plot([cx] * len(nodes), [height(n) for n in nodes], "-o", color="0.3", ms=4, lw=2)
+        for n in nodes:
+            ax.annotate("%d" % n, (cx, height(n)), xytext=(-20 if b % 2 else 8, -3), textcoords="offset points",
+                        fontsize=7)
+        root = height(nodes[0])
+        ax.plot([cx - 0.1, cx + 0.1], [root, root], color="k", lw=3)
+        ax.annotate("root (%s)" % ("driving tooth, clamped; guided with two pairs" if b % 2 else
+                                   "driven tooth, clamped"), (cx, root), xytext=(0, -14 if b % 2 else 8),
+                    textcoords="offset points", ha="center", fontsize=7)
+        ax.text(cx, span + 1.0, "beam %d" % b, ha="center", fontsize=8)
+    for k, r in enumerate(cases):
+        col = COMPARISON_COLOURS[k % len(COMPARISON_COLOURS)]
+        for a, b in node_pairs(r["nodes"]):
+            xa, xb = column[beam[a]], column[beam[b]]
+            ax.plot([xa, xb], [height(a)] * 2, color=col, lw=1.6, ls="--")
+        ax.plot([], [], color=col, ls="--", label="Fig. %d: %s" % (int(r["figure"]), r["nodes"].replace("_", " and ")))
+    ax.set_xlim(-1.2, 6.8)
+    ax.set_ylim(-1.2, span + 1.6)
+    ax.set_xticks([])
+    ax.set_ylabel("height along the tooth [mm] (driving root at 0)")
+    ax.set_title("Fig. 46: the four-beam tooth model (10 elements per tooth, nodes 1-%d) and the contact node\n"
+                 "pairs along the path of contact (one pair: 6-18, 7-17; two pairs: the fused pairs)" % max(beam),
+                 fontsize=9)
+    ax.legend(fontsize=7, loc="upper right", title="contact node pairs (dashed)", title_fontsize=7)
+    ax.grid(alpha=0.2)
+    save(fig, fig_dir, "fig46_four_beam_model.png", made)
+
+
+def base_pitch_figure(g, fig_dir, made):
+    """Fig. 73: the path of contact A-E with the pitch point C and one base pitch laid from each
+    end: two pairs in contact on A-A' and E'-E, one pair on A'-E' (geometry.csv, mm)."""
+    v = {q: val * 1e3 for q, val in zip(g["quantity"], g["value"]) if g["unit"][g["quantity"].index(q)] == "m"}
+    pb, AC, AE = v["base_pitch"], v["AC"], v["AE"]
+    pts = {"A": 0.0, "A'": AE - pb, "C": AC, "E'": pb, "E": AE}
+    fig, ax = plt.subplots(figsize=(8.4, 3.6))
+    ax.plot([0, AE], [0, 0], color="k", lw=2)
+    two, one = COMPARISON_COLOURS[0], COMPARISON_COLOURS[1]
+    ax.axvspan(0, AE - pb, ymin=0.45, ymax=0.62, color=two, alpha=0.25, lw=0, label="two pairs in contact")
+    ax.axvspan(pb, AE, ymin=0.45, ymax=0.62, color=two, alpha=0.25, lw=0)
+    ax.axvspan(AE - pb, pb, ymin=0.45, ymax=0.62, color=one, alpha=0.3, lw=0, label="one pair in contact (A'-E')")
+    for k, (name, s) in enumerate(pts.items()):
+        ax.plot([s], [0], "ko", ms=5)
+        ax.annotate(name, (s, 0), xytext=(0, 8), textcoords="offset points", ha="center", fontsize=10,
+                    fontweight="bold")
+        ax.annotate("%.3f" % s, (s, 0), xytext=(0, -14 if k % 2 == 0 else -26), textcoords="offset points",
+                    ha="center", fontsize=8)
+    for y, (s0, s1) in ((-0.55, (0.0, pb)), (-0.85, (AE - pb, AE))):
+        ax.annotate("", (s1, y), (s0, y), arrowprops=dict(arrowstyle="<->", lw=1))
+        ax.text((s0 + s1) / 2, y + 0.05, "base pitch p_b = %.3f mm" % pb, ha="center", va="bottom", fontsize=8)
+    ax.set_ylim(-1.1, 1.0)
+    ax.set_xlim(-1.0, AE + 1.0)
+    ax.set_yticks([])
+    ax.set_xlabel("position along the path of contact from A [mm] (AE = %.3f mm, contact ratio AE/p_b = %.4f)"
+                  % (AE, AE / pb))
+    ax.set_title("Fig. 73: one base pitch laid along the path of contact A-E (thesis gears, geometry.csv)",
+                 fontsize=9)
+    ax.legend(fontsize=8, loc="upper right")
+    save(fig, fig_dir, "fig73_base_pitch.png", made)
