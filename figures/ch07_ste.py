@@ -268,7 +268,7 @@ def draw(data_dir, fig_dir):
                      "(Parker, Vijayakar & Imajo's curve of the thesis figure: data not available)"
                      % (fig_ste, label), fontsize=9)
         ax.set_xlim(0, 1)
-        ax.legend(fontsize=8, loc="center left")
+        ax.legend(fontsize=8, loc="upper left")   # above the two-pair zone, clear of the curves
         ax.grid(alpha=0.3)
         save(fig, fig_dir, "fig%d_ste_mesh_cycle%s.png" % (fig_ste, "" if fig_ste == 60 else "_14_nodes"), made)
 
