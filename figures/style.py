@@ -170,7 +170,10 @@ def rug_room(ax, rows=1):
         llo, lhi = math.log10(lo), math.log10(hi)
         ax.set_ylim(10 ** ((llo - frac * lhi) / (1 - frac)), hi)
     else:
+        ticks = [t for t in ax.get_yticks() if lo - 1e-12 * abs(hi - lo) <= t <= hi]
         ax.set_ylim((lo - frac * hi) / (1 - frac), hi)
+        if lo == 0:   # a quantity that is never negative (an RMS): no tick below 0 beside the rug
+            ax.set_yticks(ticks)
 
 
 def legend_styles(ax=None):
