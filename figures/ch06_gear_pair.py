@@ -39,7 +39,8 @@ def mark_bifurcations(ax, data_dir, label, d):
 
 def fold_window(data_dir, label, span):
     """The first cluster of folds (neighbours closer than FOLD_CLUSTER_GAP), widened by a quarter
-    of its width each side, in krad/s; None without folds."""
+    of its width each side, in krad/s; None unless the cluster is a crowd (3 folds or more): a
+    lone fold reads well at full scale."""
     b = read_csv(data_dir / ("bifurcations_%s.csv" % label))
     folds = sorted(w for t, w in zip(b["type"], b["omega"]) if t == "fold")
     if not folds:
@@ -49,6 +50,8 @@ def fold_window(data_dir, label, span):
         if w - cluster[-1] > FOLD_CLUSTER_GAP:
             break
         cluster.append(w)
+    if len(cluster) < 3:
+        return None
     lo, hi = cluster[0], cluster[-1]
     pad = max(0.25 * (hi - lo), 0.01 * span)
     return (lo - pad) / 1e3, (hi + pad) / 1e3
@@ -108,7 +111,7 @@ def case_figure(data_dir, fig_dir, row, name):
         mark_bilinear_dip(a1, d, w_open, w_closed)
     what = "Fig. %d" % int(row["figure"]) if mesh == "kc" else \
         "Supplement S%d (Fig. %d's loads with the printed kc)" % (int(row["figure"]), int(row["figure"]))
-    a1.set_title("%s: $F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
+    a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
                  % (what, row["Fi"], row["Fa"], row["kc"]), fontsize=9)
     if zoom:
         az = axes[1]
