@@ -7,7 +7,8 @@
 At the top: a table from thesis figure number to image. Then, per chapter: every figure
 with its thesis figure number and its own caption (what it shows, what to notice:
 figures/captions.py); the chapter's key numbers, each with three things:
-  - the thesis value (or "not printed": chapters 2-6 of the thesis print figures, not numbers),
+  - the thesis value (or "not printed": chapters 2-6 of the thesis print figures, not numbers;
+    a claim in words, the reference's "thesis_text", is shown and marked as differing),
   - ours (this run, build/data/<chapter>/key_numbers.json),
   - the verdict of the independent check (reference/<chapter>.json: a closed form, a second
     method, an independent script), and, where ours and the thesis differ beyond the thesis'
@@ -119,6 +120,8 @@ def verdict(r, ours):
 def thesis_against_ours(r, ours, factor, unit):
     """(thesis cell, comparison cell) for one number."""
     thesis, note = r.get("thesis_value"), r.get("note", "")
+    if thesis is None and r.get("thesis_text"):   # a claim in words, which ours contradicts (the note says how)
+        return "<i>%s</i>" % html.escape(r["thesis_text"]), "<span class='differs'>differs</span>. %s" % html.escape(note)
     if thesis is None:
         return "<span class='none'>not printed</span>", html.escape(note)
     cell = with_unit(("%g" % (thesis * factor)), unit)
