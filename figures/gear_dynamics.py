@@ -90,12 +90,12 @@ def campbell_figure(d_dir, params, kn, torques, frc):
     modes = read_csv(d_dir / "modes.csv")
     z1 = params["gears"][0]["z"]
     n_max = max(max(d["speed_rpm"]) for d in frc)
-    fig, ax = plt.subplots(figsize=(7.2, 4.6))
+    fig, ax = plt.subplots(figsize=(7.2, 5.4))
     for k in range(1, 5):
         ax.plot([0, n_max], [0, k * z1 * n_max / 60.0], color="0.3", lw=1)
         f_top = 1.8 * max(modes["f_hz"])
-        n_end = min(n_max, 60.0 * f_top / (k * z1))
-        ax.text(n_end, k * z1 * n_end / 60.0, " %d x mesh" % k, fontsize=7, va="bottom")
+        n_end = min(n_max, 60.0 * (1.02 - 0.08 * k) * f_top / (k * z1))   # inside the axes, staggered
+        ax.text(n_end, k * z1 * n_end / 60.0, "%d x mesh " % k, fontsize=7, va="top", ha="right")
     for i, T in enumerate(torques):
         f = [modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
         for j, fj in enumerate(f):
@@ -110,7 +110,7 @@ def campbell_figure(d_dir, params, kn, torques, frc):
     ax.set_ylabel("frequency [Hz]")
     ax.set_title("%s\nCampbell diagram: mesh orders against the mesh natural frequencies" % params.get("name", ""),
                  fontsize=8)
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)   # off the orders
     save(fig, d_dir / "campbell.png")
 
 
