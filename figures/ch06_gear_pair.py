@@ -3,9 +3,12 @@
 Every curve of the run's case table (cases.csv) becomes one figure; titles come from
 the table (figure, Fi, Fa, kc). Plotted coordinate: the mesh deflection Delta = T2 q.
 Upper panel: Delta_max and Delta_min over a period with the contact level Delta = 0
-(teeth touch where Delta > 0) and the bifurcations found on the curve. Lower panel:
-the oscillating amplitude (Delta_max - Delta_min)/2 beside the linear open /
-closed-mesh amplitudes. Dotted verticals: linear natural frequencies.
+(teeth touch where Delta > 0) and the bifurcations found on the curve; where three or
+more folds crowd together, a middle panel zooms on them. Lower panel: the oscillating
+amplitude (Delta_max - Delta_min)/2 beside the linear open / closed-mesh amplitudes.
+Dotted verticals: linear natural frequencies; the rug at the bottom: the contact state
+(figures/style.py). The deepest Delta_min off every natural frequency is pointed at as the
+mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
                    NATURAL_OPEN, bifurcation_handles, case_rows, contact_rug, legend_styles, plot_branch, read_csv,
