@@ -11,7 +11,6 @@ Everything (titles, parameters) comes from the run's files.
 """
 import json
 
-
 import ch08_gear_response as ch08
 from style import (COMPARISON_COLOURS, case_rows, flickering_stability, plot_branch, plt, read_csv, read_params, save,
                    unresolved_handle)
