@@ -4,88 +4,180 @@ what it shows and what to notice. Plus the thesis figures that cannot be compute
 
 CHAPTERS = [
     {"program": "ch02_methods", "title": "Chapter 2: the method, speed against accuracy, and where each method fails", "figures": [
-        ("figM1_*.png", "supplement", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
-         "rkf45 sweeps); hollow circles: a stable solution missed."),
-        ("figM2_*.png", "supplement", "CPU time of one Newton step against n(2H+1), with the (n(2H+1))^3 model of the LU."),
-        ("figM3_*.png", "supplement", "Natural continuation stops at the first fold; arc length goes round it."),
-        ("figM4_*.png", "supplement", "Time-integration sweeps up and down jump at the folds and never see the unstable branch."),
-        ("figM5_*.png", "supplement", "Sampled AFT: spurious folds and stalled branches at contact; the exact projection has none."),
-        ("figM6_*.png", "supplement", "Too few harmonics: the gear's superharmonic resonances disappear."),
-        ("figM7_*.png", "supplement", "Hill truncated at H against Floquet on the Mathieu and Meissner stability charts."),
-        ("figM8_*.png", "supplement", "Arc length without scaling on the micrometre gear problem: stuck near the start."),
-        ("figM9_*.png", "supplement", "Grazing: each method's error as the contact interval shrinks to zero."),
+        ("figM1_*.png", "supplement M1", "Error of x_max against CPU time per method and scene (HB exact/stepped/sampled, GSL rk8pd and "
+         "rkf45 sweeps). Notice that HB reaches a given error 10-1000x faster than the time-integration sweeps; hollow "
+         "circles: a stable solution the method missed."),
+        ("figM2_*.png", "supplement M2", "CPU time of one Newton step against the size n(2H+1) of the unknowns. Notice the measured "
+         "times follow the (n(2H+1))^3 growth of the LU only for the largest systems; below, fixed costs dominate."),
+        ("figM3_*.png", "supplement M3", "Natural continuation (frequency as parameter) against pseudo-arc-length on the same curve. "
+         "Notice where natural continuation stops: at the first fold, where the branch turns back; arc length goes round it."),
+        ("figM4_*.png", "supplement M4", "Time-integration sweeps up and down in frequency against the HB branch. Notice the jumps "
+         "at the two folds (hysteresis): a sweep never sees the unstable middle branch."),
+        ("figM5_*.png", "supplement M5", "Classic sampled AFT (contact force sampled at N times) against the exact projection. "
+         "Lower panels: zoom on the dashed boxes. Notice the spurious folds (22 at N = 4(2H+1), 24 at 8(2H+1) on the "
+         "mass against the wall) and the stalled branches of the sampled version where the contact opens and closes; "
+         "the exact projection has only the 2 true folds."),
+        ("figM6_*.png", "supplement M6", "Gear response with too few harmonics. Notice the superharmonic resonances below the "
+         "primary one, present with enough harmonics, missing with H = 1."),
+        ("figM7_*.png", "supplement M7", "Hill's method truncated at H against Floquet on the Mathieu and Meissner stability "
+         "charts. Notice where the truncated Hill tongues depart from the Floquet boundaries (large q, few harmonics)."),
+        ("figM8_*.png", "supplement M8", "Arc length without scaling on the micrometre gear problem. Notice it stays stuck near "
+         "the start: displacements of 1e-6 m beside frequencies of 1e3 rad/s make the arc-length step meaningless."),
+        ("figM9_*.png", "supplement M9", "Grazing: each method's error as the contact interval shrinks to zero. Notice which "
+         "methods keep their accuracy at grazing and which lose it."),
     ]},
     {"program": "ch03_mass_wall", "title": "Chapter 3: a mass against a wall", "figures": [
-        ("fig07_*.png", "Fig. 7", "Linear frequency response with the contact open (spring k) and closed (k + kc): "
-         "the two resonances, 1 and sqrt(2) rad/s, between which the contact curves live."),
+        ("fig07_*.png", "Fig. 7", "Linear frequency response with the contact open (spring k) and closed (k + kc). "
+         "Notice the two resonances, 1 and sqrt(2) rad/s: every contact curve of this chapter lives between them."),
         ("fig08_*.png", "Fig. 8", "The contact law max(N0 + kc x0 cos theta, 0) over one cycle for a preload that keeps "
-         "contact, one that loses it for part of the cycle, and a gap never closed: the force is clipped, not negative."),
-        ("fig09_*.png", "Fig. 9", "Two clearances: g = -1.2 m is never reached (the linear curve); g = -0.6 m bends the "
-         "resonance to the right (hardening) with two folds and an unstable (dashed) middle branch."),
-        ("fig10_*.png", "Fig. 10", "Two preloads: the mass starts in contact; where the vibration exceeds the static "
-         "penetration it separates and the resonance bends to the left (softening). Notice x_min leaving the wall level."),
-        ("fig11_*.png", "Fig. 11", "The same gap with two forcing amplitudes: the small force never reaches the wall, "
-         "the larger one does. Nonlinearity depends on amplitude."),
-        ("fig12_*.png", "Fig. 12", "A larger force makes the far wall (g = -1.2 m) reachable: the overhang appears."),
-        ("fig1[345]_*.png", "Figs. 13-15", "With a static force F0 the mass sits 1 m off centre: the curve with the current "
-         "point, beside x(t) there, before, during and after contact (points chosen by a stated rule)."),
-        ("fig1[678]_*.png", "Figs. 16-18", "Starting in contact (g = -0.5 m, F0 = 1 N) and separating near resonance."),
-        ("figS1_*.png", "supplement", "Folds found with the classic sampled AFT against the number of time samples: spurious "
-         "micro-folds, against the 2 true ones that the exact projection finds at any N."),
+         "contact, one that loses it for part of the cycle, and a gap never closed. Notice the force is clipped at zero, "
+         "never negative."),
+        ("fig09_*.png", "Fig. 9", "Two clearances. Notice g = -1.2 m is never reached (the curve stays linear) while "
+         "g = -0.6 m bends the resonance to the right (hardening): two folds and an unstable (dashed) middle branch."),
+        ("fig10_*.png", "Fig. 10", "Two preloads: the mass starts in contact. Notice x_min leaving the wall level near "
+         "resonance: the mass separates and the resonance bends to the left (softening). The thesis' g = 1 m curve stays in "
+         "full contact; ours separates because the static term is kept (chapter README)."),
+        ("fig11_*.png", "Fig. 11", "The same gap (g = -0.6 m) with two forcing amplitudes. Notice the small force never "
+         "reaches the wall and the larger one does: the nonlinearity depends on the amplitude."),
+        ("fig12_*.png", "Fig. 12", "A larger force makes the far wall (g = -1.2 m) reachable. Notice the overhang appear "
+         "only for F = 0.03 N."),
+        ("fig13_*.png", "Fig. 13", "Static force F0 = 1 N, gap g = -1.5 m. Point A: 0.02 rad/s before the contact state first "
+         "changes. Notice x(t) stays above the wall: an open-contact (linear) orbit."),
+        ("fig14_*.png", "Fig. 14", "The same curve at point B, the largest response. Notice x(t) passes the wall every "
+         "cycle: the contact closes for part of the period and the orbit is no longer a sine."),
+        ("fig15_*.png", "Fig. 15", "The same curve at point C, 0.05 rad/s after the last change of contact state. Notice "
+         "the orbit is back above the wall: open again."),
+        ("fig16_*.png", "Fig. 16", "Starting in contact (g = -0.5 m, F0 = 1 N), point A before separation. Notice x(t) "
+         "stays in contact: the amplitude is not enough to leave the wall."),
+        ("fig17_*.png", "Fig. 17", "The same curve at point B, the largest response. Notice the mass leaves the wall for "
+         "part of the cycle. Left panel: x_min crosses the wall level between 1.28 and 1.42 rad/s (the separation)."),
+        ("fig18_*.png", "Fig. 18", "The same curve at point C, after the last change. Notice the orbit is in full contact "
+         "again."),
+        ("figS1_*.png", "supplement S1", "Folds found with the classic sampled AFT against the number of time samples. "
+         "Notice the spurious micro-folds at small N, against the 2 true folds that the exact projection finds at any N."),
     ]},
     {"program": "ch04_two_masses", "title": "Chapter 4: two masses with contact between them", "figures": [
-        ("fig2[0-3]_*.png", "Figs. 20-23", "Relative displacement d = x1 - x2 (left, with the contact level -g) and each mass's "
-         "amplitude (right) for g = -0.5, -0.005, 0.15, 0.6 m: never in contact, intermittent (two folds), always in contact."),
+        ("fig20_*.png", "Fig. 20", "g = -0.5 m: left, relative displacement d = x1 - x2 with the contact level -g; right, each "
+         "mass's amplitude. Notice the contact level is far away: never in contact, the linear open response."),
+        ("fig21_*.png", "Fig. 21", "g = -0.005 m. Notice d_max reaches the contact level from 2.00125 rad/s and the "
+         "resonance bends right (hardening): two folds, unstable middle branch. The right panel shows the masses' "
+         "amplitudes on the same (contact) branch."),
+        ("fig22_*.png", "Fig. 22", "g = 0.15 m (preloaded). Notice d never reaches the separation level: always in contact, "
+         "the linear closed response with the anti-phase resonance at 3 rad/s."),
+        ("fig23_*.png", "Fig. 23", "g = 0.6 m: the same with a larger preload (penetration 0.333 m). Notice the curve is the "
+         "closed linear response, shifted."),
     ]},
     {"program": "ch05_comparin_singh", "title": "Chapter 5: the Comparin & Singh impact pair", "figures": [
-        ("fig2[5-9]_*.png", "Figs. 25-29", "Frequency responses for the thesis' (Fm, Fp, g) cases; the title states the regime "
-         "predicted by the analytic criteria, the curve the harmonic-balance result; the shaded band is the predicted "
-         "intermittent range."),
-        ("fig30_*.png", "Fig. 30", "The last pair of the thesis' cases."),
-        ("figS2_*.png", "supplement", "The rebuilt regime classifier against every harmonic-balance solution of a 1200-point grid."),
+        ("fig25_*.png", "Fig. 25", "Fm = 4.1 N, Fp = 0.05 N, g = -20 and -15 m. Notice the two curves coincide: both gaps "
+         "are never reached (type 1, as the classifier predicts)."),
+        ("fig26_*.png", "Fig. 26", "Fm = 4.1 N, Fp = 0.05 N, g = -1 and 6 m. Notice, in the zoom, the g = -1 m branch leave "
+         "full contact at 1.41145 rad/s and fold back (softening): intermittent solutions also exist below the predicted "
+         "(grey) band."),
+        ("fig27_*.png", "Fig. 27", "Fp doubled to 0.1 N, g = -20 and -30 m. Notice both stay linear (type 1): the gaps are "
+         "far larger than the vibration."),
+        ("fig28_*.png", "Fig. 28", "Fp = 0.1 N, g = 6 and 20 m (preloaded). Notice both stay in full contact (type 2): the "
+         "closed linear response."),
+        ("fig29_*.png", "Fig. 29", "Fm = 2.1 N, Fp = 0.05 N, g = -15 and -8 m. Notice both stay linear (type 1): halving the "
+         "mean force does not bring the gap within reach."),
+        ("fig30_*.png", "Fig. 30", "Fm = 2.1 N, Fp = 0.05 N, g = 6 and 10 m. Notice both stay in full contact (type 2): with "
+         "our reading of the model 11 of the 12 thesis cases are linear; only g = -1 m (Fig. 26) loses contact."),
+        ("figS2_*.png", "supplement S2", "The rebuilt regime classifier against every harmonic-balance solution of a "
+         "1200-point grid. Notice there is no disagreement."),
     ]},
     {"program": "ch06_gear_pair", "title": "Chapter 6: a 6-DOF spur-gear pair with external forcing", "figures": [
-        ("fig4[0-5]_*.png", "Figs. 40-45", "Mesh deflection Delta against forcing frequency for the thesis' static and "
-         "harmonic loads (kc = 5e8 N/m): dashed where unstable; where the mesh opens the curves bend and fold."),
-        ("figS4[0-5]_*.png", "supplement", "The same with the printed kc = 5e2 N/m (kc_alt): every curve is the linear open response "
-         "shifted, which is why 5e8 is the default (chapter README)."),
-        ("figS46_*.png", "supplement", "Beyond Fig. 43's first period doubling: time integration settles on an orbit that "
-         "repeats after two forcing periods, not one; the dashed curve is the unstable period-1 orbit of harmonic balance."),
+        ("fig40_*.png", "Fig. 40", "Fi = 1e5 (static) with harmonic forcing, kc = 5e8 N/m: Delta_max and Delta_min (top), "
+         "oscillating amplitude (bottom), a zoom on the folds (middle). Notice the mesh opens at 7638 rad/s, the fold "
+         "pairs and bifurcations at 7-12 krad/s (zoom), and the deep Delta_min dip at 22.2 krad/s on no natural-frequency "
+         "line: the bilinear mode of the mesh (closed-mesh mode 5 while in contact, free gears while apart; README)."),
+        ("fig41_*.png", "Fig. 41", "Fi = 1e7. Notice full contact everywhere except two narrow windows: 13.53-13.87 krad/s "
+         "(four folds, near the closed-mesh mode 13.69 krad/s; middle panel: zoom) and near 47 krad/s. The thesis says it stays in full "
+         "contact (chapter README)."),
+        ("fig42_*.png", "Fig. 42", "Fi = -1e8: the static load pulls the teeth apart. Notice the mesh never closes: the "
+         "open linear response."),
+        ("fig43_*.png", "Fig. 43", "Fi = -1e6. Notice the first touch at 10716 rad/s, then a hardening band up to the fold "
+         "at 21718 rad/s (towards the mesh's bilinear mode, 22.18 krad/s: README) with period doublings and "
+         "Neimark-Sacker points on it."),
+        ("fig44_*.png", "Fig. 44", "Fi = 1e7 with 100x the harmonic forcing. Notice it is Fig. 40 multiplied by 100 "
+         "(the contact law with zero gap is positively homogeneous; only Fi/Fa matters): the same folds (zoom) and "
+         "the same bilinear-mode dip at 22.2 krad/s, now -388 mm."),
+        ("fig45_*.png", "Fig. 45", "Fi = -1e8 with 100x the harmonic forcing. Notice it is Fig. 43 multiplied by 100."),
+    ] + [("figS%d_*.png" % n, "supplement S%d" % n, "Fig. %d's case (%s) with the printed kc = 5e2 N/m (kc_alt). "
+           "Notice the curve is the linear open response shifted: a 5e2 N/m contact does nothing, which is why 5e8 is "
+           "the default (chapter README)." % (n, load))
+         for n, load in ((40, "Fi = 1e5"), (41, "Fi = 1e7"), (42, "Fi = -1e8"), (43, "Fi = -1e6"),
+                         (44, "Fi = 1e7, 100x forcing"), (45, "Fi = -1e8, 100x forcing"))] + [
+        ("figS46_*.png", "supplement S46", "Beyond Fig. 43's first period doubling. Notice the time-integrated orbit "
+         "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
-        ("fig4[89]_*.png", "Figs. 48-49", "Deflection of one tooth pair loaded at two contact node pairs (constant thickness)."),
-        ("fig5[01]_*.png", "Figs. 50-51", "The FE cantilever against the exact cubic deflection."),
-        ("fig5[2-5]_*.png", "Figs. 52-55", "Two pairs in contact: the load shared by the constraint of a common transmission error."),
-        ("fig56_*.png", "Fig. 56", "Bending moment of the fused beams."),
-        ("fig57_*.png", "Fig. 57", "The involute tooth thickness used by the variable-thickness model."),
-        ("fig5[89]_*.png", "Figs. 58-59", "Deformed teeth, one and two pairs in contact."),
-        ("fig60_*.png", "Fig. 60", "STE over the mesh cycle for 100, 200, 300 N m: jumps where the second pair enters."),
-        ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE: the excitation of chapter 8."),
-        ("fig6[2-4]_*.png", "Figs. 62-64", "The refined 14-node model and its STE and coefficients."),
-        ("ch07_extra_*.png", "supplement", "Convergence of the STE beyond 14 nodes."),
+        ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "
+         "driving roots below, driven roots above) with the contact node pairs of Figs. 48-49 and 52-55. Notice a "
+         "pair sits at one height: contact near A meets the driven tooth's tip (2-22), near C the middle (6-18)."),
+        ("fig73_*.png", "Fig. 73", "One base pitch laid along the path of contact from each end (geometry.csv): "
+         "A-A' and E'-E have two pairs in contact, A'-E' one. Notice AE/p_b = 1.7547, the contact ratio, and that "
+         "the single-pair zone around C is where chapter 9's backlash can be reached."),
+        ("fig48_*.png", "Fig. 48", "Nodal deflections of one tooth pair loaded at contact nodes 6 and 18 (circled; constant "
+         "thickness, 300 N m). Notice the STE, the sum of the two teeth's deflections at the contact nodes: 1.8764 um, "
+         "the thesis' printed value (box)."),
+        ("fig49_*.png", "Fig. 49", "The same with the load at nodes 7 and 17, the next contact position along the "
+         "profile."),
+        ("fig50_*.png", "Fig. 50", "The FE cantilever loaded at node 7 against the exact cubic elastic line. Notice the FE "
+         "nodes lie on the exact line (to round-off)."),
+        ("fig51_*.png", "Fig. 51", "The same loaded at node 6."),
+        ("fig52_*.png", "Fig. 52", "Two pairs in contact, fused node pairs 2-22 and 30-38 (circled): a common transmission "
+         "error. Notice the driving roots moved by -X_STE = -0.9155 um: load sharing halves the STE of one pair."),
+        ("fig53_*.png", "Fig. 53", "Two pairs, fused node pairs 3-21 and 31-37 (circled), the next contact position."),
+        ("fig54_*.png", "Fig. 54", "Two pairs, fused node pairs 4-20 and 32-36 (circled)."),
+        ("fig55_*.png", "Fig. 55", "Two pairs, fused node pairs 5-19 and 33-35 (circled). Notice X_STE is the same "
+         "0.9155 um at every position of the constant-thickness model."),
+        ("fig56_*.png", "Fig. 56", "Bending moment along the fused 11-element beam. Notice it runs from +7.425 to -7.425 N m "
+         "and is zero mid-span: the reaction moments the thesis prints."),
+        ("fig57_*.png", "Fig. 57", "The involute tooth thickness and the stepped beam thickness of the 10- and 14-element "
+         "models. Notice the steps approximate the involute."),
+        ("fig58_*.png", "Fig. 58", "Deformed teeth, one pair in contact at nodes 6 and 18 (circled), involute "
+         "thickness, 300 N m (deflection x200)."),
+        ("fig59_*.png", "Fig. 59", "Deformed teeth, two pairs in contact, fused nodes 2-22 and 30-38 circled, 300 N m "
+         "(deflection x200). Notice each pair carries part of the load."),
+        ("fig60_*.png", "Fig. 60", "STE over the mesh cycle for 100, 200, 300 N m. Notice the jumps where the second pair "
+         "enters and leaves: the single-pair zone has the largest STE."),
+        ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE. Notice the mean and the first few harmonics: they are "
+         "the excitation of chapter 8."),
+        ("fig62_*.png", "Fig. 62", "The refined 14-element model with its contact node pairs."),
+        ("fig63_*.png", "Fig. 63", "STE of the 14-element model. Notice its maximum at 300 N m, 13.753 um, 0.12 % below the "
+         "thesis' 13.77 um (key numbers below)."),
+        ("fig64_*.png", "Fig. 64", "Fourier coefficients of the 14-element STE."),
+        ("ch07_extra_*.png", "supplement", "Max STE and mean stiffness for P = 8 ... 64 contact positions. Notice how much "
+         "the 14-node values still change as positions are added."),
     ]},
     {"program": "ch08_gear_response", "title": "Chapter 8: the gear driven by its own static transmission error", "figures": [
-        ("fig67_*.png", "Fig. 67", "Mesh stiffness k(t) = F0/e(t) over one mesh cycle for 100, 200, 300 N m with its mean kc: "
-         "the jumps are the second tooth pair entering and leaving."),
-        ("fig69_*.png", "Fig. 69", "RMS of the oscillating dynamic transmission error against mesh frequency, one harmonic, three "
-         "torques and the linear closed-contact curve: contact is lost near resonance for every torque (the overhang)."),
-        ("fig70_*.png", "Fig. 70", "The same with five harmonics: superharmonic resonances appear below the primary one."),
-        ("fig70s_time*.png", "supplement", "x(t) and the contact force over two mesh periods at a contact-loss point."),
-        ("fig70s_H*.png", "supplement", "Convergence in H of the 300 N m curve (H = 1, 5, 10, 20): 5 harmonics are not "
-         "converged at the peak (2.8 % below H = 20), see the chapter README."),
+        ("fig67_*.png", "Fig. 67", "Mesh stiffness k(t) = F0/e(t) over one mesh cycle for 100, 200, 300 N m with its mean kc. "
+         "Notice the jumps: the second tooth pair entering and leaving."),
+        ("fig69_*.png", "Fig. 69", "RMS of the oscillating dynamic transmission error against mesh frequency, one harmonic, "
+         "three torques and the linear closed-contact curve. Notice contact is lost near resonance for every torque "
+         "(the overhang)."),
+        ("fig70_*.png", "Fig. 70", "The same with five harmonics. Notice the superharmonic resonances below the primary "
+         "one and the higher peak (H = 5 is not converged: see fig70s_H_convergence)."),
+        ("fig70s_time*.png", "supplement", "x(t) and the contact force over two mesh periods at a contact-loss point. "
+         "Notice the force is zero while the mesh is open."),
+        ("fig70s_H*.png", "supplement", "Convergence in H of the 300 N m curve (H = 1, 5, 10, 20). Notice 5 harmonics are "
+         "not converged at the peak (2.8 % below H = 20), see the chapter README."),
         ("fig70s_param*.png", "supplement", "The 300 N m curve of the thesis' constant-stiffness model and of the "
-         "parametric model it approximates (k(t) = F0/e(t)), see the chapter README."),
+         "parametric model it approximates (k(t) = F0/e(t)). Notice where they differ (chapter README)."),
     ]},
     {"program": "ch09_backlash", "title": "Chapter 9: backlash limits the STE at high torque", "figures": [
-        ("fig77_*.png", "Fig. 77", "STE over one mesh cycle with backlash (clip and adjacent-pair spring) and without, 100/200/300 N m: "
-         "only 300 N m reaches the local normal backlash, near the ends of the single-pair zone."),
-        ("fig77s_*.png", "supplement", "The local normal backlash b cos(mu) along the single-pair zone against the 300 N m STE."),
-        ("fig78_*.png", "Fig. 78", "Fourier coefficients of the STE with and without backlash: only 300 N m changes, by a few per cent."),
-        ("fig79_*.png", "Fig. 79", "Our STE coefficients with backlash; Parker, Vijayakar & Imajo's bars are not available and not drawn."),
-        ("fig80_*.png", "Fig. 80", "DTE response with backlash, one harmonic, three torques and the linear closed-contact curve."),
+        ("fig77_*.png", "Fig. 77", "STE over one mesh cycle with backlash (clip and adjacent-pair spring) and without, "
+         "100/200/300 N m. Notice only 300 N m reaches the local normal backlash, near the ends of the single-pair zone."),
+        ("fig77s_*.png", "supplement", "The local normal backlash b cos(mu) along the single-pair zone against the 300 N m "
+         "STE. Notice where the STE exceeds it: there the adjacent pair engages."),
+        ("fig78_*.png", "Fig. 78", "Fourier coefficients of the STE with and without backlash. Notice only 300 N m changes, "
+         "by a few per cent."),
+        ("fig79_*.png", "Fig. 79", "Our STE coefficients with backlash; Parker, Vijayakar & Imajo's bars are not available "
+         "and not drawn."),
+        ("fig80_*.png", "Fig. 80", "DTE response with backlash, one harmonic, three torques and the linear closed-contact "
+         "curve. Notice it is almost Fig. 69: backlash changes only the 300 N m excitation."),
         ("fig81_*.png", "Fig. 81", "The same with five harmonics."),
-        ("fig82_*.png", "Fig. 82", "300 N m with and without backlash (both readings), H = 1 and 5, with a zoom on the peak: "
-         "the peak drops by 1.3 % and moves up in frequency."),
+        ("fig82_*.png", "Fig. 82", "300 N m with and without backlash (both readings), H = 1 and 5, with a zoom on the peak. "
+         "Notice the peak drops by 1.3 % and moves up in frequency."),
     ]},
 ]
 
@@ -96,11 +188,17 @@ NOT_COMPUTABLE = [
     ("Fig. 19", "sketch of the two-mass system"),
     ("Fig. 24", "sketch of the Comparin & Singh system"),
     ("Figs. 31-39", "sketches: tooth profile, line of action, pressure angle, gear-pair reference frames, forces and displacements"),
-    ("Figs. 46-47", "sketches of the tooth model (teeth as beams and as springs)"),
-    ("Fig. 65", "sketch of the limit positions for the angle of the tooth axis"),
+    ("Fig. 47", "sketch of the teeth as springs in series and in parallel (Fig. 46 is drawn from the model's nodes: "
+     "fig46_four_beam_model.png)"),
+    ("Fig. 65", "the limit positions of the tooth axis: a geometric construction from beta and epsilon "
+     "(ch07 tooth_axis_angles.csv has the angles); not drawn yet"),
     ("Fig. 66", "sketch of the 1-DOF gear model (after Ozguven & Houser)"),
     ("Fig. 68", "mesh stiffness found by Parker, Vijayakar & Imajo (2000): their data are not available"),
     ("Figs. 71-72, 83-84", "comparisons with the FE and experimental curves of Parker, Vijayakar & Imajo (2000): not available; our curves are drawn alone"),
-    ("Figs. 73-76", "sketches of the base pitch along the line of action and of the backlash geometry"),
+    ("Fig. 74", "sketch of the normal and nominal directions (Fig. 73 is drawn from geometry.csv: "
+     "fig73_base_pitch.png)"),
+    ("Fig. 76", "a contact condition taken from the thesis' reference [27] (another source)"),
+    ("Fig. 75", "the limit condition for the normal backlash: a construction from epsilon, epsilon' and mu "
+     "(ch09 backlash_geometry.csv has them); not drawn yet"),
     ("Parker's curves in Figs. 60 and 79", "not available: our STE and coefficients are drawn alone, nothing in their place"),
 ]

@@ -75,8 +75,12 @@ def cost_growth(data_dir, fig_dir):
                     mfc="none", ls=":", color="C%d" % j)
     big = max(range(len(d["n"])), key=lambda i: d["unknowns"][i])
     c = d["cpu_s_per_step"][big] / d["unknowns"][big] ** 3
-    xs = [10 ** (k / 20) for k in range(0, 61)]
+    # the model only over the measured sizes: extended to 1 unknown it would drag the axis to 1e-10 s
+    lo = min(d["unknowns"])
+    xs = [lo * (d["unknowns"][big] / lo) ** (k / 40) for k in range(0, 41)]
     ax.plot(xs, [c * x ** 3 for x in xs], "k--", lw=1, label="model c (n(2H+1))^3 through the largest point")
+    measured = [v for k in ("cpu_s_per_step", "cpu_s_condensed") if k in d for v in d[k] if v == v and v > 0]
+    ax.set_ylim(min(measured) / 3, max(measured) * 3)
     ax.set_xscale("log")
     ax.set_yscale("log")
     if "cpu_s_condensed" in d:
@@ -97,8 +101,12 @@ def natural_vs_arclength(data_dir, fig_dir, kn):
         sub = {k: [d[k][i] for i in idx] for k in ("omega", "x_max", "stable")}
         plot_branch(ax, sub, color=color, label=method.replace("_", " "))
     ax.axvline(kn["natural_stop_omega"], color="C3", ls=":", lw=0.8)
-    ax.annotate("natural continuation stops\nat %.4f rad/s" % kn["natural_stop_omega"],
-                (kn["natural_stop_omega"], 0.2), xytext=(1.25, 0.45), arrowprops={"arrowstyle": "->"}, fontsize=8)
+    nat = [i for i in range(len(d["method"])) if d["method"][i] == "natural"]
+    last = max(nat, key=lambda i: d["omega"][i])   # the last point natural continuation reached
+    ax.plot([d["omega"][last]], [d["x_max"][last]], "o", mfc="none", color="C3", ms=9)
+    ax.annotate("natural continuation stops here,\nat %.4f rad/s (the first fold)" % kn["natural_stop_omega"],
+                (d["omega"][last], d["x_max"][last]), xytext=(1.2, 0.45), arrowprops={"arrowstyle": "->"},
+                fontsize=8)
     ax.set_xlim(0.8, 1.4)
     ax.set_xlabel("omega [rad/s]")
     ax.set_ylabel("x_max [m]")
@@ -134,25 +142,57 @@ def sweep_jumps(data_dir, fig_dir):
     return save(fig, fig_dir / "figM4_ti_sweep_jumps.png")
 
 
+def turning_points(d):
+    """(omega, x_max) where the branch turns back in omega (a fold of the continuation)."""
+    xs, ys = d["omega"], d["x_max"]
+    return [(xs[i], ys[i]) for i in range(1, len(xs) - 1) if (xs[i] - xs[i - 1]) * (xs[i + 1] - xs[i]) < 0]
+
+
+def spurious_window(ref, curves):
+    """Box around the turning points of the sampled curves that are not folds of the exact curve
+    (1e-3 relative in omega), padded by a third of its size: where the spurious folds are."""
+    true = [w for w, _ in turning_points(ref)]
+    pts = [(w, y) for d in curves for w, y in turning_points(d) if all(abs(w - t) > 1e-3 * t for t in true)]
+    if not pts:
+        return None
+    (w0, w1), (y0, y1) = [(min(v), max(v)) for v in zip(*pts)]
+    pw, py = max(w1 - w0, 1e-3 * w1) / 3, max(y1 - y0, 1e-2 * y1) / 3
+    return (w0 - pw, w1 + pw), (y0 - py, y1 + py)
+
+
 def sampled_aft(data_dir, fig_dir):
-    fig, axes = plt.subplots(1, 2, figsize=(11, 4.6))
-    for ax, (sc, lim) in zip(axes, (("mass_wall", (0.95, 1.1)), ("nlvib_ex03", (0.55, 0.8)))):
+    fig, grid = plt.subplots(2, 2, figsize=(11, 8.6), gridspec_kw={"height_ratios": [1, 1]})
+    for col, (sc, lim) in enumerate((("mass_wall", (0.95, 1.1)), ("nlvib_ex03", (0.55, 0.8)))):
+        ax, zoom = grid[0][col], grid[1][col]
         f = read_csv(data_dir / ("folds_%s.csv" % sc))
         folds = {f["setting"][i]: (int(f["folds"][i]), int(f["complete"][i])) for i in range(len(f["setting"]))}
         ref = read_csv(data_dir / ("curve_%s_hb_exact_H20.csv" % sc))
-        ax.plot(ref["omega"], ref["x_max"], color="k", lw=2.2, alpha=0.4,
-                label="exact projection H = 20: %d folds" % folds["hb_exact_H20"][0])
+        curves = []
+        for a in (ax, zoom):
+            a.plot(ref["omega"], ref["x_max"], color="k", lw=2.2, alpha=0.4,
+                   label="exact projection H = 20: %d folds" % folds["hb_exact_H20"][0])
         for j, N in enumerate((2, 4, 8, 32)):
             tag = "hb_sampled_H10_N%d" % N
             d = read_csv(data_dir / ("curve_%s_%s.csv" % (sc, tag)))
+            curves.append(d)
             nf, complete = folds[tag]
-            ax.plot(d["omega"], d["x_max"], color="C%d" % (j + 1), lw=1,
-                    label="sampled H = 10, N = %d(2H+1): %d folds%s" % (N, nf, "" if complete else ", STOPPED"))
+            for a in (ax, zoom):
+                a.plot(d["omega"], d["x_max"], color="C%d" % (j + 1), lw=1,
+                       label="sampled H = 10, N = %d(2H+1): %d folds%s" % (N, nf, "" if complete else ", STOPPED"))
         ax.set_xlim(*lim)
         ax.set_xlabel("omega [rad/s]")
         ax.set_ylabel("x_max [m]")
         ax.set_title(SCENE_TITLE[sc], fontsize=9)
-        ax.legend(fontsize=7, loc="lower center")
+        win = spurious_window(ref, curves)
+        if win:
+            zoom.set_xlim(*win[0])
+            zoom.set_ylim(*win[1])
+            ax.add_patch(plt.Rectangle((win[0][0], win[1][0]), win[0][1] - win[0][0], win[1][1] - win[1][0],
+                                       fill=False, ec="0.3", lw=0.8, ls="--"))
+            zoom.set_title("zoom (dashed box above): the spurious folds", fontsize=9)
+        zoom.set_xlabel("omega [rad/s]")
+        zoom.set_ylabel("x_max [m]")
+        zoom.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1, frameon=False)
     fig.suptitle("Sampled AFT: the residual is piecewise linear with a kink per sample crossing: spurious folds "
                  "and stalled continuation", fontsize=10)
     return save(fig, fig_dir / "figM5_sampled_aft.png")

@@ -3,7 +3,8 @@ import math
 
 import matplotlib.pyplot as plt
 
-from style import case_rows, legend_styles, mark_contact, plot_branch, read_csv, read_params, save
+from style import (CONTACT_LEVEL, case_rows, contact_rug, legend_styles, plot_branch, read_csv, read_params,
+                   rug_room, save)
 
 
 def frc_figure(data_dir, fig_dir, name, title, cases, vary):
@@ -13,22 +14,25 @@ def frc_figure(data_dir, fig_dir, name, title, cases, vary):
     unit = {"gap": "m", "F": "N"}[vary]
     sym = {"gap": "g", "F": "F"}[vary]
     fig, ax = plt.subplots(figsize=(6.4, 5.0))
-    drawn = set()   # gap levels already drawn (Figs. 11-12 share one gap)
+    drawn, walls = set(), []   # gap levels already drawn (Figs. 11-12 share one gap)
     for n, label in enumerate(cases):
         d = read_csv(data_dir / ("frc_%s.csv" % label))
         c = "C%d" % n
         text = "%s = %g %s" % (sym, rows[label][vary], unit)
         plot_branch(ax, d, "x_max", c, text + ": $x_{max}$")
         plot_branch(ax, d, "x_min", c)
-        mark_contact(ax, d, "x_max", c)
+        contact_rug(ax, d, row=n, colour=c)
         g = rows[label]["gap"]
         if g in drawn:
             continue
         drawn.add(g)
-        ax.axhline(-g, color=c, ls=":", lw=1)
-        ax.annotate("in contact where x > -g = %g m" % -g, (0.805, -g), color=c, fontsize=7,
-                    xytext=(3, 3), textcoords="offset points")
+        ax.axhline(-g, **dict(CONTACT_LEVEL, color=c))
+        walls.append((g, c))
     ax.set_xlim(0.8, 1.6)   # the data span 0.5-2 rad/s; nothing happens outside this window
+    rug_room(ax, len(cases))
+    for g, c in walls:   # the wall's label right of the axes, where no curve runs
+        ax.annotate("wall\nx = -g\n= %g m" % -g, (1.0, -g), xycoords=("axes fraction", "data"), color=c,
+                    fontsize=7, xytext=(3, 0), textcoords="offset points", va="center", annotation_clip=False)
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data 0.5-2)")
     ax.set_ylabel(r"displacement $x_{max}$ (upper), $x_{min}$ (lower) [m]")
     p = read_params(data_dir)
@@ -49,6 +53,11 @@ def pair_title(data_dir, fig, cases, vary):
     return "Fig. %s: g = %g m, F = %g and %g N" % (fig, r0["gap"], r0["F"], r1["F"])
 
 
+POINT_RULE = {"A": "0.02 rad/s before the contact state first changes along the curve",
+              "B": "the largest response on the curve",
+              "C": "0.05 rad/s after the last change of contact state"}
+
+
 def time_figures(data_dir, fig_dir, label, first_fig, names):
     row = case_rows(data_dir)[label]
     gap, F0 = row["gap"], row["F0"]
@@ -58,25 +67,30 @@ def time_figures(data_dir, fig_dir, label, first_fig, names):
     for k, mark in enumerate("ABC"):
         i = [j for j in range(len(marks["label"])) if marks["label"][j] == label and marks["mark"][j] == mark][0]
         w = marks["omega"][i]
-        fig, (a1, a2) = plt.subplots(1, 2, figsize=(9.5, 3.8))
-        plot_branch(a1, d, "x_max", "C0", r"$x_{max}$")
+        fig, (a1, a2) = plt.subplots(1, 2, figsize=(9.5, 4.6))
+        plot_branch(a1, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
         plot_branch(a1, d, "x_min", "C0")
-        mark_contact(a1, d, "x_max", "C0")
-        a1.axhline(-gap, color="C3", ls=":", lw=1, label="wall: x = -g = %g m" % -gap)
-        a1.plot([w], [marks["x_max"][i]], "o", color="C3", ms=7, mfc="none", label="current point %s" % mark)
+        a1.axhline(-gap, **dict(CONTACT_LEVEL, label="wall: x = -g = %g m" % -gap))
+        a1.plot([w], [marks["x_max"][i]], "o", color="k", ms=8, mfc="none", mew=1.5, label="current point %s" % mark)
+        t = read_csv(data_dir / ("time_%s_%s.csv" % (label, mark)))
+        a1.plot([w], [min(t["x"])], "o", color="k", ms=8, mfc="none", mew=1.5)
         a1.set_xlim(0.8, 1.6)
+        contact_rug(a1, d)
+        rug_room(a1)
         a1.set_xlabel(r"$\omega$ [rad/s] (zoom; data 0.5-2)")
         a1.set_ylabel(r"$x_{max}$, $x_{min}$ [m]")
         a1.set_title("frequency response (g = %g m, F0 = %g N)" % (gap, F0))
         h, _ = a1.get_legend_handles_labels()
-        a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="lower right", framealpha=0.9)
-        t = read_csv(data_dir / ("time_%s_%s.csv" % (label, mark)))
+        # below the axes: inside, it would sit on the x_min excursion the figure is about
+        a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2),
+                  ncol=2, frameon=False)
         a2.plot(t["t"], t["x"], color="C0", label="x(t), %s contact" % marks["contact"][i])
-        a2.axhline(-gap, color="C3", ls=":", lw=1, label="wall: x = -g")
+        a2.axhline(-gap, **dict(CONTACT_LEVEL, label="wall: x = -g"))
         a2.set_xlabel("time t [s]  (two periods)")
         a2.set_ylabel("x [m]")
         a2.set_title(r"time history at $\omega$ = %.4f rad/s" % w)
-        a2.legend(fontsize=7, loc="best", framealpha=0.9)
+        a2.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
+        fig.suptitle("Fig. %d: point %s, %s" % (first_fig + k, mark, POINT_RULE[mark]), fontsize=10)
         out.append(save(fig, fig_dir / ("fig%02d_%s.png" % (first_fig + k, names[k]))))
     return out
 

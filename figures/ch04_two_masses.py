@@ -9,7 +9,8 @@ import math
 
 import matplotlib.pyplot as plt
 
-from style import case_rows, legend_styles, mark_contact, plot_branch, read_csv, read_params, save
+from style import (CONTACT_LEVEL, NATURAL_CLOSED, NATURAL_OPEN, case_rows, contact_rug, legend_styles, plot_branch,
+                   read_csv, read_params, rug_room, save)
 
 
 def natural_frequencies(data_dir):
@@ -30,11 +31,11 @@ def frequency_window(p, wn):
 
 
 def frequency_axis(ax, wn, p):
-    """Natural-frequency reference lines (open dash-dot grey, closed dotted green) and the zoomed w axis."""
+    """Natural-frequency reference lines (style.NATURAL_OPEN / NATURAL_CLOSED) and the zoomed w axis."""
     for w in wn["open"]:
-        ax.axvline(w, color="0.5", ls="-.", lw=0.8)
+        ax.axvline(w, **NATURAL_OPEN)
     for w in wn["closed"]:
-        ax.axvline(w, color="C2", ls=":", lw=0.9)
+        ax.axvline(w, **NATURAL_CLOSED)
     ax.set_xlim(*frequency_window(p, wn))
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s] (zoom; data %g-%g)" % (p["omega_min"], p["omega_max"]))
 
@@ -44,14 +45,13 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn, p):
     fig_, (a1, a2) = plt.subplots(1, 2, figsize=(10.5, 4.0))
     plot_branch(a1, d, "x_max", "C0", r"$d_{max}$ (upper), $d_{min}$ (lower)")
     plot_branch(a1, d, "x_min", "C0")
-    mark_contact(a1, d, "x_max", "C0")
-    mark_contact(a1, d, "x_min", "C0")
+    contact_rug(a1, d)
     lo, hi = min(d["x_min"]), max(d["x_max"])
     span = hi - lo
     level = -gap
     visible = lo - span <= level <= hi + span   # is the contact level worth drawing?
     if visible:
-        a1.axhline(level, color="C3", ls=":", lw=1.2, label="contact level d = -g = %g m" % level)
+        a1.axhline(level, **dict(CONTACT_LEVEL, label="contact level d = -g = %g m" % level))
     title = "Fig. %s: relative motion, g = %g m" % (fig, gap)
     if not visible:
         title += "\n(contact level d = -g = %g m is far %s: the masses never %s)" % (
@@ -61,20 +61,22 @@ def draw_one(data_dir, fig_dir, fig, stem, gap, wn, p):
     a1.set_title(title)
     from matplotlib.lines import Line2D
     h, _ = a1.get_legend_handles_labels()
-    h += [Line2D([], [], color="0.5", ls="-.", lw=0.8, label=r"open $\omega_n$ = %s rad/s" %
+    h += [Line2D([], [], **NATURAL_OPEN, label=r"open $\omega_n$ = %s rad/s" %
                  ", ".join("%.4g" % w for w in wn["open"])),
-          Line2D([], [], color="C2", ls=":", lw=0.9, label=r"closed $\omega_n$ = %s rad/s" %
+          Line2D([], [], **NATURAL_CLOSED, label=r"closed $\omega_n$ = %s rad/s" %
                  ", ".join("%.4g" % w for w in wn["closed"]))]
     a1.legend(handles=h + legend_styles(a1), fontsize=7, loc="upper left", framealpha=0.9)
     top, bottom = (max(hi, level), min(lo, level)) if visible else (hi, lo)
     a1.set_ylim(bottom - 0.1 * (top - bottom), top + 0.9 * (top - bottom))
+    rug_room(a1)
 
     for name, c in (("x1", "C0"), ("x2", "C1")):
         e = read_csv(data_dir / ("frc_%s_%s.csv" % (stem, name)))
         plot_branch(a2, e, "x_h1", c, "mass %s" % name[1])
     frequency_axis(a2, wn, p)
     a2.set_ylabel("first-harmonic amplitude of each mass [m]")
-    a2.set_title("each mass (in-phase resonance at sqrt(k/m), contact-free)")
+    a2.set_title("each mass on the same branch (the in-phase mode at sqrt(k/m)\ndoes not strain the contact)",
+                 fontsize=9)
     a2.legend(fontsize=8, loc="upper right")
     return save(fig_, fig_dir / ("fig%s_two_masses_g%s.png" % (fig, ("%g" % gap))))
 

@@ -11,7 +11,8 @@ import math
 
 import matplotlib.pyplot as plt
 
-from style import case_rows, plot_branch, read_csv, read_params, save
+from style import (CONTACT_LEVEL, NATURAL_CLOSED, NATURAL_OPEN, case_rows, contact_rug, legend_styles, plot_branch,
+                   read_csv, read_params, rug_room, save)
 
 
 def figures(rows):
@@ -40,25 +41,10 @@ def zoom_window(r):
     return round(math.floor(lo / step) * step, 12), round(math.ceil(hi / step) * step, 12)
 
 
-def mark_intermittent(ax, d, y, color, ms=3):
-    """Small dots on the points in intermittent contact only (open / full is read from the level line)."""
-    pts = [(d["omega"][i], d[y][i]) for i in range(len(d["omega"])) if d["contact"][i] == "intermittent"]
-    if pts:
-        ax.plot(*zip(*pts), ls="none", marker=".", ms=ms, color=color, alpha=0.7)
-
-
-def draw_case(ax, d, color, text, with_label=True, ms=3):
-    plot_branch(ax, d, "x_max", color, text if with_label else None)
+def draw_case(ax, d, color, text, row=0):
+    plot_branch(ax, d, "x_max", color, text)
     plot_branch(ax, d, "x_min", color)
-    mark_intermittent(ax, d, "x_max", color, ms)
-    mark_intermittent(ax, d, "x_min", color, ms)
-
-
-def style_entries():
-    from matplotlib.lines import Line2D
-    return [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
-            Line2D([], [], color="k", ls="--", label="unstable (Floquet)"),
-            Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact (HB)")]
+    contact_rug(ax, d, row=row, colour=color)
 
 
 def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_closed, p):
@@ -74,8 +60,8 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
         c = "C%d" % n
         g = r["gap"]
-        draw_case(ax, d, c, r"g = %g m: $\delta_{max}$ (upper), $\delta_{min}$ (lower)" % g)
-        ax.axhline(-g, color=c, ls=":", lw=1.2)
+        draw_case(ax, d, c, r"g = %g m: $\delta_{max}$ (upper), $\delta_{min}$ (lower)" % g, row=n)
+        ax.axhline(-g, **dict(CONTACT_LEVEL, color=c))
         x_text = p["omega_min"] + (p["omega_max"] - p["omega_min"]) / 75
         ax.annotate(r"contact level $\delta = -g$ = %g m (in contact above)" % -g, (x_text, -g), color=c,
                     fontsize=7, xytext=(0, 3), textcoords="offset points")
@@ -90,26 +76,28 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
                     "does not depend on g (both gaps are never reached)" if rows[0]["gap"] < 0 else
                     "the two curves differ only by a shift", (0.03, y), xycoords=("axes fraction", "data"),
                     va="center", fontsize=8)
-    for w, name in ((omega_open, "open"), (omega_closed, "closed")):
-        ax.axvline(w, color="0.5", ls="-.", lw=0.8)
-        ax.annotate(r"$\omega_{%s}$ = %.3f" % (name, w), (w, 0.02), xycoords=("data", "axes fraction"),
+    for w, name, look in ((omega_open, "open", NATURAL_OPEN), (omega_closed, "closed", NATURAL_CLOSED)):
+        ax.axvline(w, **look)
+        ax.annotate(r"$\omega_{%s}$ = %.3f" % (name, w), (w, 0.12), xycoords=("data", "axes fraction"),
                     fontsize=7, rotation=90, xytext=(2, 0), textcoords="offset points", color="0.35")
     ax.set_xlim(p["omega_min"], p["omega_max"])
     lo, hi = ax.get_ylim()
     ax.set_ylim(lo, hi + 0.18 * (hi - lo))   # room for the legend above the curves
+    rug_room(ax, len(labels))
     ax.set_xlabel(r"forcing frequency $\Omega$ [rad/s]")
     ax.set_ylabel(r"relative displacement $\delta = x_1 - x_2$ [m]")
     ax.set_title("\n".join(title), fontsize=8.5)
     h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + style_entries(), loc="upper right", ncol=2, fontsize=7, framealpha=0.95)
+    ax.legend(handles=h + legend_styles(), loc="upper right", ncol=2, fontsize=7, framealpha=0.95)
     if zoom is not None:
         d, c, g, r = zoom
-        draw_case(axz, d, c, None, with_label=False, ms=4)
-        axz.axhline(-g, color=c, ls=":", lw=1.2, label=r"contact level $\delta = -g$")
+        draw_case(axz, d, c, None)
+        axz.axhline(-g, **dict(CONTACT_LEVEL, color=c, label=r"contact level $\delta = -g$"))
         axz.axvspan(r["intermittent_from"], r["intermittent_to"], color="0.85", zorder=0,
                     label="predicted intermittent\n(no linear solution valid)")
-        axz.axvline(omega_closed, color="0.5", ls="-.", lw=0.8)
+        axz.axvline(omega_closed, **NATURAL_CLOSED)
         axz.set_xlim(*zoom_window(r))
+        rug_room(axz)
         axz.set_xlabel(r"$\Omega$ [rad/s] (zoom)")
         axz.set_ylabel(r"$\delta$ [m]")
         axz.set_title("zoom, g = %g m: outside the grey band the\nlinear full-contact solution coexists" % g,

@@ -3,26 +3,20 @@
 Every curve of the run's case table (cases.csv) becomes one figure; titles come from
 the table (figure, Fi, Fa, kc). Plotted coordinate: the mesh deflection Delta = T2 q.
 Upper panel: Delta_max and Delta_min over a period with the contact level Delta = 0
-(teeth touch where Delta > 0) and the bifurcations found on the curve. Lower panel:
-the oscillating amplitude (Delta_max - Delta_min)/2 beside the linear open /
-closed-mesh amplitudes. Dotted verticals: linear natural frequencies.
+(teeth touch where Delta > 0) and the bifurcations found on the curve; where three or
+more folds crowd together, a middle panel zooms on them. Lower panel: the oscillating
+amplitude (Delta_max - Delta_min)/2 beside the linear open / closed-mesh amplitudes.
+Dotted verticals: linear natural frequencies; the rug at the bottom: the contact state
+(figures/style.py). The deepest Delta_min off every natural frequency is pointed at as the
+mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
-from style import case_rows, plot_branch, read_csv, runs, save
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
+                   NATURAL_OPEN, bifurcation_handles, case_rows, contact_rug, legend_styles, plot_branch, read_csv,
+                   rug_room, save)
 
 import matplotlib.pyplot as plt
-from matplotlib.lines import Line2D
-from matplotlib.patches import Patch
 
-MARKERS = {"fold": ("o", "k"), "branch_point": ("D", "C4"), "period_doubling": ("v", "C3"),
-           "neimark_sacker": ("*", "C2")}
-
-
-def shade_intermittent(ax, d):
-    """Light band over every omega span where the mesh opens and closes within a period."""
-    flags = [c == "intermittent" for c in d["contact"]]
-    for flag, i0, i1 in runs(flags):
-        if flag:
-            ax.axvspan(min(d["w_k"][i0:i1 + 1]), max(d["w_k"][i0:i1 + 1]), color="gold", alpha=0.25, lw=0)
+FOLD_CLUSTER_GAP = 2000.0   # rad/s: folds closer than this form one cluster (one zoom panel)
 
 
 def modes(data_dir, mesh):
@@ -40,10 +34,62 @@ def mark_bifurcations(ax, data_dir, label, d):
             continue   # folds show as turning points; jumps and unlocated changes are only in the csv
         # the Delta_max value at the nearest point of the branch
         i = min(range(len(d["omega"])), key=lambda j: abs(d["omega"][j] - w))
-        m, c = MARKERS[t]
-        ax.plot(w / 1e3, d["x_max"][i] * 1e3, ls="none", marker=m, color=c, ms=6, mfc="none", mew=1.2)
+        ax.plot(w / 1e3, d["x_max"][i] * 1e3, ls="none", marker=BIFURCATION_MARKERS[t], color=BIFURCATION_COLOURS[t],
+                ms=6, mfc="none", mew=1.2)
         used.append(t)
     return sorted(set(used))
+
+
+def fold_window(data_dir, label, span):
+    """The first cluster of folds (neighbours closer than FOLD_CLUSTER_GAP), widened by a quarter
+    of its width each side, in krad/s; None unless the cluster is a crowd (3 folds or more): a
+    lone fold reads well at full scale."""
+    b = read_csv(data_dir / ("bifurcations_%s.csv" % label))
+    folds = sorted(w for t, w in zip(b["type"], b["omega"]) if t == "fold")
+    if not folds:
+        return None
+    cluster = [folds[0]]
+    for w in folds[1:]:
+        if w - cluster[-1] > FOLD_CLUSTER_GAP:
+            break
+        cluster.append(w)
+    if len(cluster) < 3:
+        return None
+    lo, hi = cluster[0], cluster[-1]
+    pad = max(0.25 * (hi - lo), 0.01 * span)
+    return (lo - pad) / 1e3, (hi + pad) / 1e3
+
+
+def delta_panel(ax, data_dir, label, d, w_open, w_closed):
+    """Delta_max, Delta_min, the contact level, the contact rug and the bifurcations."""
+    plot_branch(ax, d, "x_max", "C0", r"$\Delta_{max}$", x="w_k", scale=1e3)
+    plot_branch(ax, d, "x_min", "C1", r"$\Delta_{min}$", x="w_k", scale=1e3)
+    kinds = mark_bifurcations(ax, data_dir, label, d)
+    ax.axhline(0.0, **CONTACT_LEVEL)
+    natural_lines(ax, w_open, w_closed)
+    ax.set_ylabel(r"mesh deflection $\Delta$ [mm]")
+    contact_rug(ax, d, x="w_k")
+    return kinds
+
+
+def natural_lines(ax, w_open, w_closed):
+    for w in w_open:
+        ax.axvline(w / 1e3, **NATURAL_OPEN)
+    for w in w_closed:
+        ax.axvline(w / 1e3, **NATURAL_CLOSED)
+
+
+def mark_bilinear_dip(ax, d, w_open, w_closed):
+    """The deepest Delta_min, where it lies on no natural-frequency line (3 %) in intermittent
+    contact: the bilinear mode of the mesh (chapter README, reference/scripts/ch06_bilinear_modes.py)."""
+    i = min(range(len(d["x_min"])), key=lambda k: d["x_min"][k])
+    w = d["omega"][i]
+    if d["contact"][i] != "intermittent" or any(abs(w - wn) < 0.03 * wn for wn in w_open + w_closed):
+        return
+    ax.annotate("deepest $\\Delta_{min}$ at %.2f krad/s: the bilinear mode of the mesh\n(closed-mesh motion while the "
+                "teeth touch, free gears while apart;\nits free period 22.18 krad/s: README)" % (w / 1e3),
+                (w / 1e3, d["x_min"][i] * 1e3), xytext=(14, 6), textcoords="offset points", ha="left", va="bottom",
+                fontsize=7, arrowprops=dict(arrowstyle="->", lw=0.8))
 
 
 def case_figure(data_dir, fig_dir, row, name):
@@ -53,43 +99,55 @@ def case_figure(data_dir, fig_dir, row, name):
     w_open, w_closed = modes(data_dir, mesh)
     d["w_k"] = [w / 1e3 for w in d["omega"]]
     d["amp"] = [(a - b) / 2 for a, b in zip(d["x_max"], d["x_min"])]
-    fig_, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 7.2), sharex=True)
-    plot_branch(a1, d, "x_max", "C0", r"$\Delta_{max}$", x="w_k", scale=1e3)
-    plot_branch(a1, d, "x_min", "C1", r"$\Delta_{min}$", x="w_k", scale=1e3)
-    shade_intermittent(a1, d)
-    kinds = mark_bifurcations(a1, data_dir, label, d)
-    a1.axhline(0.0, color="k", lw=1.0, ls=":")
+    p_span = max(d["omega"]) - min(d["omega"])
+    zoom = fold_window(data_dir, label, p_span)
+    rows = 3 if zoom else 2
+    fig_, axes = plt.subplots(rows, 1, figsize=(7.6, 10.4 if zoom else 7.6),
+                              gridspec_kw={"height_ratios": [1.2, 1.0, 0.9][:rows]})
+    a1, a2 = axes[0], axes[-1]
+    kinds = delta_panel(a1, data_dir, label, d, w_open, w_closed)
+    a1.set_xlim(min(d["w_k"]), max(d["w_k"]))
+    rug_room(a1)
     a1.annotate(r"contact level $\Delta$ = 0 (teeth touch above)", (0.99, 0.0), xycoords=("axes fraction", "data"),
-                fontsize=7, xytext=(0, -9), textcoords="offset points", ha="right")
-    a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
-    a1.set_title("Fig. %d: $F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
-                 % (int(row["figure"]), row["Fi"], row["Fa"], row["kc"]), fontsize=9)
-    h, _ = a1.get_legend_handles_labels()
-    extra = [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
-             Line2D([], [], color="k", ls="--", label="unstable (Floquet)"),
-             Patch(color="gold", alpha=0.25, label="intermittent contact")]
-    extra += [Line2D([], [], ls="none", marker=MARKERS[k][0], color=MARKERS[k][1], mfc="none",
-                     label=k.replace("_", " ")) for k in kinds]
-    a1.legend(handles=h + extra, fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.02),
-              framealpha=0.9)
+                fontsize=7, xytext=(0, 3), textcoords="offset points", ha="right")
+    if mesh == "kc":
+        mark_bilinear_dip(a1, d, w_open, w_closed)
+    what = "Fig. %d" % int(row["figure"]) if mesh == "kc" else \
+        "Supplement S%d (Fig. %d's loads with the printed kc)" % (int(row["figure"]), int(row["figure"]))
+    a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
+                 % (what, row["Fi"], row["Fa"], row["kc"]), fontsize=9)
+    if zoom:
+        az = axes[1]
+        delta_panel(az, data_dir, label, d, w_open, w_closed)
+        inside = [k for k, w in enumerate(d["w_k"]) if zoom[0] <= w <= zoom[1]]
+        ys = [d[y][k] * 1e3 for k in inside for y in ("x_max", "x_min")] + [0.0]
+        pad = 0.08 * (max(ys) - min(ys))
+        az.set_xlim(*zoom)
+        az.set_ylim(min(ys) - pad, max(ys) + pad)
+        rug_room(az)
+        az.set_title("zoom on the folds: %.2f-%.2f krad/s" % zoom, fontsize=9)
+        a1.axvspan(*zoom, color="0.5", alpha=0.12, lw=0)
     plot_branch(a2, d, "amp", "C2", r"HB: $(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
-    shade_intermittent(a2, d)
     s = row["Fa"] / 1e4   # linear_*.csv is for Fa = 1e4
-    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], color="0.5", lw=0.9,
-                ls="-.", label="linear, mesh open")
-    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_closed"]], color="C3", lw=0.9,
-                ls="-.", label="linear, mesh closed")
-    for ax in (a1, a2):
-        for w in w_open:
-            ax.axvline(w / 1e3, color="0.6", ls=":", lw=0.8)
-        for w in w_closed:
-            ax.axvline(w / 1e3, color="C3", ls=":", lw=0.8)
+    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
+                label="linear, mesh open")
+    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_closed"]], **LINEAR_CLOSED,
+                label="linear, mesh closed")
+    natural_lines(a2, w_open, w_closed)
+    contact_rug(a2, d, x="w_k")
+    a2.set_xlim(min(d["w_k"]), max(d["w_k"]))
+    rug_room(a2)
     a2.set_ylabel(r"oscillating amplitude of $\Delta$ [mm]")
-    a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]   (dotted: natural frequencies, grey open, red closed mesh)",
-                  fontsize=8)
-    a2.legend(fontsize=7, loc="upper right", framealpha=0.9)
-    fig_.subplots_adjust(hspace=0.32)
-    return save(fig_, fig_dir / name)
+    a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]   (dotted: natural frequencies, light grey open, dark closed "
+                  "mesh)", fontsize=8)
+    h1, _ = a1.get_legend_handles_labels()
+    h2, _ = a2.get_legend_handles_labels()
+    fig_.legend(handles=h1 + h2 + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=3,
+                loc="lower center", framealpha=0.9)
+    fig_.tight_layout(rect=(0, 0.09, 1, 1))
+    fig_.savefig(fig_dir / name)
+    plt.close(fig_)
+    return str(fig_dir / name)
 
 
 def power_of_ten(v):

@@ -14,7 +14,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
-from style import read_params  # noqa: E402
+from style import COMPARISON_COLOURS, read_params, torque_colour  # noqa: E402
 
 
 def read(path):
@@ -30,9 +30,9 @@ def read(path):
     return out
 
 
-def save(fig, fig_dir, name, made):
+def save(fig, fig_dir, name, made, rect=(0, 0, 1, 1)):
     path = os.path.join(fig_dir, name)
-    fig.tight_layout()
+    fig.tight_layout(rect=rect)
     fig.savefig(path, dpi=120)
     plt.close(fig)
     made.append(path)
@@ -47,20 +47,46 @@ def beams_of(d):
     return beams
 
 
-def deflection_figure(d, title, fig_dir, name, made, exact=None):
-    fig, ax = plt.subplots(figsize=(7, 4.2))
+def node_pairs(nodes):
+    """'6-18' -> [(6, 18)]; '2-22_30-38' -> [(2, 22), (30, 38)]."""
+    return [tuple(int(n) for n in p.split("-")) for p in nodes.split("_")]
+
+
+def mark_contact_nodes(ax, d, pairs, fused):
+    """Hollow circles on the contact (or fused) node pairs, each pair labelled."""
+    at = {int(n): (x, w) for n, x, w in zip(d["node"], d["x_mm"], d["w_um"])}
+    for k, (a, b) in enumerate(pairs):
+        pts = [at[n] for n in (a, b) if n in at]
+        ax.plot(*zip(*pts), ls="none", marker="o", ms=11, mfc="none", mec="k", mew=1.3,
+                label=("fused node pairs (common transmission error)" if fused else "contact node pair") if k == 0
+                else None)
+        x, w = pts[-1]
+        ax.annotate("%d-%d" % (a, b), (x, w), xytext=(6, -12 if w < 0 else 6), textcoords="offset points", fontsize=8)
+    return at
+
+
+def deflection_figure(d, title, fig_dir, name, made, pairs=(), fused=False):
+    fig, ax = plt.subplots(figsize=(7.4, 5.0))
     for b, (x, w) in sorted(beams_of(d).items()):
         role = "driving" if b % 2 == 1 else "driven"
-        ax.plot(x, w, "o-", ms=4, label="beam %d (%s tooth, nodes %d-%d)" % (
-            b, role, (b - 1) * len(x) + 1, b * len(x)))
-    if exact is not None:
-        for (xe, ye, lab) in exact:
-            ax.plot(xe, ye, "k--", lw=1, label=lab)
+        nodes = [int(n) for n, bb in zip(d["node"], d["beam"]) if int(bb) == b]
+        ax.plot(x, w, "o-", ms=4, label="beam %d (%s tooth, nodes %d-%d)" % (b, role, min(nodes), max(nodes)))
+    at = mark_contact_nodes(ax, d, pairs, fused)
+    if len(pairs) == 1:   # one pair: the STE is the sum of the two teeth's deflections at the contact
+        (a, b), = pairs
+        ax.text(0.02, 0.04, "STE = |w(%d)| + |w(%d)| = %.4f + %.4f = %.4f um" % (
+            a, b, abs(at[a][1]), abs(at[b][1]), abs(at[a][1]) + abs(at[b][1])), transform=ax.transAxes, fontsize=9,
+            bbox=dict(fc="white", ec="0.6"))
+    elif pairs:           # fused pairs: the driving roots are moved by -X_STE
+        roots = [w for x, w in zip(d["x_mm"], d["w_um"]) if x == 0 and w != 0]
+        if roots:
+            ax.text(0.02, 0.96, "driving roots moved by -X_STE: X_STE = %.4f um" % abs(roots[0]),
+                    transform=ax.transAxes, fontsize=9, va="top", bbox=dict(fc="white", ec="0.6"))
     ax.axhline(0, color="grey", lw=0.5)
     ax.set_xlabel("distance from the tooth root x [mm]")
     ax.set_ylabel("transverse deflection w [um]")
     ax.set_title(title, fontsize=10)
-    ax.legend(fontsize=7, loc="best")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=2, frameon=False)
     ax.grid(alpha=0.3)
     save(fig, fig_dir, name, made)
 
@@ -89,7 +115,8 @@ def draw(data_dir, fig_dir):
             continue
         deflection_figure(D(r["file"]), "Fig. %d: one pair in contact, nodes %s, %s, T = %g Nm\n(both roots clamped, "
                           "force -T/r on both contact nodes)" % (fig_no, r["nodes"], thickness_text(r), r["torque_N_m"]),
-                          fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made)
+                          fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made,
+                          pairs=node_pairs(r["nodes"]))
 
     # Figs. 50-51: exact cantilever elastic line with the FE nodes of the loaded beam.
     for fig_no in (50, 51):
@@ -125,7 +152,8 @@ def draw(data_dir, fig_dir):
         deflection_figure(D(r["file"]), "Fig. %d: two pairs, nodes %s fused, %s, T = %g Nm\n"
                           "(driving roots guided and moved by -X_STE, driven roots clamped)"
                           % (fig_no, pairs, thickness_text(r).replace(" thickness", ""), r["torque_N_m"]),
-                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made)
+                          fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made,
+                          pairs=node_pairs(r["nodes"]), fused=True)
 
     # Fig. 56: moment along the fused beam.
     r = index[56]
@@ -176,10 +204,10 @@ def draw(data_dir, fig_dir):
             continue
         d = D(r["file"])
         title = "%s in contact (%s)" % ("one pair" if r["pairs"] == 1 else "two pairs", r["nodes"].replace("_", " and "))
-        beams = {}
-        for b, x, w, th in zip(d["beam"], d["x_mm"], d["w_um"], d["thickness_mm"]):
-            beams.setdefault(int(b), []).append((x, w, th))
-        fig, axes = plt.subplots(1, len(beams), figsize=(max(7.5, 2.4 * len(beams)), 4.4), sharey=True)
+        beams, contact = {}, {n for pair in node_pairs(r["nodes"]) for n in pair}
+        for b, n, x, w, th in zip(d["beam"], d["node"], d["x_mm"], d["w_um"], d["thickness_mm"]):
+            beams.setdefault(int(b), []).append((x, w, th, int(n)))
+        fig, axes = plt.subplots(1, len(beams), figsize=(max(7.5, 2.4 * len(beams)), 4.8), sharey=True)
         scale = 200.0  # deflection magnification
         for ax, (b, pts) in zip(axes, sorted(beams.items())):
             x = [p[0] for p in pts]
@@ -191,18 +219,25 @@ def draw(data_dir, fig_dir):
             ax.plot([wi * 1e-3 * scale - t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1,
                     label="deformed (x%d)" % scale)
             ax.plot([wi * 1e-3 * scale for wi in w], x, "C3.", ms=3)
+            hit = [(wi * 1e-3 * scale, xi, n) for xi, wi, _, n in pts if n in contact]
+            for u, xi, n in hit:
+                ax.plot([u], [xi], "o", ms=9, mfc="none", mec="k", mew=1.2,
+                        label=("contact node" if r["pairs"] == 1 else "fused contact node") if n == hit[0][2] else None)
+                ax.annotate("node %d" % n, (u, xi), xytext=(6, 4), textcoords="offset points", fontsize=7)
             ax.set_title("beam %d (%s)\nmax |w| = %.2f um" % (b, "driving" if b % 2 else "driven",
                                                                max(abs(v) for v in w)), fontsize=8)
             ax.set_xlabel("transverse position [mm]", fontsize=8)
             ax.set_xlim(-4.5, 4.5)
             ax.grid(alpha=0.3)
         axes[0].set_ylabel("height above the root [mm]")
-        axes[0].legend(fontsize=6, loc="upper left")
+        handles, labels = axes[0].get_legend_handles_labels()
+        fig.legend(handles, labels, fontsize=7, loc="lower center", ncol=3, frameon=False)   # off the teeth
         fig.suptitle("Fig. %d: deformed teeth, involute thickness, T = %g Nm, %s\n"
                      "(each tooth in its own frame; deflections magnified %d times)"
                      % (fig_no, r["torque_N_m"], title, scale),
                      fontsize=9)
-        save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made)
+        save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made,
+             rect=(0, 0.07, 1, 1))
 
     # Figs. 60/63: STE over the mesh cycle; Figs. 61/64 its Fourier coefficients.
     cases = rows(D("cases.csv"))
@@ -211,6 +246,7 @@ def draw(data_dir, fig_dir):
         mine = sorted([c for c in cases if c["model"] == model], key=lambda c: c["torque_N_m"])
         if not mine:
             return
+        torques = [c["torque_N_m"] for c in mine]
         label = "%d elements, %d positions per base pitch" % (mine[0]["tooth_elements"],
                                                               mine[0]["positions_per_base_pitch"])
         fig, ax = plt.subplots(figsize=(7, 4.2))
@@ -218,7 +254,8 @@ def draw(data_dir, fig_dir):
             d = D(c["file"])
             ph = d["phase"] + [1.0]
             ste = d["ste_um"] + [d["ste_um"][0]]
-            ax.step(ph, ste, where="post", label="T = %g Nm" % c["torque_N_m"])
+            ax.step(ph, ste, where="post", color=torque_colour(c["torque_N_m"], torques),
+                    label="T = %g Nm" % c["torque_N_m"])
             ax.plot(d["phase"], d["ste_um"], "k.", ms=4)
         n = len(D(mine[0]["file"])["phase"])
         pairs = D(mine[0]["file"])["pairs_in_contact"]
@@ -231,7 +268,7 @@ def draw(data_dir, fig_dir):
                      "(Parker, Vijayakar & Imajo's curve of the thesis figure: data not available)"
                      % (fig_ste, label), fontsize=9)
         ax.set_xlim(0, 1)
-        ax.legend(fontsize=8, loc="center left")
+        ax.legend(fontsize=8, loc="upper left")   # above the two-pair zone, clear of the curves
         ax.grid(alpha=0.3)
         save(fig, fig_dir, "fig%d_ste_mesh_cycle%s.png" % (fig_ste, "" if fig_ste == 60 else "_14_nodes"), made)
 
@@ -241,7 +278,8 @@ def draw(data_dir, fig_dir):
             d = D(c["fourier_file"])
             h = [k for k in d["harmonic"] if k > 0]
             a = [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k > 0]
-            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width, label="T = %g Nm" % c["torque_N_m"])
+            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width,
+                   color=torque_colour(c["torque_N_m"], torques), label="T = %g Nm" % c["torque_N_m"])
         ax.set_xlabel("harmonic of the mesh frequency k")
         ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
         ax.set_xticks(h)
@@ -299,4 +337,86 @@ def draw(data_dir, fig_dir):
     ax1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
     ax1.grid(alpha=0.3)
     save(fig, fig_dir, "ch07_extra_convergence.png", made)
+    four_beam_model(D, index, fig_dir, made)
+    base_pitch_figure(D("geometry.csv"), fig_dir, made)
     return made
+
+
+def four_beam_model(D, index, fig_dir, made):
+    """Fig. 46: the four beams of the 10-element model (two tooth pairs), nodes numbered, the
+    contact node pairs of every position the thesis lists (deflection_cases.csv). Node heights
+    from the run's deflection files; a driven tooth hangs from its root above, so a contact pair
+    (i, j) is at one height: x_i + x_j is the same for every pair (the beams' common span)."""
+    two = D(index[52]["file"])
+    x = {int(n): v for n, v in zip(two["node"], two["x_mm"])}
+    beam = {int(n): int(b) for n, b in zip(two["node"], two["beam"])}
+    cases = sorted((r for r in index.values() if r["file"].startswith("deflection_") and r["thickness"] == "constant"),
+                   key=lambda r: r["figure"])
+    a0, b0 = node_pairs(cases[0]["nodes"])[0]
+    span = x[a0] + x[b0]
+    column = {1: 0.0, 2: 1.0, 3: 3.2, 4: 4.2}
+
+    def height(n):
+        return x[n] if beam[n] % 2 else span - x[n]
+
+    fig, ax = plt.subplots(figsize=(8.6, 6.4))
+    for b, cx in column.items():
+        nodes = sorted(n for n in beam if beam[n] == b)
+        ax.plot([cx] * len(nodes), [height(n) for n in nodes], "-o", color="0.3", ms=4, lw=2)
+        for n in nodes:
+            ax.annotate("%d" % n, (cx, height(n)), xytext=(-20 if b % 2 else 8, -3), textcoords="offset points",
+                        fontsize=7)
+        root = height(nodes[0])
+        ax.plot([cx - 0.1, cx + 0.1], [root, root], color="k", lw=3)
+        ax.annotate("root (%s)" % ("driving tooth, clamped; guided with two pairs" if b % 2 else
+                                   "driven tooth, clamped"), (cx, root), xytext=(0, -14 if b % 2 else 8),
+                    textcoords="offset points", ha="center", fontsize=7)
+        ax.text(cx, span + 1.0, "beam %d" % b, ha="center", fontsize=8)
+    for k, r in enumerate(cases):
+        col = COMPARISON_COLOURS[k % len(COMPARISON_COLOURS)]
+        for a, b in node_pairs(r["nodes"]):
+            xa, xb = column[beam[a]], column[beam[b]]
+            ax.plot([xa, xb], [height(a)] * 2, color=col, lw=1.6, ls="--")
+        ax.plot([], [], color=col, ls="--", label="Fig. %d: %s" % (int(r["figure"]), r["nodes"].replace("_", " and ")))
+    ax.set_xlim(-1.2, 6.8)
+    ax.set_ylim(-1.2, span + 1.6)
+    ax.set_xticks([])
+    ax.set_ylabel("height along the tooth [mm] (driving root at 0)")
+    ax.set_title("Fig. 46: the four-beam tooth model (10 elements per tooth, nodes 1-%d) and the contact node\n"
+                 "pairs along the path of contact (one pair: 6-18, 7-17; two pairs: the fused pairs)" % max(beam),
+                 fontsize=9)
+    ax.legend(fontsize=7, loc="upper right", title="contact node pairs (dashed)", title_fontsize=7)
+    ax.grid(alpha=0.2)
+    save(fig, fig_dir, "fig46_four_beam_model.png", made)
+
+
+def base_pitch_figure(g, fig_dir, made):
+    """Fig. 73: the path of contact A-E with the pitch point C and one base pitch laid from each
+    end: two pairs in contact on A-A' and E'-E, one pair on A'-E' (geometry.csv, mm)."""
+    v = {q: val * 1e3 for q, val in zip(g["quantity"], g["value"]) if g["unit"][g["quantity"].index(q)] == "m"}
+    pb, AC, AE = v["base_pitch"], v["AC"], v["AE"]
+    pts = {"A": 0.0, "A'": AE - pb, "C": AC, "E'": pb, "E": AE}
+    fig, ax = plt.subplots(figsize=(8.4, 3.6))
+    ax.plot([0, AE], [0, 0], color="k", lw=2)
+    two, one = COMPARISON_COLOURS[0], COMPARISON_COLOURS[1]
+    ax.axvspan(0, AE - pb, ymin=0.45, ymax=0.62, color=two, alpha=0.25, lw=0, label="two pairs in contact")
+    ax.axvspan(pb, AE, ymin=0.45, ymax=0.62, color=two, alpha=0.25, lw=0)
+    ax.axvspan(AE - pb, pb, ymin=0.45, ymax=0.62, color=one, alpha=0.3, lw=0, label="one pair in contact (A'-E')")
+    for k, (name, s) in enumerate(pts.items()):
+        ax.plot([s], [0], "ko", ms=5)
+        ax.annotate(name, (s, 0), xytext=(0, 8), textcoords="offset points", ha="center", fontsize=10,
+                    fontweight="bold")
+        ax.annotate("%.3f" % s, (s, 0), xytext=(0, -14 if k % 2 == 0 else -26), textcoords="offset points",
+                    ha="center", fontsize=8)
+    for y, (s0, s1) in ((-0.55, (0.0, pb)), (-0.85, (AE - pb, AE))):
+        ax.annotate("", (s1, y), (s0, y), arrowprops=dict(arrowstyle="<->", lw=1))
+        ax.text((s0 + s1) / 2, y + 0.05, "base pitch p_b = %.3f mm" % pb, ha="center", va="bottom", fontsize=8)
+    ax.set_ylim(-1.1, 1.0)
+    ax.set_xlim(-1.0, AE + 1.0)
+    ax.set_yticks([])
+    ax.set_xlabel("position along the path of contact from A [mm] (AE = %.3f mm, contact ratio AE/p_b = %.4f)"
+                  % (AE, AE / pb))
+    ax.set_title("Fig. 73: one base pitch laid along the path of contact A-E (thesis gears, geometry.csv)",
+                 fontsize=9)
+    ax.legend(fontsize=8, loc="upper right")
+    save(fig, fig_dir, "fig73_base_pitch.png", made)

@@ -12,24 +12,21 @@ import json
 
 from matplotlib.lines import Line2D
 
-from style import case_rows, plot_branch, plt, read_csv, read_params, save
+from style import (COMPARISON_COLOURS, LINEAR_CLOSED, THESIS_TORQUES, case_rows, contact_rug, flickering_stability,
+                   legend_styles, plot_branch, plt, read_csv, read_params, rug_room, save, torque_colour,
+                   unresolved_handle)
 
 UM = 1e6
-COLORS = {100.0: "C2", 200.0: "C0", 300.0: "C3"}
-H_COLORS = {1: "C7", 5: "C3", 10: "C1", 20: "k"}
+COLORS = {T: torque_colour(T) for T in THESIS_TORQUES}   # the torque colours of every chapter
+# Harmonic counts of one torque: comparison colours (never a torque colour, never black, which is
+# the stable/unstable legend's colour).
+H_COLORS = {1: COMPARISON_COLOURS[0], 5: COMPARISON_COLOURS[1], 10: COMPARISON_COLOURS[2], 20: COMPARISON_COLOURS[3]}
+MODEL_COLOURS = {"constant": torque_colour(300.0), "parametric": COMPARISON_COLOURS[0]}
 
 
 def key_numbers(data_dir):
     with open(data_dir / "key_numbers.json") as f:
         return {k: v["value"] for k, v in json.load(f).items()}
-
-
-def loss_bands(data_dir):
-    d = read_csv(data_dir / "loss_bands.csv")
-    out = {}
-    for i, lb in enumerate(d["label"]):
-        out.setdefault(lb, []).append((d["f_lo_hz"][i], d["f_hi_hz"][i]))
-    return out
 
 
 def style_legend(extra):
@@ -62,36 +59,39 @@ def fig67(data_dir, fig_dir, kn):
 
 def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases, what="DTE response"):
     """RMS of x vs mesh frequency for the curves `labels` (torque colours), their
-    contact-loss bands as bars, the linear closed-contact curve of the last one."""
-    bands = loss_bands(data_dir)
-    fig, ax = plt.subplots(figsize=(8, 5))
-    ymax = 0.0
+    the contact state as a rug (one row per torque), the linear closed-contact curve of the last one."""
+    fig, ax = plt.subplots(figsize=(10.5, 5))
+    ymax = max(read_csv(data_dir / ("linear_%s.csv" % labels[-1]))["x_rms_ac"]) * UM   # the linear peak too
     for lb in labels:
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
         ymax = max(ymax, max(d["x_rms_ac"]) * UM)
-    extra = []
+    extra, flicker = [], False
     for i, lb in enumerate(labels):
         row = cases[lb]
         col = COLORS[row["torque"]]
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+        bad = flickering_stability(d, x="f_mesh_hz")
+        flicker = flicker or bool(bad)
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad,
                     label="T = %d N m (kc %.1f MN/m)" % (row["torque"], row["kc"] / 1e6))
-        y = ymax * (1.08 - 0.035 * i)
-        for lo, hi in bands.get(lb, []):
-            ax.plot([lo, hi], [y, y], color=col, lw=4, solid_capstyle="butt")
+        contact_rug(ax, d, x="f_mesh_hz", row=i, colour=col)
     lin = read_csv(data_dir / ("linear_%s.csv" % labels[-1]))
-    ax.plot(lin["f_mesh_hz"], [v * UM for v in lin["x_rms_ac"]], color="0.35", lw=1.0, ls=":", zorder=1,
+    ax.plot(lin["f_mesh_hz"], [v * UM for v in lin["x_rms_ac"]], **LINEAR_CLOSED, zorder=1,
             label="linear, contact always closed (%d N m)" % cases[labels[-1]]["torque"])
-    extra.append(Line2D([], [], color="0.4", lw=4, label="contact lost: frequency bands (bars, torque colour)"))
+    extra += legend_styles()[2:]   # the contact rug: one row per torque, the torque's tick at its left end
     H = int(cases[labels[0]]["H"])
+    if flicker:
+        extra.append(unresolved_handle(H))
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
     ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
-    ax.set_ylim(0, ymax * 1.15)
-    ax.set_title("Fig. %s: %s, H = %d (STE truncated to %d harmonic%s), me = %.3f kg, zeta = %g"
-                 % (fig_no, what, H, H, "" if H == 1 else "s", cases[labels[0]]["me"], params["zeta"]))
+    ax.set_ylim(0, ymax * 1.08)
+    rug_room(ax, len(labels))
+    ax.set_title("Fig. %s: %s, H = %d (STE truncated to %d harmonic%s),\nme = %.3f kg, zeta = %g"
+                 % (fig_no, what, H, H, "" if H == 1 else "s", cases[labels[0]]["me"], params["zeta"]), fontsize=10)
     h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + style_legend(extra), loc="upper right", bbox_to_anchor=(1.0, 0.86), fontsize=7.5)
+    # right of the axes: inside, it would cover the curves' descent
+    ax.legend(handles=h + style_legend(extra), loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7.5)
     return save(fig, fig_dir / name)
 
 
@@ -125,7 +125,7 @@ def convergence(data_dir, fig_dir, params, cases):
             continue
         H = int(row["H"])
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, "C4"), scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, COMPARISON_COLOURS[4]), scale=UM,
                     label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
@@ -137,11 +137,10 @@ def convergence(data_dir, fig_dir, params, cases):
 
 
 def parametric(data_dir, fig_dir, params, cases, labels):
-    """Both models' 300 N m curves (same H, same STE), contact-loss bands as bars."""
-    bands = loss_bands(data_dir)
+    """Both models' 300 N m curves (same H, same STE), the contact state as a rug (one row per model)."""
     fig, ax = plt.subplots(figsize=(8, 6))
-    styles = {"constant": ("C3", "thesis model, kc constant (RMS of x)"),
-              "parametric": ("C0", "parametric, k(t) = F0/e(t) (RMS of d)")}
+    styles = {"constant": (MODEL_COLOURS["constant"], "thesis model, kc constant (RMS of x)"),
+              "parametric": (MODEL_COLOURS["parametric"], "parametric, k(t) = F0/e(t) (RMS of d)")}
     curves = [(lb, cases[lb]) for lb in labels]
     ymax = max(max(read_csv(data_dir / ("frc_%s.csv" % lb))["x_rms_ac"]) for lb, _ in curves) * UM
     for i, (lb, row) in enumerate(curves):
@@ -149,15 +148,14 @@ def parametric(data_dir, fig_dir, params, cases, labels):
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
         plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
                     label="%s (peak %.2f um at %.0f Hz)" % (text, row["peak_rms_um"], row["peak_f_hz"]))
-        y = ymax * (1.08 - 0.035 * i)
-        for lo, hi in bands.get(lb, []):
-            ax.plot([lo, hi], [y, y], color=col, lw=4, solid_capstyle="butt")
-    extra = [Line2D([], [], color="0.4", lw=4, label="contact lost: frequency bands (bars, model colour)")]
+        contact_rug(ax, d, x="f_mesh_hz", row=i, colour=col)
+    extra = legend_styles()[2:]
     row = curves[0][1]
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of the DTE  [um]")
     ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
-    ax.set_ylim(0, ymax * 1.15)
+    ax.set_ylim(0, ymax * 1.08)
+    rug_room(ax, len(curves))
     ax.set_title("Supplement: T = %d N m, H = %d, the thesis' model and the parametric one (k(t) = F0/e(t))"
                  % (row["torque"], row["H"]), fontsize=10)
     h, _ = ax.get_legend_handles_labels()

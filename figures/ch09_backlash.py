@@ -11,14 +11,16 @@ Everything (titles, parameters) comes from the run's files.
 """
 import json
 
-from matplotlib.lines import Line2D
-
 import ch08_gear_response as ch08
-from style import case_rows, plot_branch, plt, read_csv, read_params, save
+from style import (COMPARISON_COLOURS, case_rows, flickering_stability, plot_branch, plt, read_csv, read_params, save,
+                   unresolved_handle)
 
 UM = 1e6
 COLORS = ch08.COLORS
-READING_STYLE = {"none": ("k", "-"), "clip": ("C3", "-"), "contact": ("C0", "-")}
+# Backlash readings of one torque: comparison colours, never a torque colour.
+# "none" is chapter 8's 300 N m curve: its torque colour.
+READING_STYLE = {"none": (ch08.COLORS[300.0], "-"), "clip": (COMPARISON_COLOURS[0], "-"),
+                 "contact": (COMPARISON_COLOURS[1], "-")}
 
 
 def key_numbers(data_dir):
@@ -39,13 +41,18 @@ def fig77(data_dir, fig_dir, params):
     fig, ax = plt.subplots(figsize=(8, 4.6))
     for T, col in COLORS.items():
         d = read_csv(data_dir / ("fig77_T%d.csv" % T))
-        ax.plot(*closed(d["phase"], d["ste_um"]), color=col, lw=1.0, ls=":")
+        untouched = all(abs(a - b) < 1e-9 and abs(a - c) < 1e-9
+                        for a, b, c in zip(d["ste_um"], d["ste_clip_um"], d["ste_contact_um"]))
+        if untouched:   # one line, not three on top of each other that the legend would list
+            ax.plot(*closed(d["phase"], d["ste_um"]), color=col, lw=1.5,
+                    label="T = %d N m: backlash not reached (all readings = without)" % T)
+            continue
+        ax.plot(*closed(d["phase"], d["ste_um"]), color=col, lw=1.0, ls=":", label="T = %d N m, without backlash" % T)
         ax.plot(*closed(d["phase"], d["ste_clip_um"]), color=col, lw=1.5, label="T = %d N m, clip (thesis)" % T)
         ax.plot(*closed(d["phase"], d["ste_contact_um"]), color=col, lw=1.0, ls="--",
                 label="T = %d N m, adjacent pair as a spring" % T)
         if T == 300.0:
             ax.plot(d["phase"], d["bn_um"], color="k", lw=1.0, label="local normal backlash b_n (single-pair zone)")
-    ax.plot([], [], color="0.4", ls=":", label="without backlash (ch. 8)")
     ax.set_xlabel("mesh phase [mesh cycles]")
     ax.set_ylabel("STE [um]")
     ax.set_xlim(0, 1)
@@ -64,9 +71,9 @@ def fig77s(data_dir, fig_dir, params, kn):
     ax.plot(ph, [d["ste_um"][i] for i in single], color="0.3", ls=":", marker=".", ms=4,
             label="300 N m without backlash (ch. 8)")
     low = ", ".join("%d N m: %.2f um" % (T, kn["max_ste_free_um_T%d" % T]) for T in COLORS if T != 300.0)
-    ax.plot(ph, [d["ste_clip_um"][i] for i in single], color="C3", lw=3.0, alpha=0.8, zorder=3,
+    ax.plot(ph, [d["ste_clip_um"][i] for i in single], color=READING_STYLE["clip"][0], lw=3.0, alpha=0.8, zorder=3,
             label="300 N m, clip (= b_n where limited)")
-    ax.plot(ph, [d["ste_contact_um"][i] for i in single], color="C0", lw=1.2, ls="--",
+    ax.plot(ph, [d["ste_contact_um"][i] for i in single], color=READING_STYLE["contact"][0], lw=1.2, ls="--",
             label="300 N m, adjacent pair as a spring")
     ax.plot(ph, [d["bn_um"][i] for i in single], color="k", lw=1.0, zorder=4, label="b_n = b cos(mu), mu as set (%s)" % params["backlash_mu"])
     for name, ls in (("thesis", "-."), ("exact", (0, (1, 1)))):
@@ -90,8 +97,9 @@ def fig78(data_dir, fig_dir, params):
     for ax, T in zip(axes, COLORS):
         rows = [i for i, t in enumerate(d["torque"]) if t == T and d["k"][i] <= kmax]
         k = [d["k"][i] for i in rows]
-        for j, (col, name, lab) in enumerate((("free_um", "0.6", "without backlash"), ("clip_um", "C3", "clip"),
-                                              ("contact_um", "C0", "adjacent pair as a spring"))):
+        for j, (col, name, lab) in enumerate((("free_um", "0.6", "without backlash"),
+                                              ("clip_um", READING_STYLE["clip"][0], "clip"),
+                                              ("contact_um", READING_STYLE["contact"][0], "adjacent pair as a spring"))):
             ax.bar([x + (j - 1) * 0.27 for x in k], [d[col][i] for i in rows], width=0.27, color=name, label=lab)
         ax.set_xlabel("harmonic k of the mesh frequency")
         ax.set_title("T = %d N m" % T)
@@ -128,13 +136,16 @@ def fig82(data_dir, fig_dir, params, cases):
     for ax, zoom, H in zip(grid[0], grid[1], (1, 5)):
         rows = [(lb, r) for lb, r in cases.items() if r["torque"] == 300.0 and int(r["H"]) == H]
         rows.sort(key=lambda lr: list(READING_STYLE).index(lr[1]["reading"]))
+        flicker = False
         for lb, r in rows:
             col, _ = READING_STYLE[r["reading"]]
             d = read_csv(data_dir / ("frc_%s.csv" % lb))
             name = "without backlash" if r["reading"] == "none" else r["reading"]
-            plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+            bad = flickering_stability(d, x="f_mesh_hz")
+            flicker = flicker or bool(bad)
+            plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad,
                         label="%s: kc %.2f MN/m, peak %.2f um at %.0f Hz" % (name, r["kc"] / 1e6, r["peak_rms_um"], r["peak_f_hz"]))
-            plot_branch(zoom, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM)
+            plot_branch(zoom, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad)
         peak = max(r["peak_rms_um"] for _, r in rows)
         f_peak = min(r["peak_f_hz"] for _, r in rows)
         zoom.set_xlim(f_peak - 60, f_peak + 200)
@@ -146,10 +157,11 @@ def fig82(data_dir, fig_dir, params, cases):
         ax.set_ylabel("RMS of the oscillating part of x  [um]")
         ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
         lo, hi = ax.get_ylim()
-        ax.set_ylim(0, hi * 1.25)
+        ax.set_ylim(0, hi * 1.6)   # room for the legend above the peak
         ax.set_title("T = 300 N m, H = %d" % H)
         h, _ = ax.get_legend_handles_labels()
-        ax.legend(handles=h + ch08.style_legend([]), loc="upper left", fontsize=7.5)
+        ax.legend(handles=h + ch08.style_legend([unresolved_handle(H)] if flicker else []), loc="upper right",
+                  fontsize=7)
     fig.suptitle("Fig. 82: with and without backlash at 300 N m (%s), zeta = %g" % (reading_text(params), params["zeta"]),
                  fontsize=10)
     return save(fig, fig_dir / "fig82_backlash_vs_none.png")

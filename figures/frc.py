@@ -12,14 +12,14 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import legend_styles, mark_contact, plot_branch, read_csv, save  # noqa: E402
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, contact_rug, legend_styles, plot_branch,  # noqa: E402
+                   read_csv, rug_room, save)
 
-MARKERS = {"fold": ("o", "C3"), "period_doubling": ("D", "C4"), "neimark_sacker": ("^", "C2")}
 
 
 
 def per_contact_state(d):
-    """The markers from the state of each contact (columns contact_1, contact_2, ...):
+    """The contact rug from the state of each contact (columns contact_1, contact_2, ...):
     intermittent where some contact opens and closes within the period, full where none
     does and some contact stays closed. (The summary column `contact` calls a drive flank
     closed all period beside a back flank open all period "intermittent".)"""
@@ -39,11 +39,12 @@ def main():
     fig, ax = plt.subplots(figsize=(6.8, 4.6))
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
-    mark_contact(ax, per_contact_state(d), "x_max", "C0")
+    contact_rug(ax, per_contact_state(d))
     bif = d_dir / "bifurcations.csv"
     if bif.exists() and bif.read_text().count("\n") > 1:
         b = read_csv(bif)
-        for kind, (m, c) in MARKERS.items():
+        for kind, m in BIFURCATION_MARKERS.items():
+            c = BIFURCATION_COLOURS[kind]
             w = [b["omega"][i] for i in range(len(b["omega"])) if b["type"][i] == kind]
             if w:
                 ys = []
@@ -51,6 +52,7 @@ def main():
                     j = min(range(len(d["omega"])), key=lambda k: abs(d["omega"][k] - wi))
                     ys.append(d["x_max"][j])
                 ax.plot(w, ys, ls="none", marker=m, color=c, mfc="none", ms=8, label=kind.replace("_", " "))
+    rug_room(ax)
     direction = model["output"]["direction"]
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
     ax.set_ylabel("output q'x, q = %s [m]" % direction)

@@ -14,10 +14,12 @@ import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-from style import plot_branch, read_csv, save
+from style import BIFURCATION_MARKERS as BIF_MARKER
+from style import CONTACT_COLOURS, plot_branch, read_csv, save, torque_colour
 
-CONTACT_COLOUR = {"drive_loss": "tab:orange", "back_impact": "tab:red", "drive_loss+back_impact": "darkred"}
-BIF_MARKER = {"fold": "o", "branch_point": "^", "period_doubling": "s", "neimark_sacker": "D"}
+# The drive flank opening is the mesh's intermittent contact (the rug colour of every chapter).
+CONTACT_COLOUR = {"drive_loss": CONTACT_COLOURS["intermittent"], "back_impact": CONTACT_COLOURS["back_impact"],
+                  "drive_loss+back_impact": CONTACT_COLOURS["drive_loss+back_impact"]}
 
 
 def torque_label(T):
@@ -42,7 +44,7 @@ def contact_rugs(ax, torques, frc):
                     ax.fill_between([d["speed_rpm"][i], d["speed_rpm"][i + 1]], y0, y0 + h,
                                     color=CONTACT_COLOUR[kind], lw=0)
         ax.text(1.005, y0 + 0.5 * h, "T1 = %g" % T, transform=ax.get_yaxis_transform(), fontsize=6, va="center",
-                color="C%d" % row)
+                color=torque_colour(torques[row], torques))
     ax.axhline(0.0, color="0.5", lw=0.8)
     ax.set_ylim(-(len(torques) * 1.25 + 0.3) * h, top)
 
@@ -53,19 +55,20 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     for ax, y, label in ((axes[0], "dte_rms_um", "DTE RMS (oscillating part) [um]"),
                          (axes[1], "dynamic_factor", "dynamic factor K_v = max |mesh force| / F0")):
         for i, (T, d) in enumerate(zip(torques, frc)):
-            plot_branch(ax, d, y=y, x="speed_rpm", color="C%d" % i, label=torque_label(T))
+            col = torque_colour(T, torques)
+            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=torque_label(T))
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
                 xb, yb = nearest(d, bif[i]["omega"][k], y)
-                ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color="C%d" % i, ms=7)
+                ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color=col, ms=7)
         ax.set_ylabel(label)
         ax.set_ylim(bottom=0)
         contact_rugs(ax, torques, frc)
     if iso is not None:
         for i, T in enumerate(torques):
-            axes[1].plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color="C%d" % i, lw=1.5)
+            axes[1].plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
     axes[1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
-    handles = [Line2D([], [], color="C%d" % i, label=torque_label(T)) for i, T in enumerate(torques)]
+    handles = [Line2D([], [], color=torque_colour(T, torques), label=torque_label(T)) for T in torques]
     handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
                 Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
     handles += [Line2D([], [], color="k", ls="none", marker=m, mfc="none", label=t.replace("_", " "))
@@ -87,18 +90,19 @@ def campbell_figure(d_dir, params, kn, torques, frc):
     modes = read_csv(d_dir / "modes.csv")
     z1 = params["gears"][0]["z"]
     n_max = max(max(d["speed_rpm"]) for d in frc)
-    fig, ax = plt.subplots(figsize=(7.2, 4.6))
+    fig, ax = plt.subplots(figsize=(7.2, 5.4))
     for k in range(1, 5):
         ax.plot([0, n_max], [0, k * z1 * n_max / 60.0], color="0.3", lw=1)
         f_top = 1.8 * max(modes["f_hz"])
-        n_end = min(n_max, 60.0 * f_top / (k * z1))
-        ax.text(n_end, k * z1 * n_end / 60.0, " %d x mesh" % k, fontsize=7, va="bottom")
+        n_end = min(n_max, 60.0 * (1.02 - 0.08 * k) * f_top / (k * z1))   # inside the axes, staggered
+        ax.text(n_end, k * z1 * n_end / 60.0, "%d x mesh " % k, fontsize=7, va="top", ha="right")
     for i, T in enumerate(torques):
         f = [modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
         for j, fj in enumerate(f):
-            ax.axhline(fj, color="C%d" % i, ls=":", lw=1.2,
+            ax.axhline(fj, color=torque_colour(T, torques), ls=":", lw=1.2,
                        label="closed-contact natural frequencies, %s" % torque_label(T) if j == 0 else None)
-        ax.axvline(kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1, color="C%d" % i, ls="-", lw=0.6, alpha=0.6,
+        ax.axvline(kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1, color=torque_colour(T, torques), ls="-",
+                   lw=0.6, alpha=0.6,
                    label="DTE RMS peak, %s" % torque_label(T))
     ax.set_xlim(0, n_max * 1.12)
     ax.set_ylim(0, 1.8 * max(modes["f_hz"]))   # the orders that can meet a mode
@@ -106,7 +110,7 @@ def campbell_figure(d_dir, params, kn, torques, frc):
     ax.set_ylabel("frequency [Hz]")
     ax.set_title("%s\nCampbell diagram: mesh orders against the mesh natural frequencies" % params.get("name", ""),
                  fontsize=8)
-    ax.legend(fontsize=7, loc="upper left")
+    ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=2, frameon=False)   # off the orders
     save(fig, d_dir / "campbell.png")
 
 

@@ -22,7 +22,10 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import read_csv, save  # noqa: E402
+from style import COMPARISON_COLOURS, read_csv, save  # noqa: E402
+
+# Methods, not torques: comparison colours (style.py), never a torque colour.
+BEAM, PE = COMPARISON_COLOURS[0], COMPARISON_COLOURS[1]
 
 GEARS = [("thesis_pair", "thesis gear z 50/50, m 3 mm",
           "beam: thesis readings (Palmgren per tooth, fused pairs)"),
@@ -68,9 +71,9 @@ def methods_figure(root, fig_dir):
         for r, style, what in ((b, "-", "beam model"), (p, "--", "potential energy")):
             ph = r["ste"]["phase"]
             i = r["i"]
-            ax_k.plot(ph, [v / 1e6 for v in r["ste"]["k_N_per_m"]], style, color="C0" if r is b else "C3",
+            ax_k.plot(ph, [v / 1e6 for v in r["ste"]["k_N_per_m"]], style, color=BEAM if r is b else PE,
                       label="%s: mean %.0f MN/m" % (what, r["kn"]["mesh_stiffness_mean_N_per_m_%d" % i] / 1e6))
-            ax_e.plot(ph, r["ste"]["ste_um"], style, color="C0" if r is b else "C3",
+            ax_e.plot(ph, r["ste"]["ste_um"], style, color=BEAM if r is b else PE,
                       label="%s: peak-to-peak %.2f um" % (what, r["kn"]["ste_ptp_um_%d" % i]))
         iso = b["kn"]["iso6336_c_gamma_alpha_N_per_m"] / 1e6
         ax_k.axhline(iso, color="k", ls=":", lw=1.2, label="ISO 6336-1 c_gamma_alpha b = %.0f MN/m" % iso)
@@ -99,7 +102,7 @@ def methods_figure(root, fig_dir):
 
 def harris_figure(root, fig_dir):
     fig, ax = plt.subplots(figsize=(7.4, 4.6))
-    for name, color, what in (("thesis_pair_relief", "C0", "beam model"), ("thesis_pair_relief_pe", "C3", "potential energy")):
+    for name, color, what in (("thesis_pair_relief", BEAM, "beam model"), ("thesis_pair_relief_pe", PE, "potential energy")):
         r = run(root, name)
         h, kn = r["harris"], r["kn"]
         ax.plot(h["torque_Nm"], h["ste_ptp_um_unmodified"], ":", color=color, marker=".", ms=4,

@@ -14,10 +14,12 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.lines import Line2D  # noqa: E402
 
-from style import plot_branch, read_csv, save  # noqa: E402
+from style import COMPARISON_COLOURS, plot_branch, read_csv, save  # noqa: E402
 
 SCENES = [("thesis gear, 300 N m", "thesis_pair", 3), ("relieved gear, light load 20 N m", "thesis_pair_light_load", 1)]
-MODELS = [("one DOF (rigid bearings)", "", "C0"), ("six DOFs (bearings 1e8 N/m)", "_six_dof", "C3")]
+# Models, not torques: comparison colours (style.py), never a torque colour.
+MODELS = [("one DOF (rigid bearings)", "", COMPARISON_COLOURS[0]),
+          ("six DOFs (bearings 1e8 N/m)", "_six_dof", COMPARISON_COLOURS[1])]
 
 
 def load(data, example, i):

@@ -22,7 +22,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
 import gear_dynamics  # noqa: E402
-from style import read_csv, save  # noqa: E402
+from style import read_csv, save, torque_colour  # noqa: E402
 
 
 def load(d_dir):
@@ -55,7 +55,7 @@ def ste_figure(d_dir, params, kn, torques, ste):
     fig, ax = plt.subplots(figsize=(6.8, 4.4))
     shade_loaded(ax, ste[-1])
     for i, (T, d) in enumerate(zip(torques, ste)):
-        ax.plot(d["phase"], d["ste_um"], "-", color="C%d" % i, marker=".", ms=3,
+        ax.plot(d["phase"], d["ste_um"], "-", color=torque_colour(T, torques), marker=".", ms=3,
                 label="T1 = %g N m: peak-to-peak %.3f um" % (T, kn["ste_ptp_um_%d" % (i + 1)]))
     ax.set_xlabel("mesh phase [mesh cycles] (0: a pair enters at A)")
     ax.set_ylabel("static transmission error STE [um]")
@@ -71,9 +71,9 @@ def stiffness_figure(d_dir, params, kn, torques, ste):
     shade_loaded(ax, ste[-1])
     for i, (T, d) in enumerate(zip(torques, ste)):
         k = kn["mesh_stiffness_mean_N_per_m_%d" % (i + 1)] / 1e6
-        ax.plot(d["phase"], [v / 1e6 for v in d["k_N_per_m"]], "-", color="C%d" % i,
+        ax.plot(d["phase"], [v / 1e6 for v in d["k_N_per_m"]], "-", color=torque_colour(T, torques),
                 label="T1 = %g N m (mean %.2f MN/m, dotted)" % (T, k))
-        ax.axhline(k, color="C%d" % i, ls=":", lw=1)
+        ax.axhline(k, color=torque_colour(T, torques), ls=":", lw=1)
     iso = kn.get("iso6336_c_gamma_alpha_N_per_m")
     if iso:
         ax.axhline(iso / 1e6, color="k", ls="--", lw=1, label="ISO 6336-1 c_gamma_alpha b = %.1f MN/m" % (iso / 1e6))
@@ -100,7 +100,7 @@ def shares_figure(d_dir, params, kn, torques, ste):
     for i, (T, d) in enumerate(zip(torques, ste)):
         pairs = sorted(k for k in d if k.startswith("share_pair_"))
         for j, col in enumerate(pairs):
-            ax.plot(d["phase"], d[col], styles[j % 3], color="C%d" % i,
+            ax.plot(d["phase"], d[col], styles[j % 3], color=torque_colour(T, torques),
                     label="T1 = %g N m, pair %d" % (T, j + 1))
     ax.set_xlabel("mesh phase [mesh cycles] (pair 1 enters at A at phase 0; pair 2 is one base pitch ahead)")
     ax.set_ylabel("share of the tooth force F_i / F [-]")
@@ -119,7 +119,7 @@ def spectrum_figure(d_dir, params, kn, torques):
     fig, ax = plt.subplots(figsize=(6.8, 4.0))
     for i, T in enumerate(torques):
         ax.bar([k - 0.4 + width * (i + 0.5) for k in orders], s["amplitude_um_%d" % (i + 1)][1:], width,
-               color="C%d" % i, label="T1 = %g N m (mean %.3f um)" % (T, s["amplitude_um_%d" % (i + 1)][0]))
+               color=torque_colour(T, torques), label="T1 = %g N m (mean %.3f um)" % (T, s["amplitude_um_%d" % (i + 1)][0]))
     ax.set_xlabel("mesh order k (harmonic of the mesh frequency)")
     ax.set_ylabel("STE amplitude sqrt(a_k^2 + b_k^2) [um]")
     ax.set_xticks(orders)

@@ -4,27 +4,134 @@
     report.py BUILD_DIR            write BUILD_DIR/figures/index.html
     report.py --check INDEX.html   exit 1 unless every image the page links exists
 
-Every figure grouped by chapter with its thesis figure number and a caption (what it
-shows, what to notice: figures/captions.py), the chapter's key numbers with the
-thesis value, the reference value, ours and the check status, and the thesis
-figures that cannot be computed (listed, not faked). Static HTML, no JavaScript.
+At the top: a table from thesis figure number to image. Then, per chapter: every figure
+with its thesis figure number and its own caption (what it shows, what to notice:
+figures/captions.py); the chapter's key numbers, each with three things:
+  - the thesis value (or "not printed": chapters 2-6 of the thesis print figures, not numbers;
+    a claim in words, the reference's "thesis_text", is shown and marked as differing),
+  - ours (this run, build/data/<chapter>/key_numbers.json),
+  - the verdict of the independent check (reference/<chapter>.json: a closed form, a second
+    method, an independent script), and, where ours and the thesis differ beyond the thesis'
+    printed digits, the deviation and its reason (the reference's "note", from the README);
+and the chapter's deviations from the thesis, copied from its README. A reference number
+made by the quick run that counts the run's own points ("quick_run_only" in the reference:
+CTest checks it on the quick run) is shown, never compared with the full run: a report
+never shows a failure that is not one. Last, the thesis figures that cannot be computed.
+Static HTML, no JavaScript; a figure opens full size when clicked.
 """
 import html
 import json
+import math
 import pathlib
 import re
+import struct
 import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 from captions import CHAPTERS, NOT_COMPUTABLE  # noqa: E402
 
-STYLE = """body{font-family:sans-serif;max-width:1100px;margin:auto;padding:1em;color:#222}
+STYLE = """body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}
 h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:2em}
 figure{display:inline-block;width:48%;vertical-align:top;margin:0 1% 1.5em 0}
+figure.wide{width:98%}
 figure img{width:100%;border:1px solid #ddd}figcaption{font-size:.85em}
-table{border-collapse:collapse;font-size:.8em;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 6px}
-.pass{color:#070}.fail{color:#b00;font-weight:bold}.none{color:#777}nav a{margin-right:1em}"""
+table{border-collapse:collapse;font-size:.8em;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 6px;vertical-align:top}
+td.num{text-align:right;white-space:nowrap}
+.pass{color:#070}.fail{color:#b00;font-weight:bold}.none{color:#777}.differs{color:#a50}
+nav a{margin-right:1em}ul.index{columns:2;font-size:.85em}.dev li{margin-bottom:.3em;font-size:.9em}"""
+
+# Units shown scaled for people: (unit, threshold, factor, shown unit).
+SCALED_UNITS = [("N/m", 1e5, 1e-6, "MN/m")]
+
+
+def people_unit(unit, value):
+    """(factor, unit) to show a value of this unit: 473294316.9 N/m as 473.29 MN/m."""
+    for u, threshold, factor, shown in SCALED_UNITS:
+        if unit == u and abs(value) >= threshold:
+            return factor, shown
+    return 1.0, unit
+
+
+def fmt(v, digits=6):
+    """A number for people: integers as integers, otherwise `digits` significant digits, no
+    exponent unless the number is tiny or huge."""
+    if v is None or (isinstance(v, float) and math.isnan(v)):
+        return ""
+    if float(v) == int(v) and abs(v) < 1e9:
+        return "%d" % int(v)
+    if v != 0 and (abs(v) < 1e-3 or abs(v) >= 1e7):
+        return "%.3g" % v
+    return "%.*g" % (digits, v)
+
+
+def with_unit(text, unit):
+    return text if unit in ("", "-") else "%s %s" % (text, unit)
+
+
+def tolerance_text(tol, value, factor, unit):
+    """'exact', '± 0.005 rad/s', 'rel. 1e-09', or a range '10 to 1000' when the allowed band
+    is wider than half the value."""
+    a, r = tol.get("abs", 0.0), tol.get("rel", 0.0)
+    allowed = max(a, r * abs(value))
+    if allowed == 0:
+        return "exact"
+    if value != 0 and allowed >= 0.5 * abs(value):
+        return "range %s to %s" % (fmt((value - allowed) * factor, 4), with_unit(fmt((value + allowed) * factor, 4), unit))
+    if r and r * abs(value) >= a:
+        return "rel. %g" % r
+    return "± %s" % with_unit(fmt(a * factor, 3), unit)
+
+
+def printed_digits(x):
+    """Significant digits the thesis printed for x (trailing zeros of an integer not counted)."""
+    s = repr(float(x)).lower()
+    if "e" in s:
+        s = s.split("e")[0]
+    s = s.lstrip("-")
+    if s.endswith(".0"):
+        s = s[:-2].rstrip("0") or "0"
+    digits = s.replace(".", "").lstrip("0")
+    return max(len(digits), 1)
+
+
+def agrees_with_thesis(ours, thesis):
+    """True when ours, rounded to the digits the thesis printed, is the thesis' number."""
+    if thesis == 0:
+        return ours == 0
+    n = printed_digits(thesis)
+    e = math.floor(math.log10(abs(thesis)))
+    unit = 10.0 ** (e - n + 1)
+    return abs(ours - thesis) <= 0.5 * unit * (1 + 1e-9)
+
+
+def verdict(r, ours):
+    """(text, css class) of the independent check for one number."""
+    if ours is None:
+        return "not in this run", "none"
+    if r.get("quick_run_only"):
+        return ("not compared: the reference %s is of the quick run (%s); CTest checks it there"
+                % (fmt(r["value"]), r["quick_run_only"])), "none"
+    tol = r.get("tolerance", {})
+    allowed = max(tol.get("abs", 0.0), tol.get("rel", 0.0) * abs(r["value"]))
+    return ("agrees", "pass") if abs(ours - r["value"]) <= allowed else ("FAIL", "fail")
+
+
+def thesis_against_ours(r, ours, factor, unit):
+    """(thesis cell, comparison cell) for one number."""
+    thesis, note = r.get("thesis_value"), r.get("note", "")
+    if thesis is None and r.get("thesis_text"):   # a claim in words, which ours contradicts (the note says how)
+        return "<i>%s</i>" % html.escape(r["thesis_text"]), "<span class='differs'>differs</span>. %s" % html.escape(note)
+    if thesis is None:
+        return "<span class='none'>not printed</span>", html.escape(note)
+    cell = with_unit(("%g" % (thesis * factor)), unit)
+    if ours is None:
+        return cell, html.escape(note)
+    if agrees_with_thesis(ours, thesis):
+        return cell, "<span class='pass'>agrees to the printed digits</span>" + (
+            ". " + html.escape(note) if note else "")
+    dev = ("%+.2g %s" % ((ours - thesis) * factor, unit)) if thesis == 0 else "%+.2f %%" % (100 * (ours - thesis) / abs(thesis))
+    return cell, "<span class='differs'>differs: %s</span>. %s" % (html.escape(dev), html.escape(note))
 
 
 def key_number_rows(ref_file, data_dir):
@@ -32,75 +139,157 @@ def key_number_rows(ref_file, data_dir):
         return []
     ref = json.load(open(ref_file))["numbers"]
     ours_file = data_dir / "key_numbers.json"
-    ours = json.load(open(ours_file)) if ours_file.exists() else {}
+    ours_all = json.load(open(ours_file)) if ours_file.exists() else {}
     rows = []
     for name, r in ref.items():
-        tol = r.get("tolerance", {})
-        allowed = max(tol.get("abs", 0.0), tol.get("rel", 0.0) * abs(r["value"]))
-        if name in ours:
-            v = ours[name]["value"]
-            status = ("pass", "pass") if abs(v - r["value"]) <= allowed else ("FAIL", "fail")
-            ours_text = "%.10g" % v
-        else:
-            status, ours_text = ("not in this run", "none"), ""
-        thesis = r.get("thesis_value")
-        rows.append("<tr><td>%s</td><td>%s</td><td>%.10g</td><td>%s</td><td>%s</td><td>%s</td>"
-                    "<td class='%s'>%s</td></tr>" % (
-                        html.escape(name), html.escape(r.get("unit", "")), r["value"],
-                        "" if thesis is None else html.escape(str(thesis)), ours_text,
-                        html.escape(json.dumps(tol)), status[1], status[0]))
+        ours = ours_all[name]["value"] if name in ours_all else None
+        factor, unit = people_unit(r.get("unit", ""), r["value"])
+        text, css = verdict(r, ours)
+        thesis_cell, comparison = thesis_against_ours(r, ours, factor, unit)
+        rows.append("<tr><td>%s</td><td class='num'>%s</td><td class='num'>%s</td><td class='num'>%s<br>"
+                    "<span class='none'>%s</span></td><td class='%s'>%s</td><td>%s</td></tr>" % (
+                        html.escape(name), thesis_cell,
+                        "" if ours is None else html.escape(with_unit(fmt(ours * factor), unit)),
+                        html.escape(with_unit(fmt(r["value"] * factor, 10), unit)),
+                        html.escape(tolerance_text(r.get("tolerance", {}), r["value"], factor, unit)),
+                        css, html.escape(text), comparison))
     return rows
 
 
-def chapter_section(build, ch, fig_dir):
-    out = ['<h2 id="%s">%s</h2>' % (ch["program"], html.escape(ch["title"]))]
-    out.append("<p>Program <code>build/bin/%s</code>; data in <code>build/data/%s/</code>; README "
-               "<code>chapters/%s/README.md</code>.</p>" % (ch["program"], ch["program"], ch["program"]))
-    shown = set()
+KEY_TABLE_HEAD = ("<table><tr><th>number</th><th>thesis</th><th>ours (this run)</th>"
+                  "<th>independent reference<br>and tolerance</th><th>check</th>"
+                  "<th>thesis against ours</th></tr>")
+
+
+def markdown_inline(text):
+    """The README's inline markdown (**bold**, `code`) as HTML."""
+    text = html.escape(text)
+    text = re.sub(r"\*\*(.+?)\*\*", r"<b>\1</b>", text)
+    return re.sub(r"`([^`]+)`", r"<code>\1</code>", text)
+
+
+def readme_deviations(readme):
+    """The bullets of the README's sections on deviations from the thesis: [(heading, [items])]."""
+    if not readme.exists():
+        return []
+    sections, current = [], None
+    for line in readme.read_text().splitlines():
+        if line.startswith("#"):
+            heading = line.lstrip("#").strip()
+            wanted = re.search(r"deviation|thesis errors|the kc question", heading, re.I)
+            current = (heading, []) if wanted else None
+            if current:
+                sections.append(current)
+        elif current is not None:
+            if re.match(r"\s*[*-] ", line):
+                current[1].append(line.strip()[2:])
+            elif line.strip() and current[1] and line.startswith(" "):
+                current[1][-1] += " " + line.strip()
+    return [(h, items) for h, items in sections if items]
+
+
+def figure_html(name, thesis_fig, caption, wide):
+    return ('<figure%s id="%s"><a href="%s"><img src="%s" alt="%s"></a><figcaption><b>%s</b> '
+            '(<code>%s</code>): %s</figcaption></figure>' % (
+                " class='wide'" if wide else "", name, name, name, name, html.escape(thesis_fig), name,
+                html.escape(caption)))
+
+
+def is_wide(png):
+    """A multi-panel figure (aspect >= 1.9 or wider than 1300 px) is shown at full width: at half
+    width its panels are illegible."""
+    with open(png, "rb") as f:
+        head = f.read(24)
+    if head[:8] != b"\x89PNG\r\n\x1a\n":
+        return False
+    w, h = struct.unpack(">II", head[16:24])
+    return w >= 1300 or w >= 1.9 * h
+
+
+def chapter_figures(ch, fig_dir):
+    """[(file name, thesis figure, caption, wide)] of the chapter's figures that exist."""
+    out = []
     for pattern, thesis_fig, caption in ch["figures"]:
-        paths = sorted(fig_dir.glob(pattern))
-        if not paths:
-            out.append("<p class='none'>%s (thesis %s): not drawn in this run.</p>" % (html.escape(pattern), thesis_fig))
-        for path in paths:
-            name = path.name
-            shown.add(name)
-            out.append('<figure><a href="%s"><img src="%s" alt="%s"></a><figcaption><b>Thesis %s</b> '
-                       '(<code>%s</code>): %s</figcaption></figure>' % (name, name, name, thesis_fig, name,
-                                                                         html.escape(caption)))
-    rows = key_number_rows(HERE.parent / "reference" / (ch["program"] + ".json"), build / "data" / ch["program"])
+        for path in sorted(fig_dir.glob(pattern)):
+            out.append((path.name, thesis_fig, caption, is_wide(path)))
+    return out
+
+
+def chapter_section(build, ch, fig_dir):
+    program = ch["program"]
+    out = ['<h2 id="%s">%s</h2>' % (program, html.escape(ch["title"]))]
+    out.append("<p>Program <code>build/bin/%s</code>; data in <code>build/data/%s/</code>; README "
+               "<code>chapters/%s/README.md</code>.</p>" % (program, program, program))
+    figs = chapter_figures(ch, fig_dir)
+    for pattern, thesis_fig, _ in ch["figures"]:
+        if not list(fig_dir.glob(pattern)):
+            out.append("<p class='none'>%s (%s): not drawn in this run.</p>" % (html.escape(pattern), thesis_fig))
+    out += [figure_html(*f) for f in figs]
+    rows = key_number_rows(HERE.parent / "reference" / (program + ".json"), build / "data" / program)
     if rows:
-        out.append("<h3>Key numbers (reference/%s.json)</h3><table><tr><th>number</th><th>unit</th>"
-                   "<th>reference</th><th>thesis</th><th>ours</th><th>tolerance</th><th>status</th></tr>"
-                   % ch["program"])
+        out.append("<h3>Key numbers: thesis, ours, independent check (reference/%s.json)</h3>" % program)
+        if "not printed" in "".join(rows):
+            out.append("<p class='none'>\"not printed\": the thesis gives no value for that number (its chapters "
+                       "2-6 show figures only); what it says in words is compared in the deviations below.</p>")
+        out.append(KEY_TABLE_HEAD)
         out += rows
         out.append("</table>")
-    return out, shown
+    devs = readme_deviations(HERE.parent / "chapters" / program / "README.md")
+    if devs:
+        out.append("<h3>Deviations from the thesis (chapters/%s/README.md)</h3>" % program)
+        for heading, items in devs:
+            out.append("<p><i>%s</i></p><ul class='dev'>" % html.escape(heading))
+            out += ["<li>%s</li>" % markdown_inline(i) for i in items]
+            out.append("</ul>")
+    return out, figs
+
+
+def thesis_number_key(thesis_fig):
+    m = re.search(r"\d+", thesis_fig)
+    return (0, int(m.group())) if m and thesis_fig.startswith("Fig") else (1, 0)
+
+
+def figure_index(all_figs):
+    """Table at the top: thesis figure number -> image(s)."""
+    by_fig = {}
+    for name, thesis_fig, _, _ in all_figs:
+        by_fig.setdefault(thesis_fig, []).append(name)
+    out = ["<h2 id='index'>Thesis figure to image</h2><ul class='index'>"]
+    for thesis_fig in sorted(by_fig, key=lambda f: (thesis_number_key(f), f)):
+        links = ", ".join('<a href="#%s">%s</a>' % (n, n) for n in by_fig[thesis_fig])
+        out.append("<li><b>%s</b>: %s</li>" % (html.escape(thesis_fig), links))
+    out.append("</ul>")
+    return out
 
 
 def write(build):
     build = pathlib.Path(build)
     fig_dir = build / "figures"
-    body = ["<h1>gearhb: every figure of the thesis that can be computed</h1>",
+    head = ["<h1>gearhb: every figure of the thesis that can be computed</h1>",
             "<p>Made by <code>make figures</code>. Each chapter: its figures with the thesis figure number "
-            "and what to notice, then its key numbers against <code>reference/</code>.</p><nav>"]
-    body += ['<a href="#%s">%s</a>' % (c["program"], c["program"]) for c in CHAPTERS] + ["</nav>"]
-    shown = set()
+            "and what to notice (click a figure to enlarge it), its key numbers (the thesis' value, ours, the "
+            "verdict of the independent check, and where ours and the thesis differ, by how much and why), "
+            "and its deviations from the thesis.</p><nav><a href='#index'>figure index</a>"]
+    head += ['<a href="#%s">%s</a>' % (c["program"], c["program"]) for c in CHAPTERS] + ["</nav>"]
+    body, all_figs = [], []
     for ch in CHAPTERS:
         if not (build / "data" / ch["program"]).exists():
             continue
-        part, s = chapter_section(build, ch, fig_dir)
+        part, figs = chapter_section(build, ch, fig_dir)
         body += part
-        shown |= s
+        all_figs += figs
+    shown = {f[0] for f in all_figs}
     extra = sorted(p.name for p in fig_dir.glob("*.png") if p.name not in shown)
     if extra:
         body.append("<h2>Further figures</h2>")
-        body += ['<figure><img src="%s" alt="%s"><figcaption><code>%s</code></figcaption></figure>' % (e, e, e)
-                 for e in extra]
+        body += ['<figure><a href="%s"><img src="%s" alt="%s"></a><figcaption><code>%s</code></figcaption></figure>'
+                 % (e, e, e, e) for e in extra]
     body.append("<h2>Thesis figures that cannot be computed</h2><ul>")
     body += ["<li>%s: %s</li>" % (html.escape(f), html.escape(why)) for f, why in NOT_COMPUTABLE]
     body.append("</ul>")
     page = ("<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>gearhb figures</title>"
-            "<style>%s</style></head><body>%s</body></html>\n" % (STYLE, "\n".join(body)))
+            "<style>%s</style></head><body>%s</body></html>\n" % (
+                STYLE, "\n".join(head + figure_index(all_figs) + body)))
     tmp = fig_dir / "index.html.tmp"
     tmp.write_text(page)
     tmp.replace(fig_dir / "index.html")

@@ -1,8 +1,19 @@
 """Shared plotting helpers: read the chapter CSVs and draw frequency responses.
 
-Convention for every frequency-response figure: stable branches solid,
-unstable branches (Floquet multipliers of the orbit) dashed; markers show where the contact is intermittent
-or full; reference levels (gap, natural frequencies) dotted and labelled.
+One convention for every figure of every chapter, defined here and nowhere else:
+  - stability: stable branches solid, unstable branches (Floquet multipliers of the orbit) dashed;
+    where the stability label is not trusted, grey (UNRESOLVED);
+  - contact state: a thin rug at the bottom of the axes, one row per curve (contact_rug):
+    gold where the contact is intermittent, grey where it is full, empty where open; it never
+    covers a curve, so the solid/dashed stability stays readable;
+  - torques: one colour per torque (torque_colour): the thesis' 100, 200, 300 N m are blue,
+    orange, red in every chapter; a figure with other torques colours them by rank, lightest
+    blue, heaviest red;
+  - curves that are not torques (models, readings, methods, harmonics H) use COMPARISON_COLOURS,
+    never a torque colour;
+  - bifurcations: one marker per type (BIFURCATION_MARKERS), hollow;
+  - linear references: LINEAR_OPEN / LINEAR_CLOSED (grey dash-dot), natural frequencies
+    NATURAL_OPEN / NATURAL_CLOSED (grey dotted verticals), contact levels CONTACT_LEVEL.
 """
 import csv
 
@@ -54,33 +65,132 @@ def runs(flags):
     return out
 
 
-def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0):
-    """One continuation branch: solid where stable, dashed where unstable.
+def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, unresolved=()):
+    """One continuation branch: solid where stable, dashed where unstable, grey (UNRESOLVED)
+    at the indices `unresolved` (a stability label that is not trusted).
     Consecutive runs share their end point so the curve stays connected."""
     xs, ys = d[x], [v * scale for v in d[y]]
+    bad = set(unresolved)
     first = True
-    for flag, i0, i1 in runs([int(s) for s in d["stable"]]):
+    for flag, i0, i1 in runs([2 if i in bad else int(s) for i, s in enumerate(d["stable"])]):
         j1 = min(i1 + 1, len(xs) - 1)
+        if flag == 2:
+            ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=UNRESOLVED, ls="-", lw=2.4, alpha=0.9, zorder=3)
+            continue
         ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=color, ls="-" if flag else "--",
                 lw=1.4, label=label if first else None)
         first = False
 
 
-def mark_contact(ax, d, y="x_max", color="C0", x="omega", scale=1.0):
-    """Small markers on points in intermittent (dot) and full (square) contact."""
-    for state, m in (("intermittent", "."), ("full", "s")):
-        pts = [(d[x][i], d[y][i] * scale) for i in range(len(d[x])) if d["contact"][i] == state]
-        if pts:
-            ax.plot(*zip(*pts), ls="none", marker=m, ms=5 if m == "." else 3, color=color, alpha=0.6)
+def flickering_stability(d, x="omega", margin=2):
+    """Indices where the stability label is not trusted. Between two turning points (folds in x)
+    the label of a simple overhang is constant, and it changes at the folds (give or take
+    `margin` points). On each such piece of the branch the points whose label differs from the
+    piece's majority, away from its ends, are the untrusted ones; the whole span from the first
+    to the last of them is returned (the label flips there)."""
+    xs, st = d[x], [int(s) for s in d["stable"]]
+    turns = [0] + [i for i in range(1, len(xs) - 1) if (xs[i] - xs[i - 1]) * (xs[i + 1] - xs[i]) < 0] + [len(xs) - 1]
+    out = []
+    for a, b in zip(turns[:-1], turns[1:]):
+        piece = st[a:b + 1]
+        majority = 1 if 2 * sum(piece) >= len(piece) else 0
+        odd = [i for i in range(a + margin + 1, b - margin) if st[i] != majority]
+        if odd:
+            out += range(odd[0] - 1, odd[-1] + 2)
+    return out
 
 
-def legend_styles(ax):
-    """Proxy legend entries explaining line styles and markers."""
+def unresolved_handle(H):
     from matplotlib.lines import Line2D
+    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %d: the label flips\n"
+                  "between folds (the %d-harmonic orbit is too far from the exact one)" % (H, H))
+
+
+# The thesis' torques in every chapter (N m) and their colours: blue, orange, red.
+THESIS_TORQUES = (100.0, 200.0, 300.0)
+TORQUE_PALETTE = ("#1f77b4", "#ff7f0e", "#d62728")
+# Curves that are not torques (models, backlash readings, methods, harmonics): never a torque colour.
+COMPARISON_COLOURS = ("#9467bd", "#17becf", "#8c564b", "#2ca02c", "#e377c2", "#7f7f7f")
+UNRESOLVED = "0.6"     # a branch whose stability label is not trusted
+
+BIFURCATION_MARKERS = {"fold": "o", "branch_point": "D", "period_doubling": "v", "neimark_sacker": "*"}
+# Their colours where one curve is drawn (where several are, a marker takes its curve's colour).
+BIFURCATION_COLOURS = {"fold": "k", "branch_point": "#9467bd", "period_doubling": "#8c564b", "neimark_sacker": "#17becf"}
+
+LINEAR_OPEN = dict(color="0.55", ls="-.", lw=1.0)
+LINEAR_CLOSED = dict(color="0.2", ls="-.", lw=1.0)
+NATURAL_OPEN = dict(color="0.6", ls=":", lw=0.9)
+NATURAL_CLOSED = dict(color="0.25", ls=":", lw=0.9)
+CONTACT_LEVEL = dict(color="#b22222", ls=":", lw=1.2)
+
+CONTACT_COLOURS = {"intermittent": "#e6b800", "full": "0.55",
+                   # a gear mesh with backlash (figures/gear_dynamics.py): the back flank hits
+                   "back_impact": "#5e3c99", "drive_loss+back_impact": "#2d004b"}
+RUG_HEIGHT = 0.022     # axes fraction per rug row
+
+
+def torque_colour(T, torques=THESIS_TORQUES):
+    """The colour of torque T among the figure's `torques`: the thesis torques by value, others by
+    rank (lightest blue, heaviest red; more than three from a sequential map)."""
+    if float(T) in THESIS_TORQUES and all(float(t) in THESIS_TORQUES for t in torques):
+        return TORQUE_PALETTE[THESIS_TORQUES.index(float(T))]
+    ranked = sorted(float(t) for t in torques)
+    i, n = ranked.index(float(T)), len(ranked)
+    if n <= 3:
+        return TORQUE_PALETTE[-1] if n == 1 else (TORQUE_PALETTE[0], TORQUE_PALETTE[-1])[i] if n == 2 else TORQUE_PALETTE[i]
+    import matplotlib.cm
+    return matplotlib.cm.plasma(0.1 + 0.75 * i / (n - 1))
+
+
+def contact_rug(ax, d, x="omega", row=0, colour=None, scale=1.0):
+    """The contact state along one curve as a thin band at the bottom of the axes (row `row`,
+    counted upwards): gold where intermittent, grey where full, nothing where open. A short tick
+    in the curve's colour at the left end names the row. Nothing hides the curves above."""
+    y0 = 0.004 + row * (RUG_HEIGHT + 0.006)
+    tr = ax.get_xaxis_transform()
+    xs = [v * scale for v in d[x]]
+    for state, i0, i1 in runs(list(d["contact"])):
+        if state in CONTACT_COLOURS:
+            lo, hi = min(xs[i0:i1 + 1]), max(xs[i0:i1 + 1])
+            if hi == lo:
+                continue
+            ax.fill_between([lo, hi], [y0, y0], [y0 + RUG_HEIGHT] * 2, transform=tr, color=CONTACT_COLOURS[state],
+                            lw=0, zorder=1)
+    if colour is not None:
+        ax.plot([0.0, 0.012], [y0 + RUG_HEIGHT / 2] * 2, transform=ax.transAxes, color=colour, lw=3,
+                solid_capstyle="butt", clip_on=False, zorder=2)
+
+
+def rug_room(ax, rows=1):
+    """Lower the y axis so the contact rug (rows at the bottom) lies below every curve."""
+    lo, hi = ax.get_ylim()
+    frac = 0.01 + rows * (RUG_HEIGHT + 0.006)
+    if ax.get_yscale() == "log":
+        import math
+        llo, lhi = math.log10(lo), math.log10(hi)
+        ax.set_ylim(10 ** ((llo - frac * lhi) / (1 - frac)), hi)
+    else:
+        ticks = [t for t in ax.get_yticks() if lo - 1e-12 * abs(hi - lo) <= t <= hi]
+        ax.set_ylim((lo - frac * hi) / (1 - frac), hi)
+        if lo == 0:   # a quantity that is never negative (an RMS): no tick below 0 beside the rug
+            ax.set_yticks(ticks)
+
+
+def legend_styles(ax=None):
+    """Proxy legend entries explaining line styles and the contact rug."""
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
     return [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
             Line2D([], [], color="k", ls="--", label="unstable (Floquet)"),
-            Line2D([], [], color="k", ls="none", marker=".", label="intermittent contact"),
-            Line2D([], [], color="k", ls="none", marker="s", ms=3, label="full contact")]
+            Patch(color=CONTACT_COLOURS["intermittent"], label="intermittent contact (rug at the bottom)"),
+            Patch(color=CONTACT_COLOURS["full"], label="full contact (rug at the bottom)")]
+
+
+def bifurcation_handles(kinds, colour=None):
+    """Legend entries for the bifurcation types drawn (colour None: each type's own colour)."""
+    from matplotlib.lines import Line2D
+    return [Line2D([], [], ls="none", marker=BIFURCATION_MARKERS[k], color=colour or BIFURCATION_COLOURS[k],
+                   mfc="none", ms=7, label=k.replace("_", " ")) for k in kinds]
 
 
 def save(fig, path):
