@@ -202,3 +202,26 @@ NOT_COMPUTABLE = [
      "(ch09 backlash_geometry.csv has them); not drawn yet"),
     ("Parker's curves in Figs. 60 and 79", "not available: our STE and coefficients are drawn alone, nothing in their place"),
 ]
+
+# The figures of a gearhb_gear run (figures/gearhb_gear.py, figures/gear_dynamics.py), one
+# page per example in the report: file name in the run folder -> what it shows.
+GEAR_CAPTIONS = {
+    "ste.png": "Loaded static transmission error over one mesh cycle, one curve per torque. Notice the "
+               "steps where a pair enters or leaves the path, and how tip relief flattens them at its design load.",
+    "stiffness.png": "Mesh stiffness k = F / (STE - g) over the mesh cycle per torque: the one-pair / two-pair "
+                     "step at eps_alpha - 1 of the cycle.",
+    "shares.png": "Load share of each tooth pair along the mesh cycle (exact contact problem): where a pair "
+                  "takes up and gives off its load.",
+    "spectrum.png": "STE amplitude per mesh order: what the mesh excites at each multiple of the mesh frequency.",
+    "harris.png": "Harris map: STE peak-to-peak against torque with the file's relief and without it. The "
+                  "minimum marks the load the relief suits.",
+    "response.png": "DTE RMS and dynamic factor K_v over speed per torque (stable solid, unstable dashed, "
+                    "bifurcations marked, ISO 6336-1 K_v dotted where computed); the rug below the axis is the "
+                    "contact of each flank (drive-flank loss, back-flank impact).",
+    "campbell.png": "Campbell diagram: mesh orders 1-4 against speed with the mesh natural frequencies; a "
+                    "resonance where an order line meets a natural frequency.",
+    "time_history.png": "Two periods of the DTE and the mesh force (drive and back flank) at the hardest contact "
+                        "of the run: where the teeth separate and where the back flank is hit.",
+    "dte_spectrum.png": "DTE per mesh order at three speeds (below, at and above the peak): which order carries "
+                        "the response.",
+}

@@ -29,7 +29,7 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from captions import CHAPTERS, NOT_COMPUTABLE  # noqa: E402
+from captions import CHAPTERS, GEAR_CAPTIONS, NOT_COMPUTABLE  # noqa: E402
 
 STYLE = """body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}
 h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:2em}
@@ -138,6 +138,9 @@ def key_number_rows(ref_file, data_dir):
     if not ref_file.exists():
         return []
     ref = json.load(open(ref_file))["numbers"]
+    for r in ref.values():   # a gear example's published value (ISO/TR, FZG drawing) takes the thesis column
+        if "thesis_value" not in r and "published_value" in r:
+            r["thesis_value"] = r["published_value"]
     ours_file = data_dir / "key_numbers.json"
     ours_all = json.load(open(ours_file)) if ours_file.exists() else {}
     rows = []
@@ -262,6 +265,48 @@ def figure_index(all_figs):
     return out
 
 
+def gear_run_page(build, run_dir, fig_dir):
+    """A page per gear-pair run of make figures (build/data/gearhb_gear/<example>/): its
+    figures, its key numbers against reference/gear_examples/<example>.json (the published
+    or thesis value where there is one, ours, the independent reference and the check), and
+    the run's other key numbers. Returns (page file name, title, figure names)."""
+    stem = run_dir.name
+    params = json.load(open(run_dir / "params.json")) if (run_dir / "params.json").exists() else {}
+    title = params.get("name", stem) if isinstance(params.get("name"), str) else stem
+    figs = sorted(p.name for p in fig_dir.glob("gear_%s_*.png" % stem))
+    out = ["<h1>%s</h1>" % html.escape(title),
+           "<p><a href='index.html'>back to the report</a>. Gear file "
+           "<code>chapters/gearhb_gear/examples/%s.json</code>, run by <code>make figures</code> into "
+           "<code>build/data/gearhb_gear/%s/</code> (README <code>chapters/gearhb_gear/README.md</code>).</p>"
+           % (html.escape(stem), html.escape(stem))]
+    prefix = "gear_%s_" % stem
+    out += [figure_html(f, "gearhb_gear", GEAR_CAPTIONS.get(f[len(prefix):], ""), is_wide(fig_dir / f)) for f in figs]
+    ref = HERE.parent / "reference" / "gear_examples" / (stem + ".json")
+    rows = key_number_rows(ref, run_dir)
+    checked = set(json.load(open(ref))["numbers"]) if ref.exists() else set()
+    if rows:
+        out.append("<h2>Key numbers checked by CTest (reference/gear_examples/%s.json)</h2>" % html.escape(stem))
+        out.append(KEY_TABLE_HEAD.replace("<th>thesis</th>", "<th>published or thesis</th>")
+                   .replace("<th>thesis against ours</th>", "<th>published against ours</th>"))
+        out += rows
+        out.append("</table>")
+    ours = json.load(open(run_dir / "key_numbers.json")) if (run_dir / "key_numbers.json").exists() else {}
+    rest = [(k, v) for k, v in ours.items() if k not in checked]
+    if rest:
+        out.append("<h2>The run's other key numbers (no independent reference)</h2><table>"
+                   "<tr><th>number</th><th>value</th><th>unit</th></tr>")
+        out += ["<tr><td>%s</td><td class='num'>%s</td><td>%s</td></tr>"
+                % (html.escape(k), html.escape(fmt(v["value"])), html.escape(v.get("unit", ""))) for k, v in rest]
+        out.append("</table>")
+    page = ("<!DOCTYPE html><html lang='en'><head><meta charset='utf-8'><title>%s</title><style>%s</style></head>"
+            "<body>%s</body></html>\n" % (html.escape(title), STYLE, "\n".join(out)))
+    name = "gear_%s.html" % stem
+    tmp = fig_dir / (name + ".tmp")
+    tmp.write_text(page)
+    tmp.replace(fig_dir / name)
+    return name, title, figs
+
+
 def write(build):
     build = pathlib.Path(build)
     fig_dir = build / "figures"
@@ -278,7 +323,18 @@ def write(build):
         part, figs = chapter_section(build, ch, fig_dir)
         body += part
         all_figs += figs
-    shown = {f[0] for f in all_figs}
+    gear_runs = sorted(p for p in (build / "data" / "gearhb_gear").glob("*") if (p / "key_numbers.json").exists())
+    gear_figs = set()
+    if gear_runs:
+        body.append("<h2 id='gear_runs'>Gear-pair runs (gearhb_gear): one page each</h2><ul>")
+        for run_dir in gear_runs:
+            name, title, figs = gear_run_page(build, run_dir, fig_dir)
+            gear_figs.update(figs)
+            body.append("<li><a href='%s'>%s</a> (<code>%s.json</code>, %d figures)</li>"
+                        % (name, html.escape(title), html.escape(run_dir.name), len(figs)))
+        body.append("</ul>")
+        head.insert(len(head) - 1, "<a href='#gear_runs'>gear-pair runs</a>")
+    shown = {f[0] for f in all_figs} | gear_figs
     extra = sorted(p.name for p in fig_dir.glob("*.png") if p.name not in shown)
     if extra:
         body.append("<h2>Further figures</h2>")

@@ -12,7 +12,10 @@ value, and one ordinary number of chapter 3 is put outside its tolerance. The pa
   - flag where ours and the thesis differ (chapter 7's corrected T2C, 25.65 against 24.1 mm; chapter
     6's Fig. 41, which the thesis says stays in full contact),
   - list each chapter's deviations from the thesis from its README,
-and every caption of figures/captions.py must be its own (one caption per figure).
+and every caption of figures/captions.py must be its own (one caption per figure). A faked
+gear-pair run (build/data/gearhb_gear/thesis_pair with the reference's values and one figure)
+must get its own page, linked from the index, with every checked number, no FAIL, the
+figure with its caption and the run's unchecked key numbers listed apart.
 Exit 0 when all hold; each broken rule is printed.
 """
 import json
@@ -48,6 +51,14 @@ def fake_build(work):
             ours[name] = {"value": v, "unit": r.get("unit", "")}
         (work / "data" / program).mkdir(parents=True)
         (work / "data" / program / "key_numbers.json").write_text(json.dumps(ours))
+    gear = work / "data" / "gearhb_gear" / "thesis_pair"
+    gear.mkdir(parents=True)
+    numbers = json.load(open(ROOT / "reference" / "gear_examples" / "thesis_pair.json"))["numbers"]
+    ours = {k: {"value": r["value"], "unit": r.get("unit", "")} for k, r in numbers.items()}
+    ours["an_unchecked_number"] = {"value": 1.5, "unit": "-"}
+    (gear / "key_numbers.json").write_text(json.dumps(ours))
+    (gear / "params.json").write_text(json.dumps({"name": "faked thesis pair"}))
+    (work / "figures" / "gear_thesis_pair_response.png").write_bytes(b"\x89PNG\r\n\x1a\n" + bytes(16))
     return quick_only
 
 
@@ -95,6 +106,19 @@ def main(work):
     if not f41 or "full contact" not in f41[0][1] or "differs" not in f41[0][5]:
         errors.append("ch06_gear_pair first_change_omega_fig41: the thesis' claim (stays in full contact) is not shown "
                       "as differing")
+    gear_page = work / "figures" / "gear_thesis_pair.html"
+    if "href='gear_thesis_pair.html'" not in page or not gear_page.exists():
+        errors.append("the gear-pair run has no page linked from the index")
+    else:
+        g = gear_page.read_text()
+        checked = json.load(open(ROOT / "reference" / "gear_examples" / "thesis_pair.json"))["numbers"]
+        errors += ["gear page: checked number %s missing" % n for n in checked if "<tr><td>%s</td>" % n not in g]
+        if "class='fail'" in g:
+            errors.append("gear page: a FAIL where the run equals its reference")
+        if "gear_thesis_pair_response.png" not in g or report.GEAR_CAPTIONS["response.png"][:40] not in g:
+            errors.append("gear page: the figure or its caption is missing")
+        if "an_unchecked_number" not in g.split("other key numbers")[-1]:
+            errors.append("gear page: the run's unchecked key numbers are not listed apart")
     captions = [c for ch in CHAPTERS for _, _, c in ch["figures"]]
     shared = sorted({c for c in captions if captions.count(c) > 1})
     errors += ["caption shared by several figures: %s" % c[:80] for c in shared]
