@@ -271,37 +271,43 @@ std::function<std::uint64_t(const Eigen::VectorXd&)> contact_regime(const Harmon
   };
 }
 
-FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
-                               const std::string& label) {
+namespace {
+
+// Step 1: the scaling of the sweep, refused where the model is beyond double precision.
+Scaling checked_scaling(const HarmonicBalance& hb, const SweepOptions& opt, const std::string& label) {
+  const Scaling s = hb.scaling(opt.omega_min, opt.omega_max);
+  std::ostringstream os;
+  if (!std::isfinite(s.residual))
+    os << "case " << label << ": the model's stiffness scale is " << s.residual
+       << " (a stiffness or contact stiffness that is not finite)";
+  else if (!(s.x[0] >= 1e-150 && s.x[0] <= 1e150))
+    os << "case " << label << ": the model's characteristic displacement over the range is " << s.x[0]
+       << " (loads or stiffnesses beyond double precision: the response must lie within 1e-150 ... 1e150)";
+  if (!os.str().empty()) throw std::invalid_argument(os.str());
+  return s;
+}
+
+// Step 2: the continuation's options for the sweep: its direction, and steps across a
+// change of the contact state kept short (continuation.hpp; contact_regime).
+ContinuationOptions sweep_continuation(const HarmonicBalance& hb, const SweepOptions& opt) {
   ContinuationOptions co = opt.continuation;
   const bool up = opt.direction == SweepDirection::up;
   co.omega_start = up ? opt.omega_min : opt.omega_max;
   co.omega_end = up ? opt.omega_max : opt.omega_min;
-  FrequencyCurve c;
-  c.natural = opt.natural;
-  c.stability = opt.stability;
-  c.scaling = hb.scaling(opt.omega_min, opt.omega_max);
-  if (!std::isfinite(c.scaling.residual)) {
-    std::ostringstream os;
-    os << "case " << label << ": the model's stiffness scale is " << c.scaling.residual
-       << " (a stiffness or contact stiffness that is not finite)";
-    throw std::invalid_argument(os.str());
-  }
-  if (!(c.scaling.x[0] >= 1e-150 && c.scaling.x[0] <= 1e150)) {
-    std::ostringstream os;
-    os << "case " << label << ": the model's characteristic displacement over the range is " << c.scaling.x[0]
-       << " (loads or stiffnesses beyond double precision: the response must lie within 1e-150 ... 1e150)";
-    throw std::invalid_argument(os.str());
-  }
-  if (!co.regime && !hb.contacts().empty()) {
-    // Steps across a change of the contact state are kept short (continuation.hpp). The
-    // regime: the state (open / full / intermittent) of every contact, two bits each
-    // (kMaxContacts = 30 of them fill 60 bits).
-    co.regime = contact_regime(hb);
-  }
-  // The first point: Newton from the linear guess inside the continuation (as always);
-  // if that fails, find_first_point's contact sets and forcing-amplitude continuation
-  // (first_point.hpp), and the continuation again from what it found.
+  if (!co.regime && !hb.contacts().empty()) co.regime = contact_regime(hb);
+  return co;
+}
+
+// Step 3: the branch. The first point: Newton from the linear guess inside the
+// continuation (as always); if that fails, find_first_point's contact sets and
+// forcing-amplitude continuation (first_point.hpp), and the continuation again from what
+// it found. A first point on a fold pair whose branch leaves the range at its start (the
+// stable low-amplitude orbit of a clearance oscillator below a superharmonic fold): the
+// branch is followed outside the range by up to a quarter of the range, where it may turn
+// at the pair's other fold and come back through the start. False: it cannot start
+// (c.failure says why).
+bool trace_branch(const HarmonicBalance& hb, const SweepOptions& opt, const ContinuationOptions& co,
+                  const std::string& label, FrequencyCurve& c) {
   auto run = [&](const Eigen::VectorXd& X0) {
     return opt.natural ? natural_continuation(hb, X0, c.scaling, co) : arc_length_continuation(hb, X0, c.scaling, co);
   };
@@ -324,15 +330,11 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
          << " (" << fp.failure << ")";
       c.branch = Branch{};
       c.failure = os.str();
-      return c;
+      return false;
     }
     c.first_point = fp.method;
     c.branch = run(fp.X);
   }
-  // A first point on a fold pair whose branch leaves the range at its start (the
-  // stable low-amplitude orbit of a clearance oscillator below a superharmonic fold):
-  // follow the branch outside the range by up to a quarter of the range, where it may
-  // turn at the pair's other fold and come back through the start.
   if (!opt.natural && !c.branch.complete && !c.branch.failures.empty() && co.start_excursion == 0.0 &&
       c.branch.failures.back().what == "branch turned back out of the range at its start") {
     ContinuationOptions wide = co;
@@ -342,26 +344,30 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   }
   c.complete = c.branch.complete;
   if (!c.complete) c.failure = "case " + label + ": " + failure_report(hb, c.branch);
-  const auto& P = c.branch.points;
-  if (opt.stability == StabilityMethod::hill || opt.hill_cross_check) c.hill_stable = branch_stability(hb, c.branch);
-  if (opt.stability == StabilityMethod::hill) c.stable = c.hill_stable;
-  if (opt.stability == StabilityMethod::none) c.stable.assign(P.size(), true);
-  if (opt.stability != StabilityMethod::floquet) return c;
+  return true;
+}
 
-  const double xs = c.scaling.x[0];
+// Step 4: Floquet multipliers of every point's corrected orbit.
+std::vector<FloquetResult> floquet_of_branch(const HarmonicBalance& hb, const SweepOptions& opt, FrequencyCurve& c) {
   std::vector<FloquetResult> fr;
-  fr.reserve(P.size());
-  for (const auto& p : P) {
-    fr.push_back(floquet_of_hb_orbit(hb, p.X, p.omega, xs, opt.floquet));
+  fr.reserve(c.branch.points.size());
+  for (const auto& p : c.branch.points) {
+    fr.push_back(floquet_of_hb_orbit(hb, p.X, p.omega, c.scaling.x[0], opt.floquet));
     c.floquet.push_back(point_floquet(fr.back()));
     c.stable.push_back(fr.back().stable);
   }
-  if (!opt.locate_bifurcations || opt.natural) return c;
-  // Bifurcations: between consecutive points where the number of multipliers outside
-  // the unit circle changes (a real pair that merges into a complex pair outside the
-  // circle changes the counts per kind but not this number: no bifurcation). The
-  // change is located on the chord, and the multiplier nearest the circle there says
-  // which kind of crossing it is.
+  return fr;
+}
+
+// Step 5: bifurcations between consecutive points where the number of multipliers
+// outside the unit circle changes (a real pair that merges into a complex pair outside
+// the circle changes the counts per kind but not this number: no bifurcation). The
+// change is located on the chord, and the multiplier nearest the circle there says which
+// kind of crossing it is.
+void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double corrector_tolerance,
+                      const std::vector<FloquetResult>& fr, FrequencyCurve& c) {
+  const auto& P = c.branch.points;
+  const double xs = c.scaling.x[0];
   for (std::size_t i = 1; i < P.size(); ++i) {
     if (outside(c.floquet[i - 1]) == outside(c.floquet[i])) continue;
     // The probe: the count outside, and log |mu| of the crossing multiplier (zero on the circle).
@@ -373,14 +379,14 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
     Bifurcation bf;
     bf.after_point = int(i) - 1;
     try {
-      const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, co.tolerance);
+      const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, corrector_tolerance);
       bf.omega = at.omega;
-      bf.multiplier = crossing_multiplier(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), c.floquet[i - 1], c.floquet[i]);
+      bf.multiplier = crossing_multiplier(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), fa, fb);
     } catch (const std::exception&) {
       // corrector failure on the chord (rare): the second point's multiplier
       bf.located = false;
       bf.omega = P[i].omega;
-      bf.multiplier = crossing_multiplier(fr[i], c.floquet[i - 1], c.floquet[i]);
+      bf.multiplier = crossing_multiplier(fr[i], fa, fb);
     }
     bf.type = crossing_type(bf.multiplier);
     bf.smooth = bf.located && std::fabs(std::abs(bf.multiplier) - 1.0) <= 1e-2;
@@ -397,14 +403,34 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
     }
     c.bifurcations.push_back(bf);
   }
+}
+
+}  // namespace
+
+FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
+                               const std::string& label) {
+  FrequencyCurve c;
+  c.natural = opt.natural;
+  c.stability = opt.stability;
+  c.scaling = checked_scaling(hb, opt, label);
+  const ContinuationOptions co = sweep_continuation(hb, opt);
+  if (!trace_branch(hb, opt, co, label, c)) return c;
+  const std::size_t points = c.branch.points.size();
+  if (opt.stability == StabilityMethod::hill || opt.hill_cross_check) c.hill_stable = branch_stability(hb, c.branch);
+  if (opt.stability == StabilityMethod::hill) c.stable = c.hill_stable;
+  if (opt.stability == StabilityMethod::none) c.stable.assign(points, true);
+  if (opt.stability != StabilityMethod::floquet) return c;
+  const std::vector<FloquetResult> fr = floquet_of_branch(hb, opt, c);
+  if (!opt.locate_bifurcations || opt.natural) return c;
+  locate_crossings(hb, opt, co.tolerance, fr, c);
   const bool parametric = std::any_of(hb.contacts().begin(), hb.contacts().end(),
                                       [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
   if (opt.narrow_bands == BandSearch::always || (opt.narrow_bands == BandSearch::parametric && parametric)) {
-    add_narrow_bands(hb, c, xs, opt.floquet, co.tolerance);
+    add_narrow_bands(hb, c, c.scaling.x[0], opt.floquet, co.tolerance);
     std::stable_sort(c.bifurcations.begin(), c.bifurcations.end(),
                      [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; });
   }
-  c.bifurcations = one_entry_per_crossing(hb, c, xs, opt.floquet);
+  c.bifurcations = one_entry_per_crossing(hb, c, c.scaling.x[0], opt.floquet);
   return c;
 }
 
