@@ -113,6 +113,65 @@ Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::V
 
 }  // namespace
 
+namespace {
+
+// One predictor-corrector step from (y, t): the predictor y + ds t corrected in the
+// hyperplane normal to t, halving ds (by opt.cut) until the corrector converges, the
+// tangent turns by less than max_turn_deg and the contact regime holds (or ds is short
+// enough to walk up to its change). False with the reason in `failure` if ds falls below
+// ds_min.
+struct Step {
+  Eigen::VectorXd y, t;
+  int iterations = 0;
+  double residual = 0.0;
+  std::uint64_t regime = 0;
+};
+bool predict_correct(Scaled& S, const ContinuationOptions& opt, const Eigen::VectorXd& y, const Eigen::VectorXd& t,
+                     std::uint64_t regime, double& ds, Branch& b, Step& out, Failure& failure) {
+  const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
+  for (;;) {
+    out.y = y + ds * t;
+    bool converged = correct(S, out.y, t, opt.corrector_max_iterations, opt.tolerance, out.iterations, out.residual);
+    std::string why = converged ? "" : "corrector did not converge";
+    if (converged) {
+      out.regime = regime;
+      if (!tangent_here(S, t, out.t)) {
+        converged = false;
+        why = "singular augmented Jacobian";
+      } else if (out.t.dot(t) < cos_turn && ds > opt.turn_floor * opt.ds_min) {
+        converged = false;   // the branch turns too fast for this step: refine
+        why = "tangent turned too sharply";
+      } else if (opt.regime && (out.regime = opt.regime(S.X(out.y))) != regime && ds > opt.ds_regime_change) {
+        converged = false;   // walk up to the regime change (grazing) with short steps
+        why = "regime change";
+      }
+    }
+    if (converged) return true;
+    ++b.rejected_steps;
+    ds *= opt.cut;
+    if (ds < opt.ds_min) {
+      failure = {S.omega(y), out.residual, ds, why + " with ds below ds_min"};
+      return false;
+    }
+  }
+}
+
+// The next step length after an accepted one (ContinuationOptions: iteration count, then
+// the curvature control if set), within [ds_min, ds_max].
+double next_step(const ContinuationOptions& opt, double ds, int iterations, const Eigen::VectorXd& t,
+                 const Eigen::VectorXd& tn) {
+  double next = ds;
+  if (iterations <= opt.fast_iterations) next = ds * opt.grow;
+  else if (iterations >= opt.slow_iterations) next = ds * opt.shrink;
+  if (opt.target_turn_deg > 0.0) {
+    const double turn = std::acos(std::clamp(tn.dot(t), -1.0, 1.0)) * 180.0 / M_PI;
+    next = std::min(next, ds * std::clamp(opt.target_turn_deg / std::max(turn, 1e-12), 0.5, 2.0));
+  }
+  return std::clamp(next, opt.ds_min, opt.ds_max);
+}
+
+}  // namespace
+
 Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                                const Scaling& s, const ContinuationOptions& opt) {
   Branch b;
@@ -120,7 +179,7 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
   const double dir = opt.omega_end >= opt.omega_start ? 1.0 : -1.0;
   Scaled S(p, s);
 
-  // 1. First point: Newton at omega_start.
+  // 1. First point: Newton at omega_start, and its tangent along the sweep direction.
   Eigen::VectorXd X = X0;
   NewtonOptions nopt{opt.tolerance, opt.endpoint_iterations};
   NewtonReport nr = newton_solve(p, X, opt.omega_start, s, nopt);
@@ -139,84 +198,51 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
   b.points.push_back({X, opt.omega_start, nr.iterations, nr.residual, 0.0, t[n]});
   if (opt.progress) opt.progress({0, opt.omega_start, 0.0});
 
-  const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
   double ds = std::min(opt.ds_initial, opt.ds_max);
-  std::uint64_t regime = opt.regime ? opt.regime(X) : 0, new_regime = regime;
+  std::uint64_t regime = opt.regime ? opt.regime(X) : 0;
   for (int step = 0;; ++step) {
     if (step >= opt.max_steps) {
       b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
                                                      std::to_string(opt.max_steps) + ")"});
       return b;
     }
-    // 2. Predictor and corrector, halving ds until the corrector converges.
-    bool accepted = false;
-    Eigen::VectorXd yn, tn;
-    int iters = 0;
-    double res = 0.0;
-    std::string why;
-    while (!accepted) {
-      const Eigen::VectorXd yp = y + ds * t;
-      yn = yp;
-      bool converged = correct(S, yn, t, opt.corrector_max_iterations, opt.tolerance, iters, res);
-      why = converged ? "" : "corrector did not converge";
-      if (converged) {
-        if (!tangent_here(S, t, tn)) {
-          converged = false;
-          why = "singular augmented Jacobian";
-        } else if (tn.dot(t) < cos_turn && ds > opt.turn_floor * opt.ds_min) {
-          converged = false;   // the branch turns too fast for this step: refine
-          why = "tangent turned too sharply";
-        } else if (opt.regime && (new_regime = opt.regime(S.X(yn))) != regime && ds > opt.ds_regime_change) {
-          converged = false;   // walk up to the regime change (grazing) with short steps
-          why = "regime change";
-        }
-      }
-      if (converged) {
-        accepted = true;
-      } else {
-        ++b.rejected_steps;
-        ds *= opt.cut;
-        if (ds < opt.ds_min) {
-          b.failures.push_back({S.omega(y), res, ds, why + " with ds below ds_min"});
-          return b;
-        }
-      }
+    // 2. Predictor and corrector (predict_correct).
+    Step st;
+    Failure failure;
+    if (!predict_correct(S, opt, y, t, regime, ds, b, st, failure)) {
+      b.failures.push_back(failure);
+      return b;
     }
-    // 3. Accept; detect a fold; adapt the step.
-    const double w_new = S.omega(yn);
-    BranchPoint pt{S.X(yn), w_new, iters, res, ds, tn[n]};
-    if ((t[n] > 0) != (tn[n] > 0) && t[n] != 0.0) {
-      const Eigen::VectorXd yf = locate_fold(S, y, t, yn, tn, opt.tolerance, opt.locate_iterations);
+    // 3. Accept; locate a fold between the two points.
+    const double w_new = S.omega(st.y);
+    BranchPoint pt{S.X(st.y), w_new, st.iterations, st.residual, ds, st.t[n]};
+    if ((t[n] > 0) != (st.t[n] > 0) && t[n] != 0.0) {
+      const Eigen::VectorXd yf = locate_fold(S, y, t, st.y, st.t, opt.tolerance, opt.locate_iterations);
       b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
     }
-    // Reached the end of the range: finish with a Newton solve exactly at omega_end.
+    // 4. Reached the end of the range: finish with a Newton solve exactly at omega_end.
     if ((w_new - opt.omega_end) * dir >= 0.0) {
       const double w0 = S.omega(y);
       const double a = (opt.omega_end - w0) / (w_new - w0);
       Eigen::VectorXd Xe = (1.0 - a) * S.X(y) + a * pt.X;
       NewtonReport er = newton_solve(p, Xe, opt.omega_end, s, nopt);
-      if (er.converged) b.points.push_back({Xe, opt.omega_end, er.iterations, er.residual, ds, tn[n]});
+      if (er.converged) b.points.push_back({Xe, opt.omega_end, er.iterations, er.residual, ds, st.t[n]});
       else b.points.push_back(pt);
       b.complete = true;
       return b;
     }
     if ((w_new - opt.omega_start) * dir < -opt.start_excursion && b.points.size() > 2) {
       b.points.push_back(pt);
-      b.failures.push_back({w_new, res, ds, "branch turned back out of the range at its start"});
+      b.failures.push_back({w_new, st.residual, ds, "branch turned back out of the range at its start"});
       return b;
     }
     b.points.push_back(pt);
     if (opt.progress) opt.progress({int(b.points.size()) - 1, w_new, ds});
-    const double turn = std::acos(std::clamp(tn.dot(t), -1.0, 1.0)) * 180.0 / M_PI;
-    y = yn;
-    t = tn;
-    regime = new_regime;
-    double next = ds;
-    if (iters <= opt.fast_iterations) next = ds * opt.grow;
-    else if (iters >= opt.slow_iterations) next = ds * opt.shrink;
-    if (opt.target_turn_deg > 0.0)
-      next = std::min(next, ds * std::clamp(opt.target_turn_deg / std::max(turn, 1e-12), 0.5, 2.0));
-    ds = std::clamp(next, opt.ds_min, opt.ds_max);
+    // 5. The next step.
+    ds = next_step(opt, ds, st.iterations, t, st.t);
+    y = st.y;
+    t = st.t;
+    regime = st.regime;
   }
 }
 
