@@ -91,6 +91,88 @@ std::function<double(double)> read_stiffness_file(const std::string& path, const
 
 }  // namespace
 
+namespace {
+
+// The file path of a contact's gap_file / kc_file (relative to the model file).
+std::string contact_file(const json& contact, const std::string& path, const std::string& key) {
+  if (!contact[key.substr(key.rfind('.') + 1)].is_string()) fail(path, key, "must be a file name");
+  std::filesystem::path f = contact[key.substr(key.rfind('.') + 1)].get<std::string>();
+  if (f.is_relative()) f = std::filesystem::path(path).parent_path() / f;
+  return f.string();
+}
+
+// M, K and C (a damping matrix or Rayleigh's alpha M + beta K) of n DOFs.
+LinearSystem read_system(const json& j, const std::string& path, int n) {
+  LinearSystem s;
+  s.M = matrix(j["mass"], path, "mass", n);
+  s.K = matrix(j["stiffness"], path, "stiffness", n);
+  symmetric(s.M, path, "mass");
+  if (Eigen::LLT<Eigen::MatrixXd>(s.M).info() != Eigen::Success) fail(path, "mass", "is not positive definite");
+  if (j.contains("damping") == j.contains("rayleigh")) fail(path, "damping", "or 'rayleigh' must be given, not both");
+  if (j.contains("damping")) {
+    s.C = matrix(j["damping"], path, "damping", n);
+  } else {
+    only_keys(j["rayleigh"], path, "rayleigh", {"alpha", "beta"});
+    s.C = rayleigh_damping(s.M, s.K, number(j["rayleigh"].value("alpha", json(0.0)), path, "rayleigh.alpha"),
+                           number(j["rayleigh"].value("beta", json(0.0)), path, "rayleigh.beta"));
+  }
+  return s;
+}
+
+// The contacts (at most kMaxContacts), their gap and stiffness files cut to H harmonics.
+std::vector<UnilateralContact> read_contacts(const json& j, const std::string& path, int n, int H) {
+  const json contacts = j.value("contacts", json::array());
+  if (!contacts.is_array()) fail(path, "contacts", "must be a list");
+  if (contacts.size() > std::size_t(kMaxContacts))
+    fail(path, "contacts", "has " + std::to_string(contacts.size()) + " contacts; at most " + std::to_string(kMaxContacts) +
+                               " (the exact flow indexes contact states by the bits of one word)");
+  std::vector<UnilateralContact> out;
+  for (std::size_t i = 0; i < contacts.size(); ++i) {
+    const std::string key = "contacts." + std::to_string(i);
+    only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file", "kc_file"});
+    UnilateralContact c;
+    c.normal = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
+    c.kc = number(contacts[i].value("kc", json()), path, key + ".kc");
+    if (c.kc < 0) fail(path, key + ".kc", "must be >= 0");
+    c.gap = number(contacts[i].value("gap", json(0.0)), path, key + ".gap");
+    if (contacts[i].contains("gap_file"))
+      c.gap_harmonics = read_periodic_file(contact_file(contacts[i], path, key + ".gap_file"), key + ".gap_file", "gap", H);
+    if (contacts[i].contains("kc_file"))
+      c.stiffness_profile = read_stiffness_file(contact_file(contacts[i], path, key + ".kc_file"), key + ".kc_file", H);
+    out.push_back(c);
+  }
+  return out;
+}
+
+// H, the AFT samples, the frequency range, the output direction, the forcing and the solver keys.
+void read_settings(const json& j, const std::string& path, int n, ModelFile& m) {
+  m.harmonics = whole(j["harmonics"], path, "harmonics", 1, max_harmonics(n));
+  m.samples = j.contains("samples") ? whole(j["samples"], path, "samples", 0, max_aft_samples) : 0;
+  if (m.samples != 0 && m.samples < 4 * m.harmonics + 2) fail(path, "samples", "must be 0 or >= 4H+2");
+  only_keys(j["omega"], path, "omega", {"from", "to"});
+  m.omega_from = number(j["omega"].value("from", json()), path, "omega.from");
+  m.omega_to = number(j["omega"].value("to", json()), path, "omega.to");
+  if (m.omega_from <= 0 || m.omega_to <= 0 || m.omega_from == m.omega_to)
+    fail(path, "omega", "needs 0 < from != to");
+  only_keys(j["output"], path, "output", {"direction"});
+  m.output = vector(j["output"].value("direction", json()), path, "output.direction", n);
+  const json forcing = j.value("forcing", json::object());
+  only_keys(forcing, path, "forcing", {"static", "cos", "sin"});
+  auto force = [&](const char* k) {
+    return forcing.contains(k) ? vector(forcing[k], path, std::string("forcing.") + k, n) : Eigen::VectorXd::Zero(n);
+  };
+  m.forcing = {force("static"), force("cos"), force("sin")};
+  const json solver = j.value("solver", json::object());
+  only_keys(solver, path, "solver", {"exact_contact", "ds_max"});
+  if (solver.contains("exact_contact")) m.exact_contact = whole(solver["exact_contact"], path, "solver.exact_contact", 0, 1);
+  if (solver.contains("ds_max")) {
+    m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
+    if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
+  }
+}
+
+}  // namespace
+
 ModelFile read_model_file(const std::string& path,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
@@ -108,69 +190,9 @@ ModelFile read_model_file(const std::string& path,
   if (max_harmonics(n) < 1)
     fail(path, "mass", "has " + std::to_string(n) + " DOFs: too many for any number of harmonics (at most " +
                            std::to_string(max_hb_unknowns / 3) + " DOFs)");
-  LinearSystem& s = m.system;
-  s.M = matrix(j["mass"], path, "mass", n);
-  s.K = matrix(j["stiffness"], path, "stiffness", n);
-  symmetric(s.M, path, "mass");
-  if (Eigen::LLT<Eigen::MatrixXd>(s.M).info() != Eigen::Success) fail(path, "mass", "is not positive definite");
-  if (j.contains("damping") == j.contains("rayleigh")) fail(path, "damping", "or 'rayleigh' must be given, not both");
-  if (j.contains("damping")) {
-    s.C = matrix(j["damping"], path, "damping", n);
-  } else {
-    only_keys(j["rayleigh"], path, "rayleigh", {"alpha", "beta"});
-    s.C = rayleigh_damping(s.M, s.K, number(j["rayleigh"].value("alpha", json(0.0)), path, "rayleigh.alpha"),
-                           number(j["rayleigh"].value("beta", json(0.0)), path, "rayleigh.beta"));
-  }
-  m.harmonics = whole(j["harmonics"], path, "harmonics", 1, max_harmonics(n));
-  m.samples = j.contains("samples") ? whole(j["samples"], path, "samples", 0, max_aft_samples) : 0;
-  if (m.samples != 0 && m.samples < 4 * m.harmonics + 2) fail(path, "samples", "must be 0 or >= 4H+2");
-  only_keys(j["omega"], path, "omega", {"from", "to"});
-  m.omega_from = number(j["omega"].value("from", json()), path, "omega.from");
-  m.omega_to = number(j["omega"].value("to", json()), path, "omega.to");
-  if (m.omega_from <= 0 || m.omega_to <= 0 || m.omega_from == m.omega_to)
-    fail(path, "omega", "needs 0 < from != to");
-  only_keys(j["output"], path, "output", {"direction"});
-  m.output = vector(j["output"].value("direction", json()), path, "output.direction", n);
-  const json forcing = j.value("forcing", json::object());
-  only_keys(forcing, path, "forcing", {"static", "cos", "sin"});
-  auto force = [&](const char* k) {
-    return forcing.contains(k) ? vector(forcing[k], path, std::string("forcing.") + k, n) : Eigen::VectorXd::Zero(n);
-  };
-  m.forcing = {force("static"), force("cos"), force("sin")};
-  const json contacts = j.value("contacts", json::array());
-  if (!contacts.is_array()) fail(path, "contacts", "must be a list");
-  if (contacts.size() > std::size_t(kMaxContacts))
-    fail(path, "contacts", "has " + std::to_string(contacts.size()) + " contacts; at most " + std::to_string(kMaxContacts) +
-                               " (the exact flow indexes contact states by the bits of one word)");
-  for (std::size_t i = 0; i < contacts.size(); ++i) {
-    const std::string key = "contacts." + std::to_string(i);
-    only_keys(contacts[i], path, key, {"direction", "kc", "gap", "gap_file", "kc_file"});
-    UnilateralContact c;
-    c.normal = vector(contacts[i].value("direction", json()), path, key + ".direction", n);
-    c.kc = number(contacts[i].value("kc", json()), path, key + ".kc");
-    if (c.kc < 0) fail(path, key + ".kc", "must be >= 0");
-    c.gap = number(contacts[i].value("gap", json(0.0)), path, key + ".gap");
-    if (contacts[i].contains("gap_file")) {
-      if (!contacts[i]["gap_file"].is_string()) fail(path, key + ".gap_file", "must be a file name");
-      std::filesystem::path gp = contacts[i]["gap_file"].get<std::string>();
-      if (gp.is_relative()) gp = std::filesystem::path(path).parent_path() / gp;
-      c.gap_harmonics = read_periodic_file(gp.string(), key + ".gap_file", "gap", m.harmonics);
-    }
-    if (contacts[i].contains("kc_file")) {
-      if (!contacts[i]["kc_file"].is_string()) fail(path, key + ".kc_file", "must be a file name");
-      std::filesystem::path kp = contacts[i]["kc_file"].get<std::string>();
-      if (kp.is_relative()) kp = std::filesystem::path(path).parent_path() / kp;
-      c.stiffness_profile = read_stiffness_file(kp.string(), key + ".kc_file", m.harmonics);
-    }
-    m.contacts.push_back(c);
-  }
-  const json solver = j.value("solver", json::object());
-  only_keys(solver, path, "solver", {"exact_contact", "ds_max"});
-  if (solver.contains("exact_contact")) m.exact_contact = whole(solver["exact_contact"], path, "solver.exact_contact", 0, 1);
-  if (solver.contains("ds_max")) {
-    m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
-    if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
-  }
+  m.system = read_system(j, path, n);
+  read_settings(j, path, n, m);
+  m.contacts = read_contacts(j, path, n, m.harmonics);
   return m;
 }
 
