@@ -1,0 +1,160 @@
+#include "gearhb/hb/exact_orbit.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace gearhb {
+
+namespace {
+
+// The 8-point Gauss-Legendre rule on [-1, 1] (nodes +-x_j, weights w_j; Abramowitz & Stegun
+// table 25.4): exact for polynomials of degree 15, so on a piece with |lambda| h <= 1 (and
+// <= 2 for a product of two coordinates) its error is below 1e-16 of the integrand.
+constexpr std::array<double, 4> kGaussX{0.1834346424956498049, 0.5255324099163289858, 0.7966664774136267396,
+                                        0.9602898564975362317};
+constexpr std::array<double, 4> kGaussW{0.3626837833783619830, 0.3137066458778872873, 0.2223810344533744706,
+                                        0.1012285362903762591};
+
+// The rule's nodes on [0, 1], ascending, and their weights.
+std::array<std::pair<double, double>, 8> unit_rule() {
+  std::array<std::pair<double, double>, 8> r;
+  for (int j = 0; j < 4; ++j) {
+    r[3 - j] = {0.5 * (1.0 - kGaussX[j]), 0.5 * kGaussW[j]};
+    r[4 + j] = {0.5 * (1.0 + kGaussX[j]), 0.5 * kGaussW[j]};
+  }
+  return r;
+}
+
+}  // namespace
+
+ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, const Eigen::VectorXd& x0,
+                       const Eigen::VectorXd& v0, int steps)
+    : flow_(hb), omega_(omega), T_(2.0 * M_PI / omega), n_(hb.dofs()) {
+  // 1. the orbit piece by piece on the exact flow
+  std::vector<FlowSegment> segments;
+  Eigen::VectorXd xT, vT;
+  Eigen::MatrixXd Phi;
+  flow_.period_map(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, Phi, nullptr, &segments);
+  // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them
+  for (const auto& sg : segments) {
+    const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega))), 1, 1000);
+    for (int j = 0; j < m; ++j) {
+      const double s = sg.h * j / m;
+      pieces_.push_back({sg.t0 + s, sg.h / m, sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega, s, sg.z0)});
+    }
+  }
+  const auto rule = unit_rule();
+  const Eigen::Index N = Eigen::Index(pieces_.size() * rule.size());
+  z_.resize(flow_.dimension(), N);
+  t_.resize(N);
+  w_.resize(N);
+  Eigen::Index k = 0;
+  for (const auto& p : pieces_)
+    for (const auto& [x, w] : rule) {
+      z_.col(k) = flow_.advance(p.state, omega, x * p.h, p.z0);
+      t_[k] = p.t0 + x * p.h;
+      w_[k] = w * p.h;
+      state_.push_back(p.state);
+      ++k;
+    }
+  // 3. how periodic, and whether every node lies in its piece's contact state
+  const double xs = z_.topRows(n_).cwiseAbs().maxCoeff(), vs = z_.middleRows(n_, n_).cwiseAbs().maxCoeff();
+  mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff() / std::max(xs, 1e-300),
+                       (vT - v0).cwiseAbs().maxCoeff() / std::max(vs, 1e-300));
+  for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
+    double scale = 0.0, wrong = 0.0;
+    for (Eigen::Index j = 0; j < N; ++j) {
+      const double u = flow_.penetration(i, z_.col(j));
+      scale = std::max(scale, std::fabs(u));
+      const bool closed = state_[std::size_t(j)] >> i & 1u;
+      if ((u > 0.0) != closed) wrong = std::max(wrong, std::fabs(u));
+    }
+    consistent_ = consistent_ && wrong <= 1e-8 * scale;
+  }
+}
+
+Eigen::VectorXd ExactOrbit::x_at(double t) const {
+  auto it = std::upper_bound(pieces_.begin(), pieces_.end(), t, [](double a, const Piece& p) { return a < p.t0; });
+  const Piece& p = it == pieces_.begin() ? pieces_.front() : *std::prev(it);
+  return flow_.advance(p.state, omega_, t - p.t0, p.z0).head(n_);
+}
+
+// The zero of y' = q' v in (lo, hi) of piece p (y' changes sign there): Newton with
+// y'' = q' (A z)_v, kept in the bracket; returns y there.
+double ExactOrbit::extremum(const Piece& p, const Eigen::VectorXd& q, double lo, double hi) const {
+  const Eigen::MatrixXd& A = flow_.generator_matrix(p.state, omega_);
+  auto slope = [&](double s, double& y, double& dy, double& ddy) {
+    const Eigen::VectorXd z = flow_.advance(p.state, omega_, s, p.z0);
+    y = q.dot(z.head(n_));
+    dy = q.dot(z.segment(n_, n_));
+    ddy = q.dot(A.middleRows(n_, n_) * z);
+  };
+  double y = 0.0, dy = 0.0, ddy = 0.0;
+  slope(lo, y, dy, ddy);
+  const bool rising_lo = dy > 0.0;
+  double s = 0.5 * (lo + hi);
+  for (int it = 0; it < 60; ++it) {
+    slope(s, y, dy, ddy);
+    ((dy > 0.0) == rising_lo ? lo : hi) = s;
+    double next = s - dy / ddy;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    const bool done = std::fabs(next - s) <= 1e-15 * T_ || hi - lo <= 1e-15 * T_;
+    s = next;
+    if (done) break;
+  }
+  slope(s, y, dy, ddy);
+  return y;
+}
+
+ExactMeasures ExactOrbit::measures(const Eigen::VectorXd& q) const {
+  const Eigen::VectorXd y = z_.topRows(n_).transpose() * q;
+  const Eigen::VectorXd dy = z_.middleRows(n_, n_).transpose() * q;
+  ExactMeasures r;
+  r.x_mean = w_.dot(y) / T_;
+  r.x_rms_ac = std::sqrt(w_.dot((y.array() - r.x_mean).square().matrix()) / T_);
+  const double a1 = 2.0 / T_ * w_.dot((y.array() * (omega_ * t_.array()).cos()).matrix());
+  const double b1 = 2.0 / T_ * w_.dot((y.array() * (omega_ * t_.array()).sin()).matrix());
+  r.x_h1 = std::hypot(a1, b1);
+  // extremes: the piece ends, and the zeros of y' bracketed on [start, nodes, end] of each piece
+  const std::size_t per = 8;
+  double hi = -INFINITY, lo = INFINITY;
+  for (std::size_t k = 0; k < pieces_.size(); ++k) {
+    const Piece& p = pieces_[k];
+    const Piece& next = pieces_[(k + 1) % pieces_.size()];
+    const double y0 = q.dot(p.z0.head(n_));
+    hi = std::max(hi, y0);
+    lo = std::min(lo, y0);
+    std::vector<std::pair<double, double>> slope{{0.0, q.dot(p.z0.segment(n_, n_))}};
+    for (std::size_t j = 0; j < per; ++j) {
+      const auto c = Eigen::Index(k * per + j);
+      slope.push_back({t_[c] - p.t0, dy[c]});
+    }
+    slope.push_back({p.h, q.dot(next.z0.segment(n_, n_))});
+    for (std::size_t j = 0; j + 1 < slope.size(); ++j) {
+      if ((slope[j].second > 0.0) == (slope[j + 1].second > 0.0)) continue;
+      if (slope[j].second == 0.0 || slope[j + 1].second == 0.0) continue;   // the node value is the extremum
+      const double ye = extremum(p, q, slope[j].first, slope[j + 1].first);
+      hi = std::max(hi, ye);
+      lo = std::min(lo, ye);
+    }
+  }
+  hi = std::max(hi, y.maxCoeff());
+  lo = std::min(lo, y.minCoeff());
+  r.x_max = hi;
+  r.x_min = lo;
+  return r;
+}
+
+double ExactOrbit::mean_contact_force(std::size_t i) const {
+  if (i >= flow_.contacts())
+    throw std::invalid_argument("ExactOrbit::mean_contact_force: no contact " + std::to_string(i));
+  double sum = 0.0;
+  for (Eigen::Index j = 0; j < z_.cols(); ++j)
+    if (state_[std::size_t(j)] >> i & 1u) sum += w_[j] * flow_.penetration(i, z_.col(j));
+  return flow_.stiffness(i) * sum / T_;
+}
+
+}  // namespace gearhb
