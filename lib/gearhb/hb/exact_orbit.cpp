@@ -33,6 +33,8 @@ std::array<std::pair<double, double>, 8> unit_rule() {
 ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, const Eigen::VectorXd& x0,
                        const Eigen::VectorXd& v0, int steps)
     : flow_(hb), omega_(omega), T_(2.0 * M_PI / omega), n_(hb.dofs()) {
+  if (!(std::isfinite(T_) && T_ > 0.0 && x0.allFinite() && v0.allFinite()))
+    throw std::runtime_error("ExactOrbit: no finite period or state at omega = " + std::to_string(omega));
   // 1. the orbit piece by piece on the exact flow
   std::vector<FlowSegment> segments;
   Eigen::VectorXd xT, vT;
@@ -46,6 +48,7 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
       pieces_.push_back({sg.t0 + s, sg.h / m, sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega, s, sg.z0)});
     }
   }
+  if (pieces_.empty()) throw std::runtime_error("ExactOrbit: no piece of the orbit at omega = " + std::to_string(omega));
   const auto rule = unit_rule();
   const Eigen::Index N = Eigen::Index(pieces_.size() * rule.size());
   z_.resize(flow_.dimension(), N);
@@ -60,6 +63,7 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
       state_.push_back(p.state);
       ++k;
     }
+  if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
   // 3. how periodic, and whether every node lies in its piece's contact state
   const double xs = z_.topRows(n_).cwiseAbs().maxCoeff(), vs = z_.middleRows(n_, n_).cwiseAbs().maxCoeff();
   mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff() / std::max(xs, 1e-300),
@@ -155,6 +159,40 @@ double ExactOrbit::mean_contact_force(std::size_t i) const {
   for (Eigen::Index j = 0; j < z_.cols(); ++j)
     if (state_[std::size_t(j)] >> i & 1u) sum += w_[j] * flow_.penetration(i, z_.col(j));
   return flow_.stiffness(i) * sum / T_;
+}
+
+const char* to_string(ExactStatus s) {
+  switch (s) {
+    case ExactStatus::ok: return "ok";
+    case ExactStatus::not_converged: return "not_converged";
+    case ExactStatus::inconsistent: return "inconsistent";
+    case ExactStatus::unavailable: return "unavailable";
+  }
+  return "?";
+}
+
+ExactPoint exact_point(const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i,
+                       const std::vector<Eigen::VectorXd>& qs) {
+  ExactPoint e;
+  e.measures.assign(qs.size(), ExactMeasures{});
+  bool profile = false;
+  for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
+  if (profile || c.floquet.size() != c.branch.points.size() || i >= c.floquet.size()) return e;
+  const PointFloquet& f = c.floquet[i];
+  if (!f.corrected) {
+    e.status = ExactStatus::not_converged;
+    return e;
+  }
+  e.status = ExactStatus::inconsistent;
+  try {
+    const ExactOrbit o(hb, c.branch.points[i].X, c.branch.points[i].omega, f.x0, f.v0);
+    if (!o.consistent()) return e;
+    for (std::size_t k = 0; k < qs.size(); ++k) e.measures[k] = o.measures(qs[k]);
+    e.status = ExactStatus::ok;
+  } catch (const std::runtime_error&) {
+    // following the orbit failed (too many contact switches in one step): stays inconsistent
+  }
+  return e;
 }
 
 }  // namespace gearhb

@@ -21,15 +21,18 @@
 //
 // `consistent` checks the pieces: at every quadrature node each contact's penetration
 // has the sign of the piece's contact state (to 1e-8 of the penetration's range), so a
-// contact touch that the shooting nodes stepped over is reported, not hidden.
+// contact touch that the shooting nodes stepped over is reported, not hidden. An orbit
+// that is not finite (or no period: omega not positive and finite) throws std::runtime_error.
 // Only for a constant contact stiffness (a time-varying one has no piecewise-linear
 // flow: the constructor throws std::invalid_argument, as PiecewiseLinearFlow does).
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "gearhb/hb/floquet.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
@@ -72,5 +75,25 @@ class ExactOrbit {
   bool consistent_ = true;
   double extremum(const Piece& p, const Eigen::VectorXd& q, double lo, double hi) const;
 };
+
+// Whether a point of a frequency curve has exact measures (the tables' `exact` column):
+//  ok             the corrected orbit, consistent (every contact switch on the pieces);
+//  not_converged  the shooting Newton did not reach FloquetOptions::tolerance (near a
+//                 grazing orbit or a bifurcation, or H far from the truth);
+//  inconsistent   following the corrected orbit failed or stepped over a contact switch;
+//  unavailable    no piecewise-linear flow (a time-varying contact stiffness: its
+//                 multipliers come from the variational equation, not corrected) or the
+//                 curve was computed without Floquet stability (Hill, none).
+enum class ExactStatus { ok, not_converged, inconsistent, unavailable };
+const char* to_string(ExactStatus s);
+
+struct ExactPoint {
+  ExactStatus status = ExactStatus::unavailable;
+  std::vector<ExactMeasures> measures;   // one per requested coordinate (NaN unless ok)
+};
+
+// The exact measures of point i of curve c for the coordinates qs' x.
+ExactPoint exact_point(const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i,
+                       const std::vector<Eigen::VectorXd>& qs);
 
 }  // namespace gearhb
