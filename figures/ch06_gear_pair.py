@@ -7,7 +7,9 @@ Upper panel: Delta_max and Delta_min over a period with the contact level Delta 
 the oscillating amplitude (Delta_max - Delta_min)/2 beside the linear open /
 closed-mesh amplitudes. Dotted verticals: linear natural frequencies.
 """
-from style import case_rows, plot_branch, read_csv, runs, save
+import math
+
+from style import case_rows, column, plot_branch, read_csv, runs, save
 
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
@@ -41,7 +43,9 @@ def mark_bifurcations(ax, data_dir, label, d):
         # the Delta_max value at the nearest point of the branch
         i = min(range(len(d["omega"])), key=lambda j: abs(d["omega"][j] - w))
         m, c = MARKERS[t]
-        ax.plot(w / 1e3, d["x_max"][i] * 1e3, ls="none", marker=m, color=c, ms=6, mfc="none", mew=1.2)
+        y = column(d, "x_max")[i]
+        y = d["x_max"][i] if math.isnan(y) else y   # no exact value there: the HB one
+        ax.plot(w / 1e3, y * 1e3, ls="none", marker=m, color=c, ms=6, mfc="none", mew=1.2)
         used.append(t)
     return sorted(set(used))
 
@@ -53,6 +57,8 @@ def case_figure(data_dir, fig_dir, row, name):
     w_open, w_closed = modes(data_dir, mesh)
     d["w_k"] = [w / 1e3 for w in d["omega"]]
     d["amp"] = [(a - b) / 2 for a, b in zip(d["x_max"], d["x_min"])]
+    if "x_max_exact" in d:
+        d["amp_exact"] = [(a - b) / 2 for a, b in zip(d["x_max_exact"], d["x_min_exact"])]
     fig_, (a1, a2) = plt.subplots(2, 1, figsize=(7.0, 7.2), sharex=True)
     plot_branch(a1, d, "x_max", "C0", r"$\Delta_{max}$", x="w_k", scale=1e3)
     plot_branch(a1, d, "x_min", "C1", r"$\Delta_{min}$", x="w_k", scale=1e3)
@@ -72,7 +78,7 @@ def case_figure(data_dir, fig_dir, row, name):
                      label=k.replace("_", " ")) for k in kinds]
     a1.legend(handles=h + extra, fontsize=7, ncol=3, loc="upper center", bbox_to_anchor=(0.5, -0.02),
               framealpha=0.9)
-    plot_branch(a2, d, "amp", "C2", r"HB: $(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
+    plot_branch(a2, d, "amp", "C2", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
     shade_intermittent(a2, d)
     s = row["Fa"] / 1e4   # linear_*.csv is for Fa = 1e4
     a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], color="0.5", lw=0.9,

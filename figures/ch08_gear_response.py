@@ -7,6 +7,8 @@ fig70s_time_history    x(t), e(t) and the contact force at a contact-loss point
 fig70s_H_convergence   the 300 N m curve for H = 1, 5, 10, 20
 fig70s_parametric      the 300 N m curve of the thesis' model and of the parametric one
 Everything (titles, parameters) comes from the run's files.
+The curves are harmonic balance (values="hb"): these figures are about HB at H = 1 and 5 (the
+thesis figures) and its convergence in H; the tables hold the exact orbit beside them (x_rms_ac_exact).
 """
 import json
 
@@ -74,7 +76,7 @@ def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases, what
         row = cases[lb]
         col = COLORS[row["torque"]]
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, values="hb",
                     label="T = %d N m (kc %.1f MN/m)" % (row["torque"], row["kc"] / 1e6))
         y = ymax * (1.08 - 0.035 * i)
         for lo, hi in bands.get(lb, []):
@@ -125,7 +127,7 @@ def convergence(data_dir, fig_dir, params, cases):
             continue
         H = int(row["H"])
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, "C4"), scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, "C4"), scale=UM, values="hb",
                     label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
@@ -147,7 +149,7 @@ def parametric(data_dir, fig_dir, params, cases, labels):
     for i, (lb, row) in enumerate(curves):
         col, text = styles[row["model"]]
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, values="hb",
                     label="%s (peak %.2f um at %.0f Hz)" % (text, row["peak_rms_um"], row["peak_f_hz"]))
         y = ymax * (1.08 - 0.035 * i)
         for lo, hi in bands.get(lb, []):
