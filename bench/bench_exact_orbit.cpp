@@ -121,6 +121,8 @@ static void BM_exact_measures(benchmark::State& state) {
     const ExactOrbit o(*c.hb, c.X, c.omega, r.x0, r.v0);
     const ExactMeasures m = o.measures(c.q);
     benchmark::DoNotOptimize(m.x_max);
+    state.counters["pieces"] = double(o.pieces());
+    state.counters["pade_states"] = o.pade_states();
   }
 }
 BENCHMARK(BM_exact_measures)->DenseRange(0, 3)->Unit(benchmark::kMicrosecond);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <map>
+#include <utility>
 #include <stdexcept>
 #include <string>
 
@@ -40,29 +42,55 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
   Eigen::VectorXd xT, vT;
   Eigen::MatrixXd Phi;
   flow_.period_map(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, Phi, nullptr, &segments);
-  // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them
+  // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them: for a
+  // diagonalised propagator all nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0);
+  // for a Pade propagator the maps exp(A_S x_j h), kept per (S, h) (the uniform steps share them).
+  const auto rule = unit_rule();
+  std::map<std::pair<unsigned, double>, Eigen::MatrixXd> step_maps;
+  auto step_of = [&](unsigned S, double h) -> const Eigen::MatrixXd& {
+    auto it = step_maps.find({S, h});
+    if (it == step_maps.end()) it = step_maps.emplace(std::make_pair(S, h), flow_.exponential(S, omega, h)).first;
+    return it->second;
+  };
   for (const auto& sg : segments) {
     const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega))), 1, 1000);
+    Eigen::VectorXd z = sg.z0;
     for (int j = 0; j < m; ++j) {
-      const double s = sg.h * j / m;
-      pieces_.push_back({sg.t0 + s, sg.h / m, sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega, s, sg.z0)});
+      if (j > 0) z = flow_.spectral(sg.state, omega) ? flow_.advance(sg.state, omega, sg.h * j / m, sg.z0)
+                                                     : Eigen::VectorXd(step_of(sg.state, sg.h / m) * z);
+      pieces_.push_back({sg.t0 + sg.h * j / m, sg.h / m, sg.state, z});
     }
   }
   if (pieces_.empty()) throw std::runtime_error("ExactOrbit: no piece of the orbit at omega = " + std::to_string(omega));
-  const auto rule = unit_rule();
-  const Eigen::Index N = Eigen::Index(pieces_.size() * rule.size());
+  std::map<std::pair<unsigned, double>, std::vector<Eigen::MatrixXd>> maps;
+  auto maps_of = [&](unsigned S, double h) -> const std::vector<Eigen::MatrixXd>& {
+    auto it = maps.find({S, h});
+    if (it != maps.end()) return it->second;
+    std::vector<Eigen::MatrixXd> E;
+    for (const auto& node : rule) E.push_back(flow_.exponential(S, omega, node.first * h));
+    return maps.emplace(std::make_pair(S, h), std::move(E)).first->second;
+  };
+  const Eigen::Index R = Eigen::Index(rule.size()), N = Eigen::Index(pieces_.size()) * R;
   z_.resize(flow_.dimension(), N);
   t_.resize(N);
   w_.resize(N);
-  Eigen::Index k = 0;
-  for (const auto& p : pieces_)
-    for (const auto& [x, w] : rule) {
-      z_.col(k) = flow_.advance(p.state, omega, x * p.h, p.z0);
-      t_[k] = p.t0 + x * p.h;
-      w_[k] = w * p.h;
+  Eigen::VectorXd s(R);
+  for (std::size_t k = 0; k < pieces_.size(); ++k) {
+    const Piece& p = pieces_[k];
+    const Eigen::Index c0 = Eigen::Index(k) * R;
+    for (Eigen::Index j = 0; j < R; ++j) {
+      s[j] = rule[std::size_t(j)].first * p.h;
+      t_[c0 + j] = p.t0 + s[j];
+      w_[c0 + j] = rule[std::size_t(j)].second * p.h;
       state_.push_back(p.state);
-      ++k;
     }
+    if (flow_.spectral(p.state, omega)) {
+      z_.middleCols(c0, R) = flow_.advance_to(p.state, omega, s, p.z0);
+    } else {
+      const auto& E = maps_of(p.state, p.h);
+      for (Eigen::Index j = 0; j < R; ++j) z_.col(c0 + j).noalias() = E[std::size_t(j)] * p.z0;
+    }
+  }
   if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
   // 3. how periodic, and whether every node lies in its piece's contact state
   const double xs = z_.topRows(n_).cwiseAbs().maxCoeff(), vs = z_.middleRows(n_, n_).cwiseAbs().maxCoeff();

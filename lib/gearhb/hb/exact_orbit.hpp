@@ -57,6 +57,10 @@ class ExactOrbit {
   // No contact penetration of the wrong sign at any quadrature node (see above).
   bool consistent() const { return consistent_; }
   double omega() const { return omega_; }
+  // Sub-pieces followed, and the contact states among them whose propagator uses Pade
+  // exponentials (floquet.hpp: not diagonalisable to cond 1e4; each node then costs more).
+  std::size_t pieces() const { return pieces_.size(); }
+  int pade_states() const { return flow_.pade_states(); }
 
  private:
   struct Piece {          // a sub-piece of a FlowSegment

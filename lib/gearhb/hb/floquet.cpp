@@ -103,6 +103,19 @@ class PiecewiseLinearFlow::Propagator {
 
   const Eigen::MatrixXd& generator() const { return A_; }
   double rate() const { return spectral_ ? lambda_.cwiseAbs().maxCoeff() : B_.cwiseAbs().colwise().sum().maxCoeff(); }
+  // exp(A s_j) z for every s_j (columns)
+  Eigen::MatrixXd apply_all(const Eigen::VectorXd& s, const Eigen::VectorXd& z) const {
+    Eigen::MatrixXd out(z.size(), s.size());
+    if (!spectral_) {
+      for (Eigen::Index j = 0; j < s.size(); ++j) out.col(j) = exponential(s[j]) * z;
+      return out;
+    }
+    const Eigen::VectorXcd w = Vinv_ * z.cast<std::complex<double>>();
+    Eigen::MatrixXcd M(w.size(), s.size());
+    for (Eigen::Index j = 0; j < s.size(); ++j) M.col(j) = exps(s[j]).cwiseProduct(w);
+    out = (V_ * M).real();
+    return out;
+  }
   // exp(A s) z
   Eigen::VectorXd apply(double s, const Eigen::VectorXd& z) const {
     if (spectral_) return (V_ * exps(s).cwiseProduct(Vinv_ * z.cast<std::complex<double>>())).real();
@@ -185,6 +198,17 @@ const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned 
 
 Eigen::VectorXd PiecewiseLinearFlow::advance(unsigned state, double w, double s, const Eigen::VectorXd& z) const {
   return propagator(state, w).apply(s, z);
+}
+
+Eigen::MatrixXd PiecewiseLinearFlow::advance_to(unsigned state, double w, const Eigen::VectorXd& s,
+                                                const Eigen::VectorXd& z) const {
+  return propagator(state, w).apply_all(s, z);
+}
+
+bool PiecewiseLinearFlow::spectral(unsigned state, double w) const { return propagator(state, w).spectral(); }
+
+Eigen::MatrixXd PiecewiseLinearFlow::exponential(unsigned state, double w, double s) const {
+  return propagator(state, w).exponential(s);
 }
 
 const Eigen::MatrixXd& PiecewiseLinearFlow::generator_matrix(unsigned state, double w) const {

@@ -92,8 +92,15 @@ class PiecewiseLinearFlow {
                   const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                   Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr,
                   std::vector<FlowSegment>* segments = nullptr) const;
-  // The flow of contact state `state` over a time s: exp(A_state s) z.
+  // The flow of contact state `state` over a time s: exp(A_state s) z, and exp(A_state s) itself.
   Eigen::VectorXd advance(unsigned state, double omega, double s, const Eigen::VectorXd& z) const;
+  Eigen::MatrixXd exponential(unsigned state, double omega, double s) const;
+  // Whether state `state`'s propagator is diagonalised (advance costs two matrix-vector
+  // products) or uses Pade exponentials (advance costs an exponential).
+  bool spectral(unsigned state, double omega) const;
+  // The nodes exp(A_state s_j) z for several s_j at once (columns): for a diagonalised
+  // propagator one product V (e^{lambda s_j} o V^-1 z), else one exponential per s_j.
+  Eigen::MatrixXd advance_to(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
   // The generator A_state (its rows n..2n-1 give the acceleration).
   const Eigen::MatrixXd& generator_matrix(unsigned state, double omega) const;
   // The fastest rate of state `state`: max |lambda| of A_state (spectral), else the
