@@ -67,7 +67,7 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
     auto it = maps.find({S, h});
     if (it != maps.end()) return it->second;
     std::vector<Eigen::MatrixXd> E;
-    for (const auto& node : rule) E.push_back(flow_.exponential(S, omega, node.first * h));
+    for (const auto& node : rule) E.push_back(flow_.exponential(S, omega, node.first * h).topRows(2 * n_));
     return maps.emplace(std::make_pair(S, h), std::move(E)).first->second;
   };
   const Eigen::Index R = Eigen::Index(rule.size()), N = Eigen::Index(pieces_.size()) * R;
@@ -85,11 +85,19 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
       state_.push_back(p.state);
     }
     if (flow_.spectral(p.state, omega)) {
-      z_.middleCols(c0, R) = flow_.advance_to(p.state, omega, s, p.z0);
+      z_.block(0, c0, 2 * n_, R) = flow_.advance_xv(p.state, omega, s, p.z0);
     } else {
       const auto& E = maps_of(p.state, p.h);
-      for (Eigen::Index j = 0; j < R; ++j) z_.col(c0 + j).noalias() = E[std::size_t(j)] * p.z0;
+      for (Eigen::Index j = 0; j < R; ++j) z_.block(0, c0 + j, 2 * n_, 1).noalias() = E[std::size_t(j)] * p.z0;
     }
+  }
+  // the oscillator rows [1, cos k w t, sin k w t] in closed form
+  const auto& harmonics = flow_.oscillator_harmonics();
+  z_.row(2 * n_).setOnes();
+  for (std::size_t j = 0; j < harmonics.size(); ++j) {
+    const Eigen::ArrayXd th = harmonics[j] * omega * t_.array();
+    z_.row(2 * n_ + 1 + 2 * Eigen::Index(j)) = th.cos().matrix().transpose();
+    z_.row(2 * n_ + 2 + 2 * Eigen::Index(j)) = th.sin().matrix().transpose();
   }
   if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
   // 3. how periodic, and whether every node lies in its piece's contact state

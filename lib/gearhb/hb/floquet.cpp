@@ -103,17 +103,17 @@ class PiecewiseLinearFlow::Propagator {
 
   const Eigen::MatrixXd& generator() const { return A_; }
   double rate() const { return spectral_ ? lambda_.cwiseAbs().maxCoeff() : B_.cwiseAbs().colwise().sum().maxCoeff(); }
-  // exp(A s_j) z for every s_j (columns)
-  Eigen::MatrixXd apply_all(const Eigen::VectorXd& s, const Eigen::VectorXd& z) const {
-    Eigen::MatrixXd out(z.size(), s.size());
+  // The first `rows` rows of exp(A s_j) z for every s_j (columns)
+  Eigen::MatrixXd apply_all(const Eigen::VectorXd& s, const Eigen::VectorXd& z, int rows) const {
+    Eigen::MatrixXd out(rows, s.size());
     if (!spectral_) {
-      for (Eigen::Index j = 0; j < s.size(); ++j) out.col(j) = exponential(s[j]) * z;
+      for (Eigen::Index j = 0; j < s.size(); ++j) out.col(j) = exponential(s[j]).topRows(rows) * z;
       return out;
     }
     const Eigen::VectorXcd w = Vinv_ * z.cast<std::complex<double>>();
     Eigen::MatrixXcd M(w.size(), s.size());
     for (Eigen::Index j = 0; j < s.size(); ++j) M.col(j) = exps(s[j]).cwiseProduct(w);
-    out = (V_ * M).real();
+    out = (V_.topRows(rows) * M).real();
     return out;
   }
   // exp(A s) z
@@ -200,9 +200,9 @@ Eigen::VectorXd PiecewiseLinearFlow::advance(unsigned state, double w, double s,
   return propagator(state, w).apply(s, z);
 }
 
-Eigen::MatrixXd PiecewiseLinearFlow::advance_to(unsigned state, double w, const Eigen::VectorXd& s,
+Eigen::MatrixXd PiecewiseLinearFlow::advance_xv(unsigned state, double w, const Eigen::VectorXd& s,
                                                 const Eigen::VectorXd& z) const {
-  return propagator(state, w).apply_all(s, z);
+  return propagator(state, w).apply_all(s, z, 2 * n_);
 }
 
 bool PiecewiseLinearFlow::spectral(unsigned state, double w) const { return propagator(state, w).spectral(); }

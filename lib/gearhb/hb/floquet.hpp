@@ -98,9 +98,12 @@ class PiecewiseLinearFlow {
   // Whether state `state`'s propagator is diagonalised (advance costs two matrix-vector
   // products) or uses Pade exponentials (advance costs an exponential).
   bool spectral(unsigned state, double omega) const;
-  // The nodes exp(A_state s_j) z for several s_j at once (columns): for a diagonalised
-  // propagator one product V (e^{lambda s_j} o V^-1 z), else one exponential per s_j.
-  Eigen::MatrixXd advance_to(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
+  // The (x, v) rows of exp(A_state s_j) z for several s_j at once (columns): for a
+  // diagonalised propagator one product V_xv (e^{lambda s_j} o V^-1 z), else one exponential
+  // per s_j. (The other rows of z are the oscillators [1, cos k w t, sin k w t]: known.)
+  Eigen::MatrixXd advance_xv(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
+  // The harmonics k of the oscillator states (k = 1 first; floquet.hpp's header).
+  const std::vector<int>& oscillator_harmonics() const { return harmonics_; }
   // The generator A_state (its rows n..2n-1 give the acceleration).
   const Eigen::MatrixXd& generator_matrix(unsigned state, double omega) const;
   // The fastest rate of state `state`: max |lambda| of A_state (spectral), else the
