@@ -257,8 +257,16 @@ def grazing(data_dir, fig_dir, kn):
     F = [f / kn["grazing_force"] for f in d["F"]]
     for col, color, label in (("err_hb_exact", "C0", "HB exact contact, H = 10"),
                               ("err_hb_sampled", "C1", "HB sampled AFT, H = 10, N = 84"),
-                              ("err_ti", "C3", "time integration rk8pd, tol 1e-6")):
-        ax.plot(F, [max(e, 1e-14) for e in d[col]], marker=".", color=color, label=label)
+                              ("err_ti", "C3", "time integration rk8pd, tol 1e-6"),
+                              ("err_hb_corrected", "C5", "HB H = 10 + exact-flow correction")):
+        if col not in d:
+            continue
+        ax.plot(F, [max(e, 1e-14) for e in d[col]], marker=".", color=color, label=label,
+                ls="--" if col == "err_hb_corrected" else "-")   # dashed: the HB lines below it show
+        failed = [f for f, e in zip(F, d[col]) if math.isnan(e)]
+        if failed:   # no exact value there (correction failed or inconsistent): marked at the bottom
+            ax.plot(failed, [1e-14] * len(failed), ls="none", marker="x", color=color,
+                    label="correction failed (no exact value)")
     ax.set_yscale("log")
     ax.axvline(1.0, color="0.5", ls=":")
     ax.set_xlabel("F / F_graze")
