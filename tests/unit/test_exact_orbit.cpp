@@ -66,9 +66,7 @@ ExactOrbit corrected(const HarmonicBalance& hb, VectorXd X, double w, double x_s
   const FloquetResult r = shoot(hb, X, w, x_scale);
   ExactOrbit orbit(hb, X, w, r.x0, r.v0);
   EXPECT_TRUE(orbit.consistent());
-  // relative to max |x| and max |v|: a static deflection 3500 times the amplitude (full
-  // contact) leaves rounding of 1e-12 of the velocity amplitude
-  EXPECT_LT(orbit.period_mismatch(), 1e-11);
+  EXPECT_LT(orbit.period_mismatch(), 1e-12);
   return orbit;
 }
 

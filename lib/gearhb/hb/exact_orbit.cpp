@@ -40,8 +40,7 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
   // 1. the orbit piece by piece on the exact flow
   std::vector<FlowSegment> segments;
   Eigen::VectorXd xT, vT;
-  Eigen::MatrixXd Phi;
-  flow_.period_map(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, Phi, nullptr, &segments);
+  flow_.follow(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, segments);
   // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them: for a
   // diagonalised propagator all nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0);
   // for a Pade propagator the maps exp(A_S x_j h), kept per (S, h) (the uniform steps share them).
@@ -101,9 +100,9 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
   }
   if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
   // 3. how periodic, and whether every node lies in its piece's contact state
-  const double xs = z_.topRows(n_).cwiseAbs().maxCoeff(), vs = z_.middleRows(n_, n_).cwiseAbs().maxCoeff();
-  mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff() / std::max(xs, 1e-300),
-                       (vT - v0).cwiseAbs().maxCoeff() / std::max(vs, 1e-300));
+  const double xs = z_.topRows(n_).cwiseAbs().maxCoeff();
+  // scaled as the shooting residual: displacements by max |x|, velocities by omega max |x|
+  mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff(), (vT - v0).cwiseAbs().maxCoeff() / omega) / std::max(xs, 1e-300);
   for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
     double scale = 0.0, wrong = 0.0;
     for (Eigen::Index j = 0; j < N; ++j) {

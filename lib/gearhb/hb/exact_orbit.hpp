@@ -52,7 +52,7 @@ class ExactOrbit {
   double mean_contact_force(std::size_t i) const;
   // x at time t in [0, T] (T = 2 pi / omega).
   Eigen::VectorXd x_at(double t) const;
-  // max |x(T) - x0| / max(|x|), max |v(T) - v0| / max(|v|) over the orbit: how periodic the orbit is.
+  // max(|x(T) - x0|, |v(T) - v0| / omega) / max |x| over the orbit: how periodic it is.
   double period_mismatch() const { return mismatch_; }
   // No contact penetration of the wrong sign at any quadrature node (see above).
   bool consistent() const { return consistent_; }

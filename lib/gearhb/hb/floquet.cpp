@@ -233,6 +233,18 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
                                      const std::vector<double>& nodes, Eigen::VectorXd& xT,
                                      Eigen::VectorXd& vT, Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs,
                                      std::vector<FlowSegment>* segments) const {
+  march(x0, v0, w, nodes, xT, vT, &Phi, xs, segments);
+}
+
+void PiecewiseLinearFlow::follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+                                 const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                                 std::vector<FlowSegment>& segments) const {
+  march(x0, v0, w, nodes, xT, vT, nullptr, nullptr, &segments);
+}
+
+void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+                                const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                                Eigen::MatrixXd* Phi, Eigen::MatrixXd* xs, std::vector<FlowSegment>* segments) const {
   const int n = n_, m = 2 * n_;
   const double T = 2.0 * M_PI / w;
   const std::size_t nc = hb_.contacts().size();
@@ -244,7 +256,7 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
   unsigned S = 0;
   for (std::size_t i = 0; i < nc; ++i)
     if (rows_[i].dot(z) > 0.0) S |= 1u << i;
-  Phi = Eigen::MatrixXd::Identity(m, m);
+  if (Phi) *Phi = Eigen::MatrixXd::Identity(m, m);
   if (xs) xs->resize(n, Eigen::Index(nodes.size()));
   if (segments) segments->clear();
   const double tol = 1e-14 * T;
@@ -256,8 +268,9 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
     while (h > 0.0) {
       if (++guard > 1000) throw std::runtime_error("PiecewiseLinearFlow: too many contact switches in one step");
       const Propagator& P = propagator(S, w);
-      const Eigen::MatrixXd& E = P.step_exponential(h);
-      const Eigen::VectorXd zb = E * z;
+      // without the monodromy a diagonalised propagator steps by two products; a Pade one by its kept step
+      const Eigen::MatrixXd* E = Phi || !P.spectral() ? &P.step_exponential(h) : nullptr;
+      const Eigen::VectorXd zb = E ? Eigen::VectorXd(*E * z) : P.apply(h, z);
       // contacts whose state at the end of the step differs from S: the earliest switch
       double s_first = h;
       std::size_t i_first = nc;
@@ -271,14 +284,18 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
       if (i_first == nc) {
         if (segments) segments->push_back({t, h, S, z});
         z = zb;
-        Phi = E.topLeftCorner(m, m) * Phi;
+        if (Phi) *Phi = E->topLeftCorner(m, m) * *Phi;
         break;
       }
-      const Eigen::MatrixXd Es = P.exponential(s_first);
       if (segments) segments->push_back({t, s_first, S, z});
       t += s_first;
-      z = Es * z;
-      Phi = Es.topLeftCorner(m, m) * Phi;
+      if (Phi) {
+        const Eigen::MatrixXd Es = P.exponential(s_first);
+        z = Es * z;
+        *Phi = Es.topLeftCorner(m, m) * *Phi;
+      } else {
+        z = P.apply(s_first, z);
+      }
       S ^= 1u << i_first;
       h -= s_first;
       if (h <= tol) break;

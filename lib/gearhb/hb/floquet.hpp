@@ -92,6 +92,10 @@ class PiecewiseLinearFlow {
                   const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                   Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr,
                   std::vector<FlowSegment>* segments = nullptr) const;
+  // The same orbit without the monodromy matrix (no matrix exponential where the propagator
+  // is diagonalised: each step is two matrix-vector products): `segments` as above.
+  void follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, const std::vector<double>& nodes,
+              Eigen::VectorXd& xT, Eigen::VectorXd& vT, std::vector<FlowSegment>& segments) const;
   // The flow of contact state `state` over a time s: exp(A_state s) z, and exp(A_state s) itself.
   Eigen::VectorXd advance(unsigned state, double omega, double s, const Eigen::VectorXd& z) const;
   Eigen::MatrixXd exponential(unsigned state, double omega, double s) const;
@@ -132,6 +136,10 @@ class PiecewiseLinearFlow {
   Eigen::MatrixXd generator(unsigned state, double omega) const;   // A_S
   Eigen::RowVectorXd contact_row(std::size_t i) const;            // u_i = r_i' z
   const Propagator& propagator(unsigned state, double omega) const;
+  // period_map and follow: Phi null skips the monodromy (and its matrix exponentials).
+  void march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, const std::vector<double>& nodes,
+             Eigen::VectorXd& xT, Eigen::VectorXd& vT, Eigen::MatrixXd* Phi, Eigen::MatrixXd* xs,
+             std::vector<FlowSegment>* segments) const;
 };
 
 // The nodes of the shooting on the exact flow of the HB point (X, omega): a uniform grid
