@@ -1,7 +1,8 @@
 """Chapter 2: the method, speed against accuracy, and where each method fails.
 
 figM1  error of x_max against CPU time, one series per method and scene (log-log)
-figM2  CPU time of one Newton step against the number of HB unknowns n(2H+1), with the n^3 H^3 model
+figM2  CPU time of one Newton step against the number of HB unknowns n(2H+1), with the n^3 H^3 model,
+       and the exact-flow correction's CPU time per grid point of each scene
 figM3  natural continuation stops at the first fold, arc length goes round it
 figM4  time-integration sweeps up and down against the HB curve: jumps at the folds
 figM5  sampled AFT: spurious folds at the contact, against the exact projection
@@ -20,7 +21,8 @@ FAMILY_STYLE = {"hb_exact": ("C0", "o", "HB exact contact, arc length (H)"),
                 "hb_stepped": ("C2", "s", "HB exact contact, stepped on the grid (H)"),
                 "hb_sampled": ("C1", "^", "HB sampled AFT, H = 10 (N)"),
                 "ti_rk8pd": ("C3", "D", "time integration rk8pd (tol)"),
-                "ti_rkf45": ("C4", "v", "time integration rkf45 (tol)")}
+                "ti_rkf45": ("C4", "v", "time integration rkf45 (tol)"),
+                "hb_corrected": ("C5", "*", "HB at H + exact-flow correction (H)")}
 SCENE_TITLE = {"mass_wall": "mass against wall (ch. 3), g = -0.6 m, F = 0.01 N",
                "nlvib_ex03": "NLvib example 03 (x1)",
                "gear_300Nm": "gear at 300 N m (ch. 8), DTE"}
@@ -43,6 +45,10 @@ def accuracy_vs_cost(data_dir, fig_dir, params):
             xs = [d["cpu_s"][i] for i in idx]
             ys = [max(d["error"][i], 1e-13) for i in idx]
             ax.plot(xs, ys, color=color, marker=marker, ms=4, lw=1, label=label)
+            if fam == "hb_corrected":   # which H each star is
+                for i, x, y in zip(idx, xs, ys):
+                    ax.annotate(d["setting"][i].replace("H=", ""), (x, y), xytext=(3, -9),
+                                textcoords="offset points", fontsize=6, color=color)
             # Settings that missed a stable solution: hollow marker.
             miss = [i for i in idx if d["missed"][i] > 0]
             if miss:
@@ -55,16 +61,38 @@ def accuracy_vs_cost(data_dir, fig_dir, params):
         ax.set_xlabel("CPU time for the grid [s]")
         ax.set_ylabel("max relative error of x_max over the stable grid solutions")
         ax.set_title(SCENE_TITLE.get(sc, sc), fontsize=9)
-    axes[0][0].plot([], [], ls="none", marker="o", ms=9, mfc="none", mec="k", label="missed a stable solution")
-    axes[0][0].legend(loc="lower left", fontsize=7)
+    # the legend where the middle panel is empty (right, between 1e-5 and 1e-10)
+    leg = axes[0][min(1, len(scenes) - 1)]
+    leg.plot([], [], ls="none", marker="o", ms=9, mfc="none", mec="k", label="missed a stable solution")
+    leg.legend(loc="center right", fontsize=7)
     fig.suptitle("Accuracy against cost: %d grid frequencies per scene, reference rk8pd tol %.0e started on HB"
                  % (int(params["grid_points"]), params["ti_ref_tol"]), fontsize=10)
     return save(fig, fig_dir / "figM1_accuracy_vs_cost.png")
 
 
+SCENE_DOFS = {"mass_wall": 1, "nlvib_ex03": 2, "gear_300Nm": 1}
+
+
+def correction_cost(ax, data_dir):
+    """The exact-flow correction per grid point (accuracy_cost.csv), at the HB unknowns n(2H+1) it corrects."""
+    a = read_csv(data_dir / "accuracy_cost.csv")
+    if "cpu_s_correction" not in a:
+        return
+    for k, sc in enumerate(dict.fromkeys(a["scene"])):
+        idx = [i for i in range(len(a["scene"])) if a["scene"][i] == sc and a["method"][i] == "hb_corrected"
+               and a["corrected"][i] + a["not_corrected"][i] > 0]
+        if not idx:
+            continue
+        xs = [SCENE_DOFS[sc] * (2 * int(a["setting"][i].split("=")[1]) + 1) for i in idx]
+        ys = [a["cpu_s_correction"][i] / (a["corrected"][i] + a["not_corrected"][i]) for i in idx]
+        ax.plot(xs, ys, ls="none", marker="*", ms=8, color="C%d" % (5 + k),
+                label="exact-flow correction per point, %s (n = %d)" % (sc, SCENE_DOFS[sc]))
+
+
 def cost_growth(data_dir, fig_dir):
     d = read_csv(data_dir / "cost_per_point.csv")
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    correction_cost(ax, data_dir)
     ns = sorted(set(int(n) for n in d["n"]))
     for j, n in enumerate(ns):
         idx = [i for i in range(len(d["n"])) if int(d["n"][i]) == n]
@@ -87,8 +115,9 @@ def cost_growth(data_dir, fig_dir):
         ax.plot([], [], "k:", marker="s", ms=3, mfc="none",
                 label="dotted: condensed on the contact (continuation step, LU of 2H+2 rows)")
     ax.set_xlabel("HB unknowns n(2H+1)")
-    ax.set_ylabel("CPU time of one Newton step [s]")
-    ax.set_title("Cost of a Newton step (residual + Jacobian + LU): chain of n masses, one contact", fontsize=9)
+    ax.set_ylabel("CPU time of one Newton step (stars: one correction) [s]")
+    ax.set_title("Cost of a Newton step (residual + Jacobian + LU): chain of n masses, one contact;\n"
+                 "stars: the exact-flow correction of one grid point of a chapter-2 scene (shooting + measures)", fontsize=8)
     ax.legend(fontsize=6.5)
     return save(fig, fig_dir / "figM2_cost_per_point.png")
 
@@ -268,8 +297,16 @@ def grazing(data_dir, fig_dir, kn):
     F = [f / kn["grazing_force"] for f in d["F"]]
     for col, color, label in (("err_hb_exact", "C0", "HB exact contact, H = 10"),
                               ("err_hb_sampled", "C1", "HB sampled AFT, H = 10, N = 84"),
-                              ("err_ti", "C3", "time integration rk8pd, tol 1e-6")):
-        ax.plot(F, [max(e, 1e-14) for e in d[col]], marker=".", color=color, label=label)
+                              ("err_ti", "C3", "time integration rk8pd, tol 1e-6"),
+                              ("err_hb_corrected", "C5", "HB H = 10 + exact-flow correction")):
+        if col not in d:
+            continue
+        ax.plot(F, [max(e, 1e-14) for e in d[col]], marker=".", color=color, label=label,
+                ls="--" if col == "err_hb_corrected" else "-")   # dashed: the HB lines below it show
+        failed = [f for f, e in zip(F, d[col]) if math.isnan(e)]
+        if failed:   # no exact value there (correction failed or inconsistent): marked at the bottom
+            ax.plot(failed, [1e-14] * len(failed), ls="none", marker="x", color=color,
+                    label="correction failed (no exact value)")
     ax.set_yscale("log")
     ax.axvline(1.0, color="0.5", ls=":")
     ax.set_xlabel("F / F_graze")

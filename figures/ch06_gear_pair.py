@@ -10,8 +10,10 @@ Dotted verticals: linear natural frequencies; the rug at the bottom: the contact
 (figures/style.py). The deepest Delta_min off every natural frequency is pointed at as the
 mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
+import math
+
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
-                   NATURAL_OPEN, bifurcation_handles, case_rows, contact_rug, legend_styles, plot_branch, read_csv,
+                   NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, plot_branch, read_csv,
                    rug_room, save)
 
 import matplotlib.pyplot as plt
@@ -34,7 +36,9 @@ def mark_bifurcations(ax, data_dir, label, d):
             continue   # folds show as turning points; jumps and unlocated changes are only in the csv
         # the Delta_max value at the nearest point of the branch
         i = min(range(len(d["omega"])), key=lambda j: abs(d["omega"][j] - w))
-        ax.plot(w / 1e3, d["x_max"][i] * 1e3, ls="none", marker=BIFURCATION_MARKERS[t], color=BIFURCATION_COLOURS[t],
+        y = column(d, "x_max")[i]
+        y = d["x_max"][i] if math.isnan(y) else y   # no exact value there: the HB one
+        ax.plot(w / 1e3, y * 1e3, ls="none", marker=BIFURCATION_MARKERS[t], color=BIFURCATION_COLOURS[t],
                 ms=6, mfc="none", mew=1.2)
         used.append(t)
     return sorted(set(used))
@@ -99,6 +103,8 @@ def case_figure(data_dir, fig_dir, row, name):
     w_open, w_closed = modes(data_dir, mesh)
     d["w_k"] = [w / 1e3 for w in d["omega"]]
     d["amp"] = [(a - b) / 2 for a, b in zip(d["x_max"], d["x_min"])]
+    if "x_max_exact" in d:
+        d["amp_exact"] = [(a - b) / 2 for a, b in zip(d["x_max_exact"], d["x_min_exact"])]
     p_span = max(d["omega"]) - min(d["omega"])
     zoom = fold_window(data_dir, label, p_span)
     rows = 3 if zoom else 2
@@ -127,7 +133,7 @@ def case_figure(data_dir, fig_dir, row, name):
         rug_room(az)
         az.set_title("zoom on the folds: %.2f-%.2f krad/s" % zoom, fontsize=9)
         a1.axvspan(*zoom, color="0.5", alpha=0.12, lw=0)
-    plot_branch(a2, d, "amp", "C2", r"HB: $(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
+    plot_branch(a2, d, "amp", "C2", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
     s = row["Fa"] / 1e4   # linear_*.csv is for Fa = 1e4
     a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
                 label="linear, mesh open")

@@ -7,6 +7,8 @@ fig70s_time_history    x(t), e(t) and the contact force at a contact-loss point
 fig70s_H_convergence   the 300 N m curve for H = 1, 5, 10, 20
 fig70s_parametric      the 300 N m curve of the thesis' model and of the parametric one
 Everything (titles, parameters) comes from the run's files.
+The curves are harmonic balance (values="hb"): these figures are about HB at H = 1 and 5 (the
+thesis figures) and its convergence in H; the tables hold the exact orbit beside them (x_rms_ac_exact).
 """
 import json
 
@@ -72,7 +74,7 @@ def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases, what
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
         bad = flickering_stability(d, x="f_mesh_hz")
         flicker = flicker or bool(bad)
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad, values="hb",
                     label="T = %d N m (kc %.1f MN/m)" % (row["torque"], row["kc"] / 1e6))
         contact_rug(ax, d, x="f_mesh_hz", row=i, colour=col)
     lin = read_csv(data_dir / ("linear_%s.csv" % labels[-1]))
@@ -125,7 +127,7 @@ def convergence(data_dir, fig_dir, params, cases):
             continue
         H = int(row["H"])
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, COMPARISON_COLOURS[4]), scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, COMPARISON_COLOURS[4]), scale=UM, values="hb",
                     label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
@@ -146,7 +148,7 @@ def parametric(data_dir, fig_dir, params, cases, labels):
     for i, (lb, row) in enumerate(curves):
         col, text = styles[row["model"]]
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM,
+        plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, values="hb",
                     label="%s (peak %.2f um at %.0f Hz)" % (text, row["peak_rms_um"], row["peak_f_hz"]))
         contact_rug(ax, d, x="f_mesh_hz", row=i, colour=col)
     extra = legend_styles()[2:]

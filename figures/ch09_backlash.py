@@ -8,6 +8,7 @@ fig80  RMS of x vs mesh frequency with backlash, H = 1, three torques
 fig81  the same with H = 5
 fig82  300 N m with and without backlash (both readings), H = 1 and 5
 Everything (titles, parameters) comes from the run's files.
+The curves are harmonic balance (values="hb"), as in chapter 8: HB at H = 1 and 5 is the subject.
 """
 import json
 
@@ -143,9 +144,9 @@ def fig82(data_dir, fig_dir, params, cases):
             name = "without backlash" if r["reading"] == "none" else r["reading"]
             bad = flickering_stability(d, x="f_mesh_hz")
             flicker = flicker or bool(bad)
-            plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad,
+            plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad, values="hb",
                         label="%s: kc %.2f MN/m, peak %.2f um at %.0f Hz" % (name, r["kc"] / 1e6, r["peak_rms_um"], r["peak_f_hz"]))
-            plot_branch(zoom, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad)
+            plot_branch(zoom, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad, values="hb")
         peak = max(r["peak_rms_um"] for _, r in rows)
         f_peak = min(r["peak_f_hz"] for _, r in rows)
         zoom.set_xlim(f_peak - 60, f_peak + 200)

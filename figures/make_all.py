@@ -32,7 +32,12 @@ def main():
     ap.add_argument("--build", default="build")
     ap.add_argument("--only", help="run just this chapter (e.g. ch03_mass_wall)")
     ap.add_argument("--jobs", type=int, default=2, help="chapter programs run at once")
+    ap.add_argument("--values", choices=("exact", "hb"), default="exact",
+                    help="frequency responses drawn from the exact orbit where the table has it (default) "
+                         "or from harmonic balance")
     args = ap.parse_args()
+    import style
+    style.VALUES = args.values
     build = pathlib.Path(args.build).resolve()
     fig_dir = build / "figures"
     fig_dir.mkdir(parents=True, exist_ok=True)

@@ -14,8 +14,15 @@ One convention for every figure of every chapter, defined here and nowhere else:
   - bifurcations: one marker per type (BIFURCATION_MARKERS), hollow;
   - linear references: LINEAR_OPEN / LINEAR_CLOSED (grey dash-dot), natural frequencies
     NATURAL_OPEN / NATURAL_CLOSED (grey dotted verticals), contact levels CONTACT_LEVEL.
+
+Values drawn (VALUES): "exact" (the default) draws a measure's exact twin (x_max_exact, ...: the
+HB point corrected on the exact piecewise-linear flow, lib/README "The exact orbit") wherever the
+table has it; points without one (`exact` != ok) are gaps in the curve with a grey x at the HB
+value, and a table with no exact value at all (a time-varying stiffness) is drawn from HB.
+"hb" draws the harmonic-balance values. Set by make_all.py --values or GEARHB_FIGURE_VALUES.
 """
 import csv
+import os
 
 import matplotlib
 
@@ -42,6 +49,24 @@ def read_csv(path):
     return cols
 
 
+VALUES = os.environ.get("GEARHB_FIGURE_VALUES", "exact")
+
+
+def uses_exact(d, y, values=None):
+    """Whether column y is drawn from its exact twin: `values` (default VALUES) is "exact" and
+    the table has exact values."""
+    return ((values or VALUES) == "exact" and (y + "_exact") in d
+            and any(s == "ok" for s in d.get("exact", [])))
+
+
+def column(d, y, values=None):
+    """The values of column y to draw: its exact twin where uses_exact (NaN where a point has
+    none), else the column itself."""
+    if not uses_exact(d, y, values):
+        return d[y]
+    return [v if s == "ok" else float("nan") for v, s in zip(d[y + "_exact"], d["exact"])]
+
+
 def read_params(data_dir):
     """The run's parameters (params.json) as {name: value}."""
     import json
@@ -65,11 +90,14 @@ def runs(flags):
     return out
 
 
-def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, unresolved=()):
+def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, values=None, unresolved=()):
     """One continuation branch: solid where stable, dashed where unstable, grey (UNRESOLVED)
     at the indices `unresolved` (a stability label that is not trusted).
-    Consecutive runs share their end point so the curve stays connected."""
-    xs, ys = d[x], [v * scale for v in d[y]]
+    Consecutive runs share their end point so the curve stays connected.
+    values: "exact" or "hb" for this curve (default VALUES; a figure about HB's own
+    truncation order passes "hb")."""
+    exact = uses_exact(d, y, values)
+    xs, ys = d[x], [v * scale for v in column(d, y, values)]
     bad = set(unresolved)
     first = True
     for flag, i0, i1 in runs([2 if i in bad else int(s) for i, s in enumerate(d["stable"])]):
@@ -80,6 +108,14 @@ def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, 
         ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=color, ls="-" if flag else "--",
                 lw=1.4, label=label if first else None)
         first = False
+    note_values(ax, exact)
+    if exact:   # points with no exact value: their HB value, marked (one legend entry per axes)
+        no_exact = [i for i in range(len(xs)) if d["exact"][i] != "ok"]
+        if no_exact:
+            first_x = not getattr(ax, "_gearhb_x_marked", False)
+            ax._gearhb_x_marked = True
+            ax.plot([xs[i] for i in no_exact], [d[y][i] * scale for i in no_exact], ls="none", marker="x", ms=4,
+                    color="0.4", label="no exact value (correction failed): HB shown" if first_x else None)
 
 
 def flickering_stability(d, x="omega", margin=2):
@@ -98,6 +134,20 @@ def flickering_stability(d, x="omega", margin=2):
         if odd:
             out += range(odd[0] - 1, odd[-1] + 2)
     return out
+
+
+def note_values(ax, exact):
+    """A small note in the axes' corner: which values its curves show."""
+    kinds = getattr(ax, "_gearhb_values", set()) | {"exact" if exact else "hb"}
+    ax._gearhb_values = kinds
+    text = {frozenset({"exact"}): "curves: exact orbit (HB corrected on the exact flow)",
+            frozenset({"hb"}): "curves: harmonic balance",
+            frozenset({"exact", "hb"}): "curves: exact orbit where available, else harmonic balance"}[frozenset(kinds)]
+    if getattr(ax, "_gearhb_note", None) is None:
+        ax._gearhb_note = ax.text(0.005, 0.005, text, transform=ax.transAxes, ha="left", va="bottom", fontsize=6,
+                                  color="0.35")
+    else:
+        ax._gearhb_note.set_text(text)
 
 
 def unresolved_handle(H):

@@ -141,7 +141,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.say(model_.name + ": " + c.branch.summary() +
           (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
   if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
-  run.write("frc.csv", dof_response_table(hb, c.branch, c.stable, model_.output));
+  run.write("frc.csv", dof_response_table(hb, c, model_.output));
   run.write("bifurcations.csv", bifurcation_table(c));
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   const ResponseEvaluator ev(hb, model_.output);

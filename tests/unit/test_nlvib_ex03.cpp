@@ -122,7 +122,24 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
   ASSERT_TRUE(c.complete) << c.failure;
   const std::string frc = frequency_response_table(hb, c, Eigen::Vector2d(1, 0)).to_csv();
   EXPECT_EQ(frc.substr(0, frc.find('\n')),
-            "omega,x_max,x_min,x_rms_ac,x_h1,x_mean,stable,contact,floquet_modulus,floquet_angle,hb_orbit_error");
+            "omega,x_max,x_min,x_rms_ac,x_h1,x_mean,stable,contact,floquet_modulus,floquet_angle,hb_orbit_error,"
+            "x_max_exact,x_min_exact,x_rms_ac_exact,x_h1_exact,x_mean_exact,exact");
+  // every point of this curve has its exact orbit or says why not; none is silently HB
+  std::size_t rows = 0, flagged = 0;
+  for (std::size_t p = 0; (p = frc.find('\n', p)) != std::string::npos; ++p) {
+    const std::size_t e = frc.find('\n', p + 1);
+    if (e == std::string::npos) break;
+    const std::string row = frc.substr(p + 1, e - p - 1);
+    ++rows;
+    const std::string flag = row.substr(row.rfind(',') + 1);
+    EXPECT_TRUE(flag == "ok" || flag == "not_converged" || flag == "inconsistent") << row;
+    if (flag != "ok") {
+      ++flagged;
+      EXPECT_NE(row.find(",,,,,"), std::string::npos) << "empty exact cells where exact != ok: " << row;
+    }
+  }
+  EXPECT_EQ(rows, c.branch.points.size());
+  EXPECT_LT(flagged, rows / 10);
   const Table bt = bifurcation_table(c);
   EXPECT_EQ(bt.rows(), c.bifurcations.size());
   const std::string b = bt.to_csv();

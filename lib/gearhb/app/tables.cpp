@@ -4,6 +4,7 @@
 #include <complex>
 #include <string>
 
+#include "gearhb/hb/exact_orbit.hpp"
 #include "gearhb/hb/response.hpp"
 
 namespace gearhb {
@@ -20,27 +21,73 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
   return t;
 }
 
-Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
-                         const Eigen::VectorXd& output) {
+namespace {
+
+// The common columns of every frequency-response table (lib/README "Output files").
+std::vector<std::string> common_columns() {
+  return {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
+          "floquet_modulus", "floquet_angle", "hb_orbit_error",
+          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact"};
+}
+
+// The exact twins of x_max, x_min, x_rms_ac, x_h1, x_mean: empty unless status ok.
+std::vector<Table::Cell> exact_cells(const ExactPoint& e, std::size_t k, bool with_rms_mean = true) {
+  const bool ok = e.status == ExactStatus::ok;
+  const ExactMeasures& m = e.measures[k];
+  std::vector<Table::Cell> r{cell(ok, m.x_max), cell(ok, m.x_min)};
+  if (with_rms_mean) r.push_back(cell(ok, m.x_rms_ac));
+  r.push_back(cell(ok, m.x_h1));
+  if (with_rms_mean) r.push_back(cell(ok, m.x_mean));
+  return r;
+}
+
+// Point i's common cells; `e` holds the exact measures of q first.
+std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const FrequencyCurve& c, std::size_t i,
+                                    const ExactPoint& e, const std::string& contact) {
+  const auto& P = c.branch.points;
+  const auto r = ev.summarize(P[i].X);
+  const bool fl = c.floquet.size() == P.size();
+  std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+                               contact.empty() ? std::string(to_string(r.contact)) : contact,
+                               cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
+                               // NaN where no corrected orbit exists (a time-varying stiffness)
+                               cell(fl && std::isfinite(c.floquet[i].orbit_error), fl ? c.floquet[i].orbit_error : 0.0)};
+  const auto ex = exact_cells(e, 0);
+  row.insert(row.end(), ex.begin(), ex.end());
+  row.push_back(std::string(to_string(e.status)));
+  return row;
+}
+
+}  // namespace
+
+Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output) {
   const int n = hb.dofs();
-  std::vector<std::string> columns = {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact"};
+  std::vector<std::string> columns = common_columns();
   std::vector<ResponseEvaluator> dof;
+  std::vector<Eigen::VectorXd> qs{output};
   for (int i = 0; i < n; ++i) {
     for (const char* what : {"_max", "_min", "_h1"}) columns.push_back("q" + std::to_string(i + 1) + what);
     dof.emplace_back(hb, Eigen::VectorXd::Unit(n, i));
+    qs.push_back(Eigen::VectorXd::Unit(n, i));
   }
+  for (int i = 0; i < n; ++i)
+    for (const char* what : {"_max_exact", "_min_exact", "_h1_exact"}) columns.push_back("q" + std::to_string(i + 1) + what);
   const std::size_t P = hb.contacts().size();
   for (std::size_t i = 0; i < P; ++i) columns.push_back("contact_" + std::to_string(i + 1));
   const ResponseEvaluator ev(hb, output);
   Table t(columns);
-  for (std::size_t p = 0; p < b.points.size(); ++p) {
-    const auto r = ev.summarize(b.points[p].X);
-    std::vector<Table::Cell> row = {b.points[p].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean,
-                                    long(stable[p] ? 1 : 0), std::string(to_string(r.contact))};
+  for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
+    const ExactPoint e = exact_point(hb, c, p, qs);
+    std::vector<Table::Cell> row = common_row(ev, c, p, e, "");
     for (int i = 0; i < n; ++i) {
-      const auto q = dof[i].summarize(b.points[p].X);
+      const auto q = dof[i].summarize(c.branch.points[p].X);
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
     }
+    for (int i = 0; i < n; ++i) {
+      const auto ex = exact_cells(e, std::size_t(i) + 1, false);
+      row.insert(row.end(), ex.begin(), ex.end());
+    }
+    const auto r = ev.summarize(c.branch.points[p].X);
     for (std::size_t i = 0; i < P; ++i) row.push_back(std::string(to_string(r.contact_states[i])));
     t.add_row(std::move(row));
   }
@@ -56,19 +103,11 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label) {
   ResponseEvaluator ev(hb, q);
-  std::vector<std::string> columns{"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
-                                   "floquet_modulus", "floquet_angle", "hb_orbit_error"};
+  std::vector<std::string> columns = common_columns();
   columns.insert(columns.end(), extra.begin(), extra.end());
   Table t(columns);
-  const auto& P = c.branch.points;
-  const bool fl = c.floquet.size() == P.size();
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const auto r = ev.summarize(P[i].X);
-    std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
-                                 contact_label ? contact_label(i) : std::string(to_string(r.contact)),
-                                 cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
-                                 // NaN where no corrected orbit exists (a time-varying stiffness)
-                                 cell(fl && std::isfinite(c.floquet[i].orbit_error), fl ? c.floquet[i].orbit_error : 0.0)};
+  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
+    std::vector<Table::Cell> row = common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "");
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);
       row.insert(row.end(), more.begin(), more.end());
@@ -100,12 +139,13 @@ double hz(double omega) { return omega / (2 * M_PI); }
 
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c) {
   const ResponseEvaluator ev(hb, Eigen::VectorXd::Constant(1, 1.0));
-  Table t({"f_mesh_hz", "omega", "x_max", "x_min", "x_rms_ac", "x_h1", "stable", "contact"});
+  std::vector<std::string> columns{"f_mesh_hz"};
+  for (const auto& name : common_columns()) columns.push_back(name);
+  Table t(columns);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    const auto& p = c.branch.points[i];
-    const ResponseSummary r = ev.summarize(p.X);
-    t.add_row({hz(p.omega), p.omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, long(c.stable[i] ? 1 : 0),
-               std::string(to_string(r.contact))});
+    std::vector<Table::Cell> row{hz(c.branch.points[i].omega)};
+    for (auto& x : common_row(ev, c, i, exact_point(hb, c, i, {Eigen::VectorXd::Constant(1, 1.0)}), "")) row.push_back(x);
+    t.add_row(std::move(row));
   }
   return t;
 }

@@ -21,17 +21,16 @@ namespace gearhb {
 Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
                                const std::vector<bool>& stable, const Eigen::VectorXd& q);
 
-// The frequency response of a model file (gearhb_frc): the columns of
-// frequency_response_table for the output coordinate (omega, x_max, x_min, x_rms_ac,
-// x_h1, x_mean, stable, contact), then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n,
-// then contact_<j> for every contact j = 1..P: its own state over the period (open, full,
-// intermittent; `contact` is the summary over all of them).
-Table dof_response_table(const HarmonicBalance& hb, const Branch& b, const std::vector<bool>& stable,
-                         const Eigen::VectorXd& output);
-// The same for a whole frequency curve, with three more columns after those:
-// floquet_modulus, floquet_angle (the critical multiplier |mu|, arg mu) and
-// hb_orbit_error (max |x_HB - x_exact| over the period, floquet.hpp); NaN when the
-// curve was not computed with Floquet stability.
+// The common columns of every frequency-response table of a curve (lib/README "Output
+// files"), for the coordinate q' x, one row per point in continuation order:
+//   omega, x_max, x_min, x_rms_ac, x_h1, x_mean, stable, contact   (the HB orbit),
+//   floquet_modulus, floquet_angle (the critical multiplier |mu|, arg mu), hb_orbit_error
+//   (max |x_HB - x_exact| over the period, floquet.hpp),
+//   x_max_exact, x_min_exact, x_rms_ac_exact, x_h1_exact, x_mean_exact (the same measures
+//   of the exact orbit, exact_orbit.hpp), exact (ok | not_converged | inconsistent |
+//   unavailable: ExactStatus);
+// cells are empty where a value does not exist (no Floquet stability; no corrected
+// orbit for a time-varying stiffness; exact != ok).
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
 // The same with a program's own columns after the common ones: `extra` names them and
 // `extra_row(i)` gives point i's cells; `contact_label(i)`, if given, is point i's `contact`
@@ -40,6 +39,12 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label = {});
+// The frequency response of a model file (gearhb_frc): the common columns for the output
+// coordinate, then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n, then
+// q<i>_max_exact, q<i>_min_exact, q<i>_h1_exact, then contact_<j> for every contact j =
+// 1..P: its own state over the period (open, full, intermittent; `contact` is the summary
+// over all of them).
+Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output);
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),
@@ -49,8 +54,8 @@ Table bifurcation_table(const FrequencyCurve& c);
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);
 
-// The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model with the
-// mesh frequency first: f_mesh_hz, omega, x_max, x_min, x_rms_ac, x_h1, stable, contact.
+// The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: f_mesh_hz,
+// then the common columns of the mesh deflection.
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);
 // Contact-loss bands of labelled curves: label, band (1, 2, ...), f_lo_hz, f_hi_hz.
 Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>& reports);

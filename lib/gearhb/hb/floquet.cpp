@@ -102,6 +102,26 @@ class PiecewiseLinearFlow::Propagator {
   }
   bool spectral() const { return spectral_; }
 
+  const Eigen::MatrixXd& generator() const { return A_; }
+  double rate() const { return spectral_ ? lambda_.cwiseAbs().maxCoeff() : B_.cwiseAbs().colwise().sum().maxCoeff(); }
+  // The first `rows` rows of exp(A s_j) z for every s_j (columns)
+  Eigen::MatrixXd apply_all(const Eigen::VectorXd& s, const Eigen::VectorXd& z, int rows) const {
+    Eigen::MatrixXd out(rows, s.size());
+    if (!spectral_) {
+      for (Eigen::Index j = 0; j < s.size(); ++j) out.col(j) = exponential(s[j]).topRows(rows) * z;
+      return out;
+    }
+    const Eigen::VectorXcd w = Vinv_ * z.cast<std::complex<double>>();
+    Eigen::MatrixXcd M(w.size(), s.size());
+    for (Eigen::Index j = 0; j < s.size(); ++j) M.col(j) = exps(s[j]).cwiseProduct(w);
+    out = (V_.topRows(rows) * M).real();
+    return out;
+  }
+  // exp(A s) z
+  Eigen::VectorXd apply(double s, const Eigen::VectorXd& z) const {
+    if (spectral_) return (V_ * exps(s).cwiseProduct(Vinv_ * z.cast<std::complex<double>>())).real();
+    return exponential(s) * z;
+  }
   // exp(A s)
   Eigen::MatrixXd exponential(double s) const {
     if (spectral_) return (V_ * exps(s).asDiagonal() * Vinv_).real();
@@ -177,6 +197,27 @@ const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned 
   return *cache_.back().second;
 }
 
+Eigen::VectorXd PiecewiseLinearFlow::advance(unsigned state, double w, double s, const Eigen::VectorXd& z) const {
+  return propagator(state, w).apply(s, z);
+}
+
+Eigen::MatrixXd PiecewiseLinearFlow::advance_xv(unsigned state, double w, const Eigen::VectorXd& s,
+                                                const Eigen::VectorXd& z) const {
+  return propagator(state, w).apply_all(s, z, 2 * n_);
+}
+
+bool PiecewiseLinearFlow::spectral(unsigned state, double w) const { return propagator(state, w).spectral(); }
+
+Eigen::MatrixXd PiecewiseLinearFlow::exponential(unsigned state, double w, double s) const {
+  return propagator(state, w).exponential(s);
+}
+
+const Eigen::MatrixXd& PiecewiseLinearFlow::generator_matrix(unsigned state, double w) const {
+  return propagator(state, w).generator();
+}
+
+double PiecewiseLinearFlow::rate(unsigned state, double w) const { return propagator(state, w).rate(); }
+
 int PiecewiseLinearFlow::spectral_states() const {
   int k = 0;
   for (const auto& [state, p] : cache_) k += p->spectral();
@@ -191,7 +232,20 @@ int PiecewiseLinearFlow::pade_states() const {
 
 void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
                                      const std::vector<double>& nodes, Eigen::VectorXd& xT,
-                                     Eigen::VectorXd& vT, Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs) const {
+                                     Eigen::VectorXd& vT, Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs,
+                                     std::vector<FlowSegment>* segments) const {
+  march(x0, v0, w, nodes, xT, vT, &Phi, xs, segments);
+}
+
+void PiecewiseLinearFlow::follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+                                 const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                                 std::vector<FlowSegment>& segments) const {
+  march(x0, v0, w, nodes, xT, vT, nullptr, nullptr, &segments);
+}
+
+void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+                                const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
+                                Eigen::MatrixXd* Phi, Eigen::MatrixXd* xs, std::vector<FlowSegment>* segments) const {
   const int n = n_, m = 2 * n_;
   const double T = 2.0 * M_PI / w;
   const std::size_t nc = hb_.contacts().size();
@@ -203,18 +257,21 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
   unsigned S = 0;
   for (std::size_t i = 0; i < nc; ++i)
     if (rows_[i].dot(z) > 0.0) S |= 1u << i;
-  Phi = Eigen::MatrixXd::Identity(m, m);
+  if (Phi) *Phi = Eigen::MatrixXd::Identity(m, m);
   if (xs) xs->resize(n, Eigen::Index(nodes.size()));
+  if (segments) segments->clear();
   const double tol = 1e-14 * T;
   for (std::size_t k = 0; k < nodes.size(); ++k) {
     if (xs) xs->col(Eigen::Index(k)) = z.head(n);
     double h = (k + 1 < nodes.size() ? nodes[k + 1] : T) - nodes[k];
+    double t = nodes[k];
     int guard = 0;
     while (h > 0.0) {
       if (++guard > 1000) throw std::runtime_error("PiecewiseLinearFlow: too many contact switches in one step");
       const Propagator& P = propagator(S, w);
-      const Eigen::MatrixXd& E = P.step_exponential(h);
-      const Eigen::VectorXd zb = E * z;
+      // without the monodromy a diagonalised propagator steps by two products; a Pade one by its kept step
+      const Eigen::MatrixXd* E = Phi || !P.spectral() ? &P.step_exponential(h) : nullptr;
+      const Eigen::VectorXd zb = E ? Eigen::VectorXd(*E * z) : P.apply(h, z);
       // contacts whose state at the end of the step differs from S: the earliest switch
       double s_first = h;
       std::size_t i_first = nc;
@@ -226,13 +283,20 @@ void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::Vec
         if (s < s_first || i_first == nc) { s_first = s; i_first = i; }
       }
       if (i_first == nc) {
+        if (segments) segments->push_back({t, h, S, z});
         z = zb;
-        Phi = E.topLeftCorner(m, m) * Phi;
+        if (Phi) *Phi = E->topLeftCorner(m, m) * *Phi;
         break;
       }
-      const Eigen::MatrixXd Es = P.exponential(s_first);
-      z = Es * z;
-      Phi = Es.topLeftCorner(m, m) * Phi;
+      if (segments) segments->push_back({t, s_first, S, z});
+      t += s_first;
+      if (Phi) {
+        const Eigen::MatrixXd Es = P.exponential(s_first);
+        z = Es * z;
+        *Phi = Es.topLeftCorner(m, m) * *Phi;
+      } else {
+        z = P.apply(s_first, z);
+      }
       S ^= 1u << i_first;
       h -= s_first;
       if (h <= tol) break;
@@ -397,30 +461,34 @@ FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen:
   return r;
 }
 
+std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, int steps) {
+  const int H = hb.harmonics();
+  const int M = steps > 0 ? steps : std::max(64, 2 * (2 * H + 1));
+  const double T = 2.0 * M_PI / w;
+  std::vector<double> nodes;
+  for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
+  Aft aft(H);
+  for (std::size_t c = 0; c < hb.contacts().size(); ++c) {
+    const Eigen::VectorXd uc = hb.penetration(X, c);
+    const auto I = contact_intervals(uc, aft.to_time(uc));
+    for (std::size_t i = 0; i < I.size(); ++i) {
+      const double a = I[i].first, b = I[i].second;
+      if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / w);
+      const double a2 = I[(i + 1) % I.size()].first + (i + 1 == I.size() ? 2.0 * M_PI : 0.0);
+      if (a2 - b < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (b + a2), 2.0 * M_PI) / w);
+    }
+  }
+  std::sort(nodes.begin(), nodes.end());
+  return nodes;
+}
+
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, double x_scale,
                                   const FloquetOptions& opt) {
   if (has_stiffness_profile(hb)) return floquet_of_hb_shooting_gsl(hb, X, w, x_scale, opt);
   const int n = hb.dofs(), H = hb.harmonics();
   const double T = 2.0 * M_PI / w;
   const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
-  // Nodes: a uniform grid, plus the midpoint of every HB contact interval or gap
-  // shorter than two steps (so a short touch of the true orbit near it is seen).
-  std::vector<double> nodes;
-  for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
-  {
-    Aft aft(H);
-    for (std::size_t c = 0; c < hb.contacts().size(); ++c) {
-      const Eigen::VectorXd uc = hb.penetration(X, c);
-      const auto I = contact_intervals(uc, aft.to_time(uc));
-      for (std::size_t i = 0; i < I.size(); ++i) {
-        const double a = I[i].first, b = I[i].second;
-        if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / w);
-        const double a2 = I[(i + 1) % I.size()].first + (i + 1 == I.size() ? 2.0 * M_PI : 0.0);
-        if (a2 - b < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (b + a2), 2.0 * M_PI) / w);
-      }
-    }
-    std::sort(nodes.begin(), nodes.end());
-  }
+  const std::vector<double> nodes = shooting_nodes(hb, X, w, M);
   PiecewiseLinearFlow flow(hb);
   const ShootingMap P = [&](const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi, Eigen::MatrixXd& xs) {
     Eigen::VectorXd xT, vT;

@@ -72,6 +72,14 @@ struct FloquetResult {
 // on the balanced generator (core balance()): a gear pair's generator mixes
 // stiffness/mass ~1e9 with unit entries, and unbalanced the Pade exponential of one
 // step loses 1e-7 relative (balanced: 1e-15, against a long-double Taylor product).
+// One piece of an orbit on the exact flow: z(t0 + s) = exp(A_state s) z0 for 0 <= s <= h
+// (z the augmented state [x, v, 1, c_k, s_k] of floquet.hpp's header).
+struct FlowSegment {
+  double t0 = 0.0, h = 0.0;
+  unsigned state = 0;   // bit i set: contact i closed
+  Eigen::VectorXd z0;
+};
+
 class PiecewiseLinearFlow {
  public:
   explicit PiecewiseLinearFlow(const HarmonicBalance& hb, bool spectral = true);
@@ -79,9 +87,39 @@ class PiecewiseLinearFlow {
   // with the monodromy matrix. `nodes` are the times (in [0, T), ascending, 0
   // first) at which the flow is restarted and its contact state checked;
   // `xs` (if not null) receives x at every node (columns).
+  // `segments` (if not null) receives the orbit piece by piece (between nodes and
+  // contact switches, in time order).
   void period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                   const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
-                  Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr) const;
+                  Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs = nullptr,
+                  std::vector<FlowSegment>* segments = nullptr) const;
+  // The same orbit without the monodromy matrix (no matrix exponential where the propagator
+  // is diagonalised: each step is two matrix-vector products): `segments` as above.
+  void follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, const std::vector<double>& nodes,
+              Eigen::VectorXd& xT, Eigen::VectorXd& vT, std::vector<FlowSegment>& segments) const;
+  // The flow of contact state `state` over a time s: exp(A_state s) z, and exp(A_state s) itself.
+  Eigen::VectorXd advance(unsigned state, double omega, double s, const Eigen::VectorXd& z) const;
+  Eigen::MatrixXd exponential(unsigned state, double omega, double s) const;
+  // Whether state `state`'s propagator is diagonalised (advance costs two matrix-vector
+  // products) or uses Pade exponentials (advance costs an exponential).
+  bool spectral(unsigned state, double omega) const;
+  // The (x, v) rows of exp(A_state s_j) z for several s_j at once (columns): for a
+  // diagonalised propagator one product V_xv (e^{lambda s_j} o V^-1 z), else one exponential
+  // per s_j. (The other rows of z are the oscillators [1, cos k w t, sin k w t]: known.)
+  Eigen::MatrixXd advance_xv(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
+  // The harmonics k of the oscillator states (k = 1 first; floquet.hpp's header).
+  const std::vector<int>& oscillator_harmonics() const { return harmonics_; }
+  // The generator A_state (its rows n..2n-1 give the acceleration).
+  const Eigen::MatrixXd& generator_matrix(unsigned state, double omega) const;
+  // The fastest rate of state `state`: max |lambda| of A_state (spectral), else the
+  // 1-norm of the balanced generator; h x rate bounds the exponent of a step h.
+  double rate(unsigned state, double omega) const;
+  // Penetration u_i = g_i + n_i' x of contact i at augmented state z.
+  double penetration(std::size_t i, const Eigen::VectorXd& z) const { return rows_[i].dot(z); }
+  std::size_t contacts() const { return rows_.size(); }
+  double stiffness(std::size_t i) const { return hb_.contacts()[i].kc; }
+  int dofs() const { return n_; }
+  int dimension() const { return dim_; }
   // States of the last omega whose propagator is diagonalised / uses Pade exponentials.
   int spectral_states() const;
   int pade_states() const;
@@ -99,7 +137,17 @@ class PiecewiseLinearFlow {
   Eigen::MatrixXd generator(unsigned state, double omega) const;   // A_S
   Eigen::RowVectorXd contact_row(std::size_t i) const;            // u_i = r_i' z
   const Propagator& propagator(unsigned state, double omega) const;
+  // period_map and follow: Phi null skips the monodromy (and its matrix exponentials).
+  void march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, const std::vector<double>& nodes,
+             Eigen::VectorXd& xT, Eigen::VectorXd& vT, Eigen::MatrixXd* Phi, Eigen::MatrixXd* xs,
+             std::vector<FlowSegment>* segments) const;
 };
+
+// The nodes of the shooting on the exact flow of the HB point (X, omega): a uniform grid
+// of `steps` points per period (0: max(64, 2 (2H+1))), plus the midpoint of every HB
+// contact interval or gap shorter than two steps (so that a short touch of the true
+// orbit near it is seen), ascending, 0 first, times in [0, 2 pi / omega).
+std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, int steps = 0);
 
 // Multipliers of the HB point (X, omega) after correcting the orbit by shooting.
 // x_scale: characteristic displacement (HarmonicBalance::scaling).

@@ -68,6 +68,8 @@ PointFloquet point_floquet(const FloquetResult& r) {
   p.angle = r.angle;
   p.orbit_error = r.orbit_error;
   p.corrected = r.corrected;
+  p.x0 = r.x0;
+  p.v0 = r.v0;
   for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
     const auto m = r.multipliers[i];
     if (!(std::abs(m) > 1.0)) continue;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <ctime>
+#include <stdexcept>
 
+#include "gearhb/hb/exact_orbit.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/stability.hpp"
@@ -61,6 +63,34 @@ BranchOnGridReport branch_on_grid(const HarmonicBalance& hb, const Branch& b, co
     }
   }
   return out;
+}
+
+int correct_on_exact_flow(const HarmonicBalance& hb, const std::vector<double>& omegas, const Eigen::VectorXd& q,
+                          const Scaling& s, GridSolutions& grid, const FloquetOptions& floquet) {
+  int removed = 0;
+  for (std::size_t g = 0; g < grid.size() && g < omegas.size(); ++g) {
+    std::vector<GridSolution> kept;
+    for (auto& sol : grid[g]) {
+      const FloquetResult r = floquet_of_hb_orbit(hb, sol.X, omegas[g], s.x[0], floquet);
+      bool ok = r.corrected;
+      if (ok) {
+        try {
+          const ExactOrbit o(hb, sol.X, omegas[g], r.x0, r.v0);
+          const ExactMeasures m = o.measures(q);
+          ok = o.consistent();
+          sol.x_max = m.x_max;
+          sol.x_h1 = m.x_h1;
+          sol.stable = r.stable;
+        } catch (const std::runtime_error&) {
+          ok = false;
+        }
+      }
+      if (ok) kept.push_back(std::move(sol));
+      else ++removed;
+    }
+    grid[g] = std::move(kept);
+  }
+  return removed;
 }
 
 GridSolutions newton_stepped_sweep(const HarmonicBalance& hb, const std::vector<double>& omegas,

@@ -23,6 +23,9 @@
 //    1 when the method has none there). A solution farther than `found` is also
 //    counted as missed: a stepped sweep lands on one attractor and misses a
 //    coexisting one, so its error there is the distance between the two.
+//  - correct_on_exact_flow: harmonic balance's grid solutions replaced by their exact
+//    periodic orbits (the shooting correction on the exact piecewise-linear flow,
+//    floquet.hpp, then exact_orbit.hpp's measures): "HB at H + exact-flow correction".
 //  - cpu_seconds: CPU time of this process, to time a method.
 #include <vector>
 
@@ -65,6 +68,14 @@ GridSolutions newton_stepped_sweep(const HarmonicBalance& hb, const std::vector<
                                    const Eigen::VectorXd& q, const Scaling& s);
 // Merge the solutions of several sweeps on the same grid (duplicates dropped).
 GridSolutions merge_grid(const std::vector<GridSolutions>& parts, const Scaling& s);
+
+// Every solution of `grid` (at omegas[g]) corrected by shooting on the exact flow
+// (floquet_of_hb_orbit, x_scale = s.x[0]): x_max and x_h1 become those of the exact orbit
+// (ExactOrbit), `stable` its Floquet label. A solution whose correction does not converge or
+// whose orbit is inconsistent (exact_orbit.hpp) is removed: the method has no value there.
+// Returns the number removed (all of them for a time-varying contact stiffness: no exact flow).
+int correct_on_exact_flow(const HarmonicBalance& hb, const std::vector<double>& omegas, const Eigen::VectorXd& q,
+                          const Scaling& s, GridSolutions& grid, const FloquetOptions& floquet = {});
 
 struct SteppedSweepPoint {
   double omega = 0.0;
