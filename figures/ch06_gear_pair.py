@@ -148,7 +148,9 @@ def case_figure(data_dir, fig_dir, row, name):
                   "mesh)", fontsize=8)
     h1, _ = a1.get_legend_handles_labels()
     h2, _ = a2.get_legend_handles_labels()
-    fig_.legend(handles=h1 + h2 + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=3,
+    seen = set()
+    handles = [h for h in h1 + h2 if not (h.get_label() in seen or seen.add(h.get_label()))]   # one entry per label
+    fig_.legend(handles=handles + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=3,
                 loc="lower center", framealpha=0.9)
     fig_.tight_layout(rect=(0, 0.09, 1, 1))
     fig_.savefig(fig_dir / name)

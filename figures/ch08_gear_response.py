@@ -14,7 +14,7 @@ import json
 
 from matplotlib.lines import Line2D
 
-from style import (COMPARISON_COLOURS, LINEAR_CLOSED, THESIS_TORQUES, case_rows, contact_rug, flickering_stability,
+from style import (COMPARISON_COLOURS, LINEAR_CLOSED, THESIS_TORQUES, case_rows, contact_rug, untrusted_stability,
                    legend_styles, plot_branch, plt, read_csv, read_params, rug_room, save, torque_colour,
                    unresolved_handle)
 
@@ -72,7 +72,7 @@ def response_figure(data_dir, fig_dir, name, fig_no, labels, params, cases, what
         row = cases[lb]
         col = COLORS[row["torque"]]
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
-        bad = flickering_stability(d, x="f_mesh_hz")
+        bad = untrusted_stability(d, x="f_mesh_hz")
         flicker = flicker or bool(bad)
         plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad, values="hb",
                     label="T = %d N m (kc %.1f MN/m)" % (row["torque"], row["kc"] / 1e6))

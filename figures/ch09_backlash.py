@@ -13,7 +13,7 @@ The curves are harmonic balance (values="hb"), as in chapter 8: HB at H = 1 and 
 import json
 
 import ch08_gear_response as ch08
-from style import (COMPARISON_COLOURS, case_rows, flickering_stability, plot_branch, plt, read_csv, read_params, save,
+from style import (COMPARISON_COLOURS, case_rows, untrusted_stability, plot_branch, plt, read_csv, read_params, save,
                    unresolved_handle)
 
 UM = 1e6
@@ -142,7 +142,7 @@ def fig82(data_dir, fig_dir, params, cases):
             col, _ = READING_STYLE[r["reading"]]
             d = read_csv(data_dir / ("frc_%s.csv" % lb))
             name = "without backlash" if r["reading"] == "none" else r["reading"]
-            bad = flickering_stability(d, x="f_mesh_hz")
+            bad = untrusted_stability(d, x="f_mesh_hz")
             flicker = flicker or bool(bad)
             plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=col, scale=UM, unresolved=bad, values="hb",
                         label="%s: kc %.2f MN/m, peak %.2f um at %.0f Hz" % (name, r["kc"] / 1e6, r["peak_rms_um"], r["peak_f_hz"]))

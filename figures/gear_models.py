@@ -26,10 +26,10 @@ def load(data, example, i):
     d = data / example
     kn = {k: v["value"] for k, v in __import__("json").load(open(d / "key_numbers.json")).items()}
     t = read_csv(d / "timings.csv")
-    sec = {s: t["seconds"][k] for k, s in enumerate(t["step"])}
+    sweeps = [t["seconds"][k] for k, s in enumerate(t["step"]) if s.startswith("sweep ")]   # one per torque, in order
     modes = read_csv(d / "modes.csv")
     f = [modes["f_hz"][k] for k in range(len(modes["f_hz"])) if int(modes["torque_index"][k]) == i]
-    return read_csv(d / ("frc_%d.csv" % i)), kn, sec["sweep T%d" % i], f
+    return read_csv(d / ("frc_%d.csv" % i)), kn, sweeps[i - 1], f
 
 
 def draw(data, fig_dir):

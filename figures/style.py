@@ -144,16 +144,24 @@ def note_values(ax, exact):
             frozenset({"hb"}): "curves: harmonic balance",
             frozenset({"exact", "hb"}): "curves: exact orbit where available, else harmonic balance"}[frozenset(kinds)]
     if getattr(ax, "_gearhb_note", None) is None:
-        ax._gearhb_note = ax.text(0.005, 0.005, text, transform=ax.transAxes, ha="left", va="bottom", fontsize=6,
+        ax._gearhb_note = ax.text(0.005, 0.995, text, transform=ax.transAxes, ha="left", va="top", fontsize=6,
                                   color="0.35")
     else:
         ax._gearhb_note.set_text(text)
 
 
+def untrusted_stability(d, x="omega"):
+    """Indices whose stability label is not trusted: where the shooting correction of the HB
+    orbit did not converge (column `exact` = not_converged: the multipliers are those of an
+    uncorrected orbit) and where the label flips between folds (flickering_stability)."""
+    failed = [i for i, e in enumerate(d.get("exact", [])) if e == "not_converged"]
+    return sorted(set(failed) | set(flickering_stability(d, x=x)))
+
+
 def unresolved_handle(H):
     from matplotlib.lines import Line2D
-    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %d: the label flips\n"
-                  "between folds (the %d-harmonic orbit is too far from the exact one)" % (H, H))
+    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %d: the shooting correction\n"
+                  "fails or the label flips between folds (the %d-harmonic orbit is too far from the exact one)" % (H, H))
 
 
 # The thesis' torques in every chapter (N m) and their colours: blue, orange, red.
