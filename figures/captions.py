@@ -113,6 +113,10 @@ CHAPTERS = [
         ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "
          "driving roots below, driven roots above) with the contact node pairs of Figs. 48-49 and 52-55. Notice a "
          "pair sits at one height: contact near A meets the driven tooth's tip (2-22), near C the middle (6-18)."),
+        ("fig65_*.png", "Fig. 65", "The tooth axis in its three limit positions on the path of contact (drawn from "
+         "geometry.csv and tooth_axis_angles.csv): along the centre line, along O2E and along O2A. Notice the angle "
+         "between the axis' perpendicular and the line of action, alpha, alpha - beta, alpha + epsilon: the force on "
+         "the beam would be scaled by its cosine, a 7 % variation along the path."),
         ("fig73_*.png", "Fig. 73", "One base pitch laid along the path of contact from each end (geometry.csv): "
          "A-A' and E'-E have two pairs in contact, A'-E' one. Notice AE/p_b = 1.7547, the contact ratio, and that "
          "the single-pair zone around C is where chapter 9's backlash can be reached."),
@@ -165,6 +169,9 @@ CHAPTERS = [
          "parametric model it approximates (k(t) = F0/e(t)). Notice where they differ (chapter README)."),
     ]},
     {"program": "ch09_backlash", "title": "Chapter 9: backlash limits the STE at high torque", "figures": [
+        ("fig75_*.png", "Fig. 75", "The limit condition for the normal backlash (drawn from backlash_geometry.csv): "
+         "contact at E' while the adjacent pair is at A. Notice the tangential directions at A and E' turned by "
+         "epsilon and epsilon' from the one at C: mu(E') = alpha + epsilon + epsilon', so b_n = b cos(mu) is smallest there."),
         ("fig77_*.png", "Fig. 77", "STE over one mesh cycle with backlash (clip and adjacent-pair spring) and without, "
          "100/200/300 N m. Notice only 300 N m reaches the local normal backlash, near the ends of the single-pair zone."),
         ("fig77s_*.png", "supplement", "The local normal backlash b cos(mu) along the single-pair zone against the 300 N m "
@@ -190,16 +197,12 @@ NOT_COMPUTABLE = [
     ("Figs. 31-39", "sketches: tooth profile, line of action, pressure angle, gear-pair reference frames, forces and displacements"),
     ("Fig. 47", "sketch of the teeth as springs in series and in parallel (Fig. 46 is drawn from the model's nodes: "
      "fig46_four_beam_model.png)"),
-    ("Fig. 65", "the limit positions of the tooth axis: a geometric construction from beta and epsilon "
-     "(ch07 tooth_axis_angles.csv has the angles); not drawn yet"),
     ("Fig. 66", "sketch of the 1-DOF gear model (after Ozguven & Houser)"),
     ("Fig. 68", "mesh stiffness found by Parker, Vijayakar & Imajo (2000): their data are not available"),
     ("Figs. 71-72, 83-84", "comparisons with the FE and experimental curves of Parker, Vijayakar & Imajo (2000): not available; our curves are drawn alone"),
     ("Fig. 74", "sketch of the normal and nominal directions (Fig. 73 is drawn from geometry.csv: "
      "fig73_base_pitch.png)"),
     ("Fig. 76", "a contact condition taken from the thesis' reference [27] (another source)"),
-    ("Fig. 75", "the limit condition for the normal backlash: a construction from epsilon, epsilon' and mu "
-     "(ch09 backlash_geometry.csv has them); not drawn yet"),
     ("Parker's curves in Figs. 60 and 79", "not available: our STE and coefficients are drawn alone, nothing in their place"),
 ]
 

@@ -7,6 +7,7 @@ curves of Parker, Vijayakar & Imajo in Fig. 60 (their data are not available).
 Run with Debian's /usr/bin/python3 (matplotlib, Agg backend).
 """
 import csv
+import math
 import os
 import pathlib
 
@@ -14,6 +15,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import mesh_geometry  # noqa: E402
 from style import COMPARISON_COLOURS, read_params, torque_colour  # noqa: E402
 
 
@@ -339,6 +341,7 @@ def draw(data_dir, fig_dir):
     save(fig, fig_dir, "ch07_extra_convergence.png", made)
     four_beam_model(D, index, fig_dir, made)
     base_pitch_figure(D("geometry.csv"), fig_dir, made)
+    tooth_axis(D, fig_dir, made)
     return made
 
 
@@ -388,6 +391,15 @@ def four_beam_model(D, index, fig_dir, made):
     ax.legend(fontsize=7, loc="upper right", title="contact node pairs (dashed)", title_fontsize=7)
     ax.grid(alpha=0.2)
     save(fig, fig_dir, "fig46_four_beam_model.png", made)
+
+
+def tooth_axis(D, fig_dir, made):
+    """Fig. 65 (figures/mesh_geometry.py) from geometry.csv and tooth_axis_angles.csv."""
+    g, t = D("geometry.csv"), D("tooth_axis_angles.csv")
+    geometry = dict(zip(g["quantity"], g["value"]))
+    angles = {v: {k: t[k][i] for k in t if k != "variant"} for i, v in enumerate(t["variant"])}
+    alpha = math.degrees(math.atan(geometry["T1C"] / geometry["base_radius"]))
+    made.append(mesh_geometry.tooth_axis_figure(angles, geometry, alpha, os.path.join(fig_dir, "fig65_tooth_axis.png")))
 
 
 def base_pitch_figure(g, fig_dir, made):

@@ -13,6 +13,7 @@ The curves are harmonic balance (values="hb"), as in chapter 8: HB at H = 1 and 
 import json
 
 import ch08_gear_response as ch08
+import mesh_geometry  # noqa: E402
 from style import (COMPARISON_COLOURS, case_rows, untrusted_stability, plot_branch, plt, read_csv, read_params, save,
                    unresolved_handle)
 
@@ -183,4 +184,8 @@ def draw(data_dir, fig_dir):
                                              what="DTE response with backlash (%s)" % params["backlash_model"]))
     if any(r["reading"] == "none" for r in cases.values()):
         made.append(fig82(data_dir, fig_dir, params, cases))
+    if (data_dir / "backlash_geometry.csv").exists():   # Fig. 75 (figures/mesh_geometry.py)
+        g = read_csv(data_dir / "backlash_geometry.csv")
+        rows = {v: {k: g[k][i] for k in g if k != "values"} for i, v in enumerate(g["values"])}
+        made.append(mesh_geometry.backlash_limit_figure(rows, fig_dir / "fig75_backlash_limit.png"))
     return made
