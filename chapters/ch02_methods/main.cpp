@@ -40,8 +40,8 @@
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/hb/exact_orbit.hpp"
 #include "gearhb/hb/floquet.hpp"
-#include "gearhb/hb/method_comparison.hpp"
-#include "gearhb/hb/parametric.hpp"
+#include "gearhb/experiments/method_comparison.hpp"
+#include "gearhb/experiments/parametric.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/stability.hpp"
 

@@ -1,11 +1,11 @@
-// lib/gearhb/hb/parametric.hpp and method_comparison.hpp against closed forms.
+// lib/gearhb/experiments/parametric.hpp and method_comparison.hpp against closed forms.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
 #include "gearhb/hb/floquet.hpp"
-#include "gearhb/hb/method_comparison.hpp"
-#include "gearhb/hb/parametric.hpp"
+#include "gearhb/experiments/method_comparison.hpp"
+#include "gearhb/experiments/parametric.hpp"
 #include "gearhb/hb/stability.hpp"
 #include "test_models.hpp"
 

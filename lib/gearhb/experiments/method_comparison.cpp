@@ -1,4 +1,4 @@
-#include "gearhb/hb/method_comparison.hpp"
+#include "gearhb/experiments/method_comparison.hpp"
 
 #include <algorithm>
 #include <cmath>

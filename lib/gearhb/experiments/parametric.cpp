@@ -1,4 +1,4 @@
-#include "gearhb/hb/parametric.hpp"
+#include "gearhb/experiments/parametric.hpp"
 
 #include <cmath>
 #include <complex>
