@@ -368,16 +368,14 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
 
 namespace {
 
-// x of the HB orbit at the phases 2 pi j / M (columns).
+// x of the HB orbit at the phases 2 pi j / M (columns): each DOF's Fourier series
+// (HarmonicBalance::project, core trig_series).
 Eigen::MatrixXd hb_orbit_samples(const HarmonicBalance& hb, const Eigen::VectorXd& X, int M) {
-  const int n = hb.dofs(), H = hb.harmonics();
+  const int n = hb.dofs();
   Eigen::MatrixXd xhb(n, M);
-  for (int j = 0; j < M; ++j) {
-    const double th = 2.0 * M_PI * j / M;
-    Eigen::VectorXd x = X.segment(0, n);
-    for (int k = 1; k <= H; ++k)
-      x += X.segment(hb.index(2 * k - 1, 0), n) * std::cos(k * th) + X.segment(hb.index(2 * k, 0), n) * std::sin(k * th);
-    xhb.col(j) = x;
+  for (int i = 0; i < n; ++i) {
+    const Eigen::VectorXd c = hb.project(X, Eigen::VectorXd::Unit(n, i));
+    for (int j = 0; j < M; ++j) xhb(i, j) = trig_series(c, 2.0 * M_PI * j / M);
   }
   return xhb;
 }
