@@ -60,12 +60,12 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
                 xb, yb = nearest(d, bif[i]["omega"][k], y)
                 ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color=col, ms=7)
+        if iso is not None and y == "dynamic_factor":   # before the rugs, so that the axis holds it whole
+            for i, T in enumerate(torques):
+                ax.plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)
         ax.set_ylabel(label)
         ax.set_ylim(bottom=0)
         contact_rugs(ax, torques, frc)
-    if iso is not None:
-        for i, T in enumerate(torques):
-            axes[1].plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
     axes[1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
     handles = [Line2D([], [], color=torque_colour(T, torques), label=torque_label(T)) for T in torques]
@@ -76,8 +76,9 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     handles += [Patch(color=c, label=k.replace("+", " + ").replace("_", " ") + " (bands below 0, one row per torque)")
                 for k, c in CONTACT_COLOUR.items() if any(k in d["contact"] for d in frc)]
     if iso is not None:
-        handles.append(Line2D([], [], color="k", ls=":", label="ISO 6336-1 method B K_v, grade %d"
-                              % params.get("dynamics", {}).get("iso_quality_grade", 5)))
+        handles.append(Line2D([], [], color="k", ls=":", label="ISO 6336-1 method B K_v: ISO 1328-1 grade %d,\n"
+                              "C_a = %.1f um, K_A = 1 (one curve per torque)"
+                              % (kn["iso_quality_grade"], kn["iso_tip_relief_um"])))
     axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
     dyn = params.get("dynamics", {})
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (

@@ -11,7 +11,8 @@
 // load_sharing.hpp), the mesh stiffness k = F / STE, the load share of each pair,
 // the loaded contact ratio, the STE spectrum per mesh order, the Harris map (STE
 // peak-to-peak against torque with and without the file's relief), and ISO 6336-1
-// method B's c'_th, c' and c_gamma_alpha for the same pair. model.method chooses the
+// method B's c'_th, c' and c_gamma_alpha for the same pair (and, with a speed range, its
+// dynamic factor K_v over the range, beside the computed one). model.method chooses the
 // tooth model of the pair stiffness: the beams (default) or the potential-energy
 // method (potential_energy.hpp through mesh_phases' PairStiffnessFn seam).
 //
@@ -29,7 +30,7 @@
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
 // written), geometry, transmission_error, iso6336, harris_map, dynamics (response,
 // response_tables, response_key_numbers, spectrum_and_history,
-// time_integration_check per torque), draw.
+// time_integration_check per torque), iso_dynamic_factor, draw.
 //
 // Sample runs:
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
@@ -40,6 +41,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <stdexcept>
 #include <string>
 
 #include "gearhb/app/case_table.hpp"
@@ -125,6 +127,7 @@ class GearPairFromFile {
   void iso6336(Run& run) const;
   void harris_map(Run& run) const;
   void dynamics(Run& run) const;
+  void iso_dynamic_factor(Run& run) const;
   void draw(Run& run) const;
 
   // The dynamics, per torque (README "The pair over its speed range").
@@ -153,7 +156,7 @@ void GearPairFromFile::run(Run& run) {
   transmission_error(run);
   iso6336(run);
   harris_map(run);
-  if (file_.dynamics.present) dynamics(run);
+  if (file_.dynamics.present) dynamics(run), iso_dynamic_factor(run);
   if (plot_) draw(run);
 }
 
@@ -334,6 +337,52 @@ void GearPairFromFile::dynamics(Run& run) const {
   if (history.rows() > 0) run.write("time_history.csv", history);
 }
 
+// Step 7: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
+// dotted curves of response.png), with ISO 1328-1 grade dynamics.iso_quality_grade.
+void GearPairFromFile::iso_dynamic_factor(Run& run) const {
+  constexpr int kSpeeds = 801;
+  const GearDynamicsInput& d = file_.dynamics;
+  KeyNumbers& key = run.key_numbers();
+  std::vector<std::string> columns{"speed_rpm"};
+  std::vector<Iso6336KvInput> inputs;
+  for (std::size_t i = 0; i < file_.torques.size(); ++i) {
+    PairIsoKv k;
+    try {
+      k = pair_iso6336_kv(file_.pair, file_.dedendum_coefficient, file_.torques[i], file_.gear[0].inertia,
+                          file_.gear[1].inertia, d.iso_quality_grade);
+    } catch (const std::domain_error& e) {
+      run.say(std::string("no ISO 6336-1 K_v: ") + e.what());
+      return;
+    }
+    const std::string n = std::to_string(i + 1);
+    if (i == 0) {
+      key.add("iso_quality_grade", d.iso_quality_grade, "-");
+      key.add("iso_f_pb_um", k.f_pb, "um");
+      key.add("iso_f_f_alpha_um", k.f_f_alpha, "um");
+      key.add("iso_tip_relief_um", k.input.C_a, "um");
+    }
+    const Iso6336Kv at0 = iso6336_dynamic_factor(k.input, 0.0);
+    key.add("iso_kv_resonance_speed_rpm_" + n, at0.n_E1_rpm, "rpm");
+    columns.push_back("K_v_" + n);
+    inputs.push_back(k.input);
+  }
+  Table t(columns);
+  std::vector<double> peak(inputs.size(), 0.0);
+  const double z1 = file_.pair.gear1.teeth, from = 60.0 * d.f_mesh_from / z1, to = 60.0 * d.f_mesh_to / z1;
+  for (int j = 0; j < kSpeeds; ++j) {
+    const double n1 = from + (to - from) * j / (kSpeeds - 1);
+    std::vector<double> row{n1};
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+      const double kv = iso6336_dynamic_factor(inputs[i], n1).K_v;
+      row.push_back(kv);
+      peak[i] = std::max(peak[i], kv);
+    }
+    t.add_row(std::vector<Table::Cell>(row.begin(), row.end()));
+  }
+  run.write("iso_kv.csv", t);
+  for (std::size_t i = 0; i < peak.size(); ++i) key.add("iso_kv_peak_" + std::to_string(i + 1), peak[i], "-");
+}
+
 // dte_spectrum.csv: the DTE per mesh order at the stable points nearest 0.5 f_n, the DTE RMS
 // peak and 1.5 f_n (f_n the closed-contact mesh frequency); time_history.csv: two mesh
 // periods of the DTE and the flank forces at the stable point of largest K_v with a back
@@ -478,7 +527,7 @@ void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const Har
   key.add("time_integration_rel_diff_max_" + n, worst, "-");
 }
 
-// Step 7: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
+// Step 8: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
 void GearPairFromFile::draw(Run& run) const {
   // The script reads the key numbers too: the frame writes them once the steps are
   // done, so write them into the staging folder now (the frame rewrites the same).
@@ -492,9 +541,12 @@ void GearPairFromFile::draw(Run& run) const {
 int main(int argc, char** argv) {
   Study study("gearhb_gear",
               "gearhb_gear: a spur gear pair from its drawing - geometry, loaded static transmission error,\n"
-              "mesh stiffness k = F / STE over the mesh cycle, load shares, Harris map, ISO 6336-1 stiffness.\n"
+              "mesh stiffness k = F / STE over the mesh cycle, load shares, Harris map, ISO 6336-1 stiffness;\n"
+              "with a speed range the response over speed (both flanks, Floquet, K_v) and ISO 6336-1's K_v.\n"
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
-              "key_numbers.json, params.json (the resolved file), timings.csv, *.png.\n\n" +
+              "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
+              "also frc_<i>.csv, bifurcations_<i>.csv, check_time_integration_<i>.csv, modes.csv,\n"
+              "dte_spectrum.csv, time_history.csv, iso_kv.csv.\n\n" +
                   gear_file_help());
   GearPairFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -20,6 +20,19 @@ ISO 6336-1:2006 clause 9 (Method B), spur (beta = 0, z_n = z), written out here 
   c'_th = 1/q', C_M = 0.8, C_R = 1, C_B = [1 + 0.5 (1.2 - hf*)] [1 - 0.02 (20 - alpha)],
   line-load factor (F_t / b / 100)^0.25 below 100 N/mm (F_t = T1 / r1 at the largest torque),
   c' = c'_th C_M C_R C_B, c_gamma_alpha = c' (0.75 eps_alpha + 0.25) [N/(mm um)].
+ISO 6336-1:2006 clause 6.3 (method B) dynamic factor, for a file with a speed range, per torque
+(K_A = 1, F_t = T1 / r1, line load w = F_t / b, c' and c_gamma_alpha at that line load):
+  ISO 1328-1:1995 grade Q: m, d the geometric means of the range bounds that hold the gear,
+  f_pt = [0.3 (m + 0.4 sqrt d) + 4] 2^((Q-5)/2), f_falpha = [2.5 sqrt m + 0.17 sqrt d + 0.5] 2^((Q-5)/2),
+  rounded (> 10 um: 1 um, 5..10: 0.5 um, < 5: 0.1 um); f_pb = f_pt cos(alpha), the larger gear's;
+  case-hardened running-in y = min(0.075 f, 3 um); C_a = the larger tip relief, or without one
+  C_ay = (1500/97 - 18.45)^2 / 18 + 1.5 um;
+  m_red = I1 I2 / (I1 rb2^2 + I2 rb1^2) / b [kg/mm], n_E1 = 30000 / (pi z1) sqrt(c_gamma_alpha / m_red),
+  N = n1 / n_E1, N_S = 0.5 + 0.35 sqrt(w / 100) (w < 100 N/mm) or 0.85,
+  B_p = c' f_pb,eff / w, B_f = c' f_f,eff / w, B_k = |1 - c' C_a / w|, eps_gamma = eps_alpha (spur):
+  K_v = N (C_v1 B_p + C_v2 B_f + C_v3 B_k) + 1 (N <= N_S), C_v1 B_p + C_v2 B_f + C_v4 B_k + 1
+  (N <= 1.15), C_v5 B_p + C_v6 B_f + C_v7 (N >= 1.5), linear between; the peak over the 801
+  evenly spaced speeds of iso_kv.csv.
 """
 import json
 import math
@@ -87,6 +100,73 @@ def closed_forms(f):
     out["iso6336_c_prime_th"] = 1 / q
     out["iso6336_c_prime"] = (1 / q) * 0.8 * 1.0 * C_B * load
     out["iso6336_c_gamma_alpha"] = out["iso6336_c_prime"] * (0.75 * eps + 0.25)
+    if "speed" in f:
+        out.update(iso_kv(f, z, x, r, rb, eps, hf, C_B, b_mm))
+    return out
+
+
+def iso1328(Q, m_mm, d_mm):
+    def mean(v, bounds):
+        for lo, hi in zip(bounds, bounds[1:]):
+            if v <= hi:
+                return math.sqrt(lo * hi)
+        raise ValueError("outside ISO 1328-1")
+
+    def rnd(v):
+        step = 1.0 if v > 10 else 0.5 if v >= 5 else 0.1
+        return math.floor(v / step + 0.5) * step
+
+    m = mean(m_mm, [0.5, 2, 3.5, 6, 10, 16, 25, 40, 70])
+    d = mean(d_mm, [5, 20, 50, 125, 280, 560, 1000, 1600, 2500, 4000, 6000, 8000, 10000])
+    q = 2.0 ** ((Q - 5) / 2)
+    return rnd((0.3 * (m + 0.4 * math.sqrt(d)) + 4) * q), rnd((2.5 * math.sqrt(m) + 0.17 * math.sqrt(d) + 0.5) * q)
+
+
+def iso_kv(f, z, x, r, rb, eps, hf, C_B, b_mm):
+    g = f["gears"]
+    Q = f.get("dynamics", {}).get("iso_quality_grade", 5)
+    tol = [iso1328(Q, f["module"] * 1e3, 2 * r[i] * 1e3) for i in range(2)]
+    f_pb = max(t[0] for t in tol) * math.cos(math.radians(f["pressure_angle_deg"]))
+    f_fa = max(t[1] for t in tol)
+    pb_eff, fa_eff = f_pb - min(0.075 * f_pb, 3.0), f_fa - min(0.075 * f_fa, 3.0)
+    relief = max(gi.get("tip_relief", {}).get("amount", 0.0) for gi in g) * 1e6
+    C_a = relief if relief > 0 else (1500 / 97 - 18.45) ** 2 / 18 + 1.5
+    I1, I2 = g[0]["inertia"], g[1]["inertia"]
+    m_red = I1 * I2 / (I1 * rb[1] ** 2 + I2 * rb[0] ** 2) / b_mm
+    q = (0.04723 + 0.15551 / z[0] + 0.25791 / z[1] - 0.00635 * x[0] - 0.11654 * x[0] / z[0] - 0.00193 * x[1]
+         - 0.24188 * x[1] / z[1] + 0.00529 * x[0] ** 2 + 0.00182 * x[1] ** 2)
+    eg = eps
+    if eg <= 2:
+        C1, C2, C3, C4, C5, C6 = 0.32, 0.34, 0.23, 0.90, 0.47, 0.47
+    else:
+        C1, C2, C3 = 0.32, 0.57 / (eg - 0.3), 0.096 / (eg - 1.56)
+        C4, C5, C6 = (0.57 - 0.05 * eg) / (eg - 1.44), 0.47, 0.12 / (eg - 1.74)
+    C7 = 0.75 if eg <= 1.5 else (0.125 * math.sin(math.pi * (eg - 2)) + 0.875 if eg <= 2.5 else 1.0)
+    sp = f["speed"]
+    to_rpm = 60.0 / z[0] if sp.get("unit", "mesh_hz") == "mesh_hz" else 1.0
+    n_from, n_to = sp["from"] * to_rpm, sp["to"] * to_rpm
+    out = {"iso_f_pb_um": f_pb, "iso_f_f_alpha_um": f_fa, "iso_tip_relief_um": C_a}
+    for i, T in enumerate(f["torques"]):
+        w = T / r[0] / b_mm
+        cp = (1 / q) * 0.8 * C_B * ((w / 100) ** 0.25 if w < 100 else 1.0)
+        cga = cp * (0.75 * eps + 0.25)
+        nE = 30000 / (math.pi * z[0]) * math.sqrt(cga / m_red)
+        NS = 0.5 + 0.35 * math.sqrt(w / 100) if w < 100 else 0.85
+        Bp, Bf, Bk = cp * pb_eff / w, cp * fa_eff / w, abs(1 - cp * C_a / w)
+        res, sup = C1 * Bp + C2 * Bf + C4 * Bk + 1, C5 * Bp + C6 * Bf + C7
+
+        def kv(n1):
+            N = n1 / nE
+            if N <= NS:
+                return N * (C1 * Bp + C2 * Bf + C3 * Bk) + 1
+            if N <= 1.15:
+                return res
+            if N < 1.5:
+                return sup + (res - sup) * (1.5 - N) / 0.35
+            return sup
+
+        out["iso_kv_resonance_speed_rpm_%d" % (i + 1)] = nE
+        out["iso_kv_peak_%d" % (i + 1)] = max(kv(n_from + (n_to - n_from) * j / 800) for j in range(801))
     return out
 
 

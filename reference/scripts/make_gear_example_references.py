@@ -3,7 +3,8 @@
 
 Run:  /usr/bin/python3 reference/scripts/make_gear_example_references.py
 Every "value" comes from a script that does not call gearhb:
-  * geometry and ISO 6336-1 method B: gear_pair_closed_forms.py (closed forms);
+  * geometry and ISO 6336-1 method B (stiffness, and K_v for the files with a speed range):
+    gear_pair_closed_forms.py (closed forms);
   * the loaded STE numbers: gear_pair_beam_ste.py (the beam model written again in
     numpy / scipy), gear_pair_pe_ste.py for the potential-energy files, and for ch. 7's 8 node positions also the independent stepped-beam
     integrals of ch07_closed_form_ste.py (reference/ch07_ste.json);
@@ -30,7 +31,7 @@ def run(script):
 GEO = run("gear_pair_closed_forms.py")
 STE = run("gear_pair_beam_ste.py")
 PE = run("gear_pair_pe_ste.py")
-UNITS = {"N_per_m": "N/m", "_um": "um", "_deg": "deg", "_m": "m"}
+UNITS = {"N_per_m": "N/m", "_rpm": "rpm", "_um": "um", "_deg": "deg", "_m": "m"}
 CLOSED = "reference/scripts/gear_pair_closed_forms.py (ISO 21771 involute closed forms, no gearhb)"
 ISO = "reference/scripts/gear_pair_closed_forms.py: ISO 6336-1:2006 clause 9 method B written out (C9 x2^2), spur"
 BEAM = ("reference/scripts/gear_pair_beam_ste.py: the same beam model written again in numpy/scipy "
@@ -63,6 +64,21 @@ def geometry_numbers(name, keys):
 def iso_numbers(name):
     return {k: entry(k, GEO[name][k], ISO, {"rel": 1e-12}, "the same formula evaluated twice; round-off only")
             for k in ("iso6336_c_prime_th", "iso6336_c_prime", "iso6336_c_gamma_alpha")}
+
+
+ISO_KV = ("reference/scripts/gear_pair_closed_forms.py: ISO 6336-1:2006 6.3 method B K_v written out (ISO 1328-1:1995 "
+          "tolerances, case-hardened running-in, m_red from the file's inertias), no gearhb")
+
+
+def iso_kv_numbers(name, torques):
+    """ISO 6336-1 method B's K_v beside the computed one (issue 21 §1 figures): the same formulas
+    written twice; ISO/TR 6336-30 Ex. 01's published K_v = 1.003 checks the library's in
+    tests/unit/test_iso6336.cpp."""
+    keys = ["iso_f_pb_um", "iso_f_f_alpha_um", "iso_tip_relief_um"]
+    for i in torques:
+        keys += ["iso_kv_resonance_speed_rpm_%d" % i, "iso_kv_peak_%d" % i]
+    return {k: entry(k, GEO[name][k], ISO_KV, {"rel": 1e-12}, "the same formula evaluated twice; round-off only")
+            for k in keys}
 
 
 def loaded_ratio_entry(k, fine, source, name):
@@ -164,6 +180,7 @@ n["mesh_stiffness_mean_N_per_m_3"]["thesis_value"] = 473.2e6
 n["mesh_stiffness_mean_N_per_m_3"]["note"] = "chapter 8: 470.97 MN/m continuous, 473.29 on 8 positions (thesis 473.2)"
 n["iso6336_c_gamma_alpha"]["note"] = "times b = 20 mm: 440.2 MN/m (GEARS.md §3; reference/ch07_ste.json)"
 n.update(dynamics_numbers([1, 2, 3]))
+n.update(iso_kv_numbers("thesis_pair", [1, 2, 3]))
 write("thesis_pair", "thesis_pair.json", ["--set", "plot=0"], n)
 
 # --- thesis pair on ch. 7's 8 node positions ------------------------------------------------
@@ -191,14 +208,17 @@ write("thesis_pair_relief", "thesis_pair_relief.json", ["--set", "plot=0"], n)
 # --- the same relieved pair at light load: drive-flank loss and back-flank impacts ----------------
 n = ste_numbers("thesis_pair_light_load", [1, 2])
 n.update(dynamics_numbers([1, 2], back_impact_torques=[1]))
+n.update(iso_kv_numbers("thesis_pair_light_load", [1, 2]))
 write("thesis_pair_light_load", "thesis_pair_light_load.json", ["--set", "plot=0"], n)
 
 # --- both on bearings (six DOFs): where the torsional model is not enough ---------------------------
 n = ste_numbers("thesis_pair_six_dof", [1, 2, 3])
 n.update(dynamics_numbers([1, 2, 3], back_impact_torques=[1, 2, 3]))
+n.update(iso_kv_numbers("thesis_pair_six_dof", [1, 2, 3]))
 write("thesis_pair_six_dof", "thesis_pair_six_dof.json", ["--set", "plot=0"], n)
 n = ste_numbers("thesis_pair_light_load_six_dof", [1, 2])
 n.update(dynamics_numbers([1, 2], back_impact_torques=[1]))
+n.update(iso_kv_numbers("thesis_pair_light_load_six_dof", [1, 2]))
 write("thesis_pair_light_load_six_dof", "thesis_pair_light_load_six_dof.json", ["--set", "plot=0"], n)
 
 # --- FZG type C -------------------------------------------------------------------------------

@@ -124,3 +124,117 @@ TEST(Iso6336, SpurSignatureUnchanged) {
   EXPECT_EQ(a.c_gamma_alpha_total, b.c_gamma_alpha_total);
   EXPECT_NEAR(b.c_gamma_alpha_total / 1e6, 440.18705820289915, 1e-8);   // hand computed there
 }
+
+// --- Dynamic factor K_v, ISO 6336-1:2006 clause 6.3 method B -----------------------------
+
+TEST(Iso6336, Iso1328TolerancesGrade5) {
+  // ISO 1328-1:1995 for Example 01 (m_n 8 mm: range 6..10, m = sqrt(60) = 7.745967):
+  // pinion d = 141.34 mm (range 125..280, d = sqrt(35000) = 187.0829):
+  //   f_pt = 0.3 (7.745967 + 0.4 * 13.67783) + 4 = 7.965124 -> 8.0 (5..10 um: to 0.5 um),
+  //   f_falpha = 2.5 * 2.783158 + 0.17 * 13.67783 + 0.5 = 9.783127 -> 10.0;
+  // wheel d = 856.34 mm (range 560..1000, d = sqrt(560000) = 748.3315):
+  //   f_pt = 0.3 (7.745967 + 0.4 * 27.35565) + 4 = 9.606468 -> 9.5,
+  //   f_falpha = 6.957895 + 4.650460 + 0.5 = 12.108355 -> 12 (above 10 um: to 1 um).
+  const Iso1328Tolerances p = iso1328_tolerances(5, 8.0, 141.34), w = iso1328_tolerances(5, 8.0, 856.34);
+  EXPECT_NEAR(p.m_class, 7.745967, 1e-6);
+  EXPECT_NEAR(p.d_class, 187.0829, 1e-4);
+  EXPECT_EQ(p.f_pt, 8.0);
+  EXPECT_EQ(p.f_f_alpha, 10.0);
+  EXPECT_EQ(w.f_pt, 9.5);
+  EXPECT_EQ(w.f_f_alpha, 12.0);
+  // Grade 7 doubles grade 5 before rounding: 2 * 7.965124 = 15.93 -> 16.
+  EXPECT_EQ(iso1328_tolerances(7, 8.0, 141.34).f_pt, 16.0);
+  // A value on a bound belongs to the lower range: d = 125 mm is in 50..125 (sqrt(6250) = 79.057).
+  EXPECT_NEAR(iso1328_tolerances(5, 8.0, 125.0).d_class, std::sqrt(50.0 * 125.0), 1e-12);
+  EXPECT_NEAR(iso1328_tolerances(5, 0.5, 5.0).m_class, 1.0, 1e-12);   // sqrt(0.5 * 2)
+  EXPECT_THROW(iso1328_tolerances(5, 0.4, 100.0), std::domain_error);
+  EXPECT_THROW(iso1328_tolerances(5, 8.0, 12000.0), std::domain_error);
+  EXPECT_THROW(iso1328_tolerances(13, 8.0, 100.0), std::domain_error);
+  // The rounding steps: 4.96 -> 5.0 (0.1 um), 7.3 -> 7.5 (0.5 um), 10.4 -> 10 (1 um).
+  EXPECT_NEAR(iso1328_round(4.96), 5.0, 1e-12);
+  EXPECT_NEAR(iso1328_round(7.3), 7.5, 1e-12);
+  EXPECT_NEAR(iso1328_round(10.4), 10.0, 1e-12);
+}
+
+TEST(Iso6336, RunningInAllowances) {
+  // ISO 6336-1:2006 7.3.3, case hardened: 0.075 f, at most 3 um.
+  EXPECT_NEAR(iso6336_running_in_case_hardened(8.0), 0.6, 1e-15);
+  EXPECT_EQ(iso6336_running_in_case_hardened(50.0), 3.0);
+  // Table 8: C_ay = (1/18)(1500/97 - 18.45)^2 + 1.5 = (1/18)(-2.986082)^2 + 1.5 = 1.995371 um.
+  EXPECT_NEAR(iso6336_running_in_relief(1500.0), 1.995371, 1e-6);
+}
+
+namespace {
+
+// Example 01's K_v inputs (ISO/TR 6336-30:2017; the tip relief C_a = 70 um and K_A = 1 of
+// the example): d_f1 = d1 - 2 m_n (h_fP* - x1) = 121.26011 mm, d_a1 = 159.66 mm, so
+// d_m1 = 140.46006 mm; steel rho = 7.83e-6 kg/mm^3; eps_beta = b sin(beta) / (pi m_n) =
+// 1.083369; the larger deviations of the pair (the wheel's, grade 5, above):
+// f_pb = 9.5 cos(alpha_t) = 8.886301 um, f_falpha = 12 um, less 7.5 % running-in.
+Iso6336KvInput example01_kv(double C_a) {
+  const IsoTransverseGeometry g =
+      iso_transverse_geometry(17, 103, 8e-3, 20 * deg, 15.8 * deg, 0.145, 0.0, 1.0, 0.5, 0.15966, 0.87235);
+  const Iso6336Stiffness s = iso6336_mesh_stiffness(example01(g.eps_alpha));
+  const double d_f1 = g.d1 * 1e3 - 2.0 * 8.0 * (1.4 - 0.145), d_m1 = 0.5 * (159.66 + d_f1);
+  Iso6336KvInput in;
+  in.z1 = 17;
+  in.eps_gamma = g.eps_alpha + 100.0 * std::sin(15.8 * deg) / (M_PI * 8.0);
+  in.c_prime = s.c_single;
+  in.c_gamma_alpha = s.c_gamma_alpha;
+  in.m_red = iso6336_reduced_mass_solid(d_m1, g.db1 * 1e3, 103.0 / 17.0, 7.83e-6, 7.83e-6);
+  in.line_load = 2000.0 * 9000.0 / (g.d1 * 1e3) / 100.0;
+  const double f_pb = 9.5 * std::cos(g.alpha_t);
+  in.f_pb_eff = f_pb - iso6336_running_in_case_hardened(f_pb);
+  in.f_f_alpha_eff = 12.0 - iso6336_running_in_case_hardened(12.0);
+  in.C_a = C_a;
+  return in;
+}
+
+}  // namespace
+
+TEST(Iso6336, DynamicFactorIsoTr6336_30Example01) {
+  const Iso6336Kv k = iso6336_dynamic_factor(example01_kv(70.0), 360.0);
+  EXPECT_EQ(k.range, Iso6336KvRange::subcritical);
+  EXPECT_NEAR(k.K_v, 1.003, 0.0005);   // ISO/TR 6336-30:2017 Ex. 01 prints K_v = 1.003
+  // Hand computed from the inputs above (numbers in reference/scripts/gear_pair_closed_forms.py's
+  // way): m_red = 0.0666664 kg/mm, n_E1 = 9091.83 rpm, N = 0.039596, B_k = 0.320050, K_v = 1.0031893.
+  EXPECT_NEAR(k.n_E1_rpm, 9091.83, 0.01);
+  EXPECT_NEAR(k.B_k, 0.320050, 1e-6);
+  EXPECT_NEAR(k.K_v, 1.0031893, 1e-7);
+  // The check can fail: without the example's relief (running-in only, C_a = C_ay = 2 um) the
+  // same pair gives K_v = 1.0055, which prints as 1.006.
+  EXPECT_GT(iso6336_dynamic_factor(example01_kv(2.0), 360.0).K_v, 1.0035);
+}
+
+TEST(Iso6336, DynamicFactorRangesJoin) {
+  // K_v is continuous at N = 1.15 and N = 1.5 (the intermediate range interpolates) and jumps at
+  // N_S (ISO's subcritical line ends below the main-resonance plateau); above 1.5 it is flat.
+  const Iso6336KvInput in = example01_kv(70.0);
+  const double nE = iso6336_dynamic_factor(in, 0.0).n_E1_rpm;
+  auto K = [&](double N) { return iso6336_dynamic_factor(in, N * nE).K_v; };
+  EXPECT_NEAR(K(1.15), K(1.15 + 1e-12), 1e-9);
+  EXPECT_NEAR(K(1.5 - 1e-12), K(1.5), 1e-9);
+  EXPECT_EQ(K(1.6), K(3.0));
+  EXPECT_EQ(iso6336_dynamic_factor(in, 1.0 * nE).range, Iso6336KvRange::main_resonance);
+  EXPECT_EQ(iso6336_dynamic_factor(in, 1.3 * nE).range, Iso6336KvRange::intermediate);
+  // eps_gamma = 2.632459 > 2: C_v4 = (0.57 - 0.05 * 2.632459) / (2.632459 - 1.44) = 0.3676244
+  // (hand computed); above 2.5 C_v7 = 1; at eps_gamma = 2.2, C_v7 = 0.125 sin(0.2 pi) + 0.875 =
+  // 0.9484732, at 1.4 it is 0.75 and at 1.8 C_v2 = 0.34 (Table 8's constants).
+  const Iso6336Kv k = iso6336_dynamic_factor(in, 1.0 * nE);
+  EXPECT_NEAR(k.C_v[3], 0.3676244, 1e-6);
+  EXPECT_EQ(k.C_v[6], 1.0);
+  Iso6336KvInput other = in;
+  other.eps_gamma = 2.2;
+  EXPECT_NEAR(iso6336_dynamic_factor(other, 0.0).C_v[6], 0.9484732, 1e-7);
+  other.eps_gamma = 1.4;
+  EXPECT_EQ(iso6336_dynamic_factor(other, 0.0).C_v[6], 0.75);
+  other.eps_gamma = 1.8;
+  EXPECT_EQ(iso6336_dynamic_factor(other, 0.0).C_v[1], 0.34);
+  EXPECT_NEAR(k.N_S, 0.85, 0.0);   // line load 1273.5 N/mm >= 100
+  Iso6336KvInput light = in;
+  light.line_load = 64.0;   // N_S = 0.5 + 0.35 * 0.8 = 0.78
+  EXPECT_NEAR(iso6336_dynamic_factor(light, 0.0).N_S, 0.78, 1e-15);
+  Iso6336KvInput bad = in;
+  bad.eps_gamma = 1.0;
+  EXPECT_THROW(iso6336_dynamic_factor(bad, 100.0), std::invalid_argument);
+}

@@ -92,4 +92,95 @@ IsoTransverseGeometry iso_transverse_geometry(int z1, int z2, double m_n, double
                                               double x1, double x2, double haP_over_mn, double a_w,
                                               double d_a1 = 0, double d_a2 = 0);
 
+// ---------------------------------------------------------------------------------------
+// Dynamic factor K_v by ISO 6336-1:2006 clause 6.3 (method B), the one-mass estimate of the
+// dynamic tooth load a gear engineer sets beside a computed response (README "The pair over
+// its speed range"). Units are ISO's: mm, um, N/mm, kg/mm, rpm.
+//
+// Resonance speed of gear 1 and resonance ratio (eqs. (6), (9)):
+//     n_E1 = 30000 / (pi z1) sqrt(c_gamma_alpha / m_red)   [rpm],     N = n1 / n_E1,
+//   m_red the reduced mass of the pair per unit face width on the line of action [kg/mm]:
+//   m_red = m1* m2* / (m1* + m2*), m* = J* / r_b^2 (eq. (30) for solid discs:
+//   m_red = (pi/8) (d_m1/d_b1)^2 d_m1^2 / (1/rho1 + 1/(rho2 u^2)), d_m = (d_a + d_f)/2).
+// Lower limit of the main resonance range (eqs. (11), (12)), line load F_t K_A / b:
+//     N_S = 0.5 + 0.35 sqrt(F_t K_A / (100 b))   for F_t K_A / b < 100 N/mm,   N_S = 0.85 otherwise.
+// Deviation and relief terms (eqs. (15)-(17)):
+//     B_p = c' f_pb,eff / (K_A F_t / b),   B_f = c' f_f,eff / (K_A F_t / b),
+//     B_k = |1 - c' C_a / (K_A F_t / b)|,
+//   f_pb,eff = f_pb - y_p, f_f,eff = f_falpha - y_f (running-in allowances), C_a the tip relief.
+// K_v per range (eqs. (13), (14), (20)-(22)):
+//     subcritical   N <= N_S:          K_v = N (C_v1 B_p + C_v2 B_f + C_v3 B_k) + 1,
+//     main resonance N_S < N <= 1.15:  K_v = C_v1 B_p + C_v2 B_f + C_v4 B_k + 1,
+//     supercritical N >= 1.5:          K_v = C_v5 B_p + C_v6 B_f + C_v7,
+//     intermediate  1.15 < N < 1.5:    linear in N between K_v(1.15) and K_v(1.5).
+// The coefficients (Table 8), eps_gamma the total contact ratio:
+//     1 < eps_gamma <= 2: C_v1..C_v6 = 0.32, 0.34, 0.23, 0.90, 0.47, 0.47;
+//     eps_gamma > 2: C_v1 = 0.32, C_v2 = 0.57/(eps_gamma - 0.3), C_v3 = 0.096/(eps_gamma - 1.56),
+//                    C_v4 = (0.57 - 0.05 eps_gamma)/(eps_gamma - 1.44), C_v5 = 0.47,
+//                    C_v6 = 0.12/(eps_gamma - 1.74);
+//     C_v7 = 0.75 (eps_gamma <= 1.5), 0.125 sin(pi (eps_gamma - 2)) + 0.875 (1.5..2.5), 1 (> 2.5).
+//
+// Check: ISO/TR 6336-30:2017 Example 01 prints K_v = 1.003 (tests/unit/test_iso6336.cpp, with
+// the deviations of ISO 1328-1:1995 grade 5, C_a = 70 um, K_A = 1).
+enum class Iso6336KvRange : int { subcritical = 0, main_resonance = 1, intermediate = 2, supercritical = 3 };
+const char* to_string(Iso6336KvRange r);
+
+struct Iso6336KvInput {
+  int z1 = 0;                  // teeth of gear 1 (whose speed n1 is given)
+  double eps_gamma = 0;        // total contact ratio eps_alpha + eps_beta (spur: eps_alpha)
+  double c_prime = 0;          // single stiffness c' [N/(mm um)]
+  double c_gamma_alpha = 0;    // mesh stiffness c_gamma_alpha [N/(mm um)]
+  double m_red = 0;            // reduced mass per unit face width [kg/mm]
+  double line_load = 0;        // K_A F_t / b [N/mm]
+  double f_pb_eff = 0;         // effective base pitch deviation after running-in [um]
+  double f_f_alpha_eff = 0;    // effective profile form deviation after running-in [um]
+  double C_a = 0;              // tip relief [um] (none: the running-in amount C_ay)
+};
+
+struct Iso6336Kv {
+  double n_E1_rpm = 0;         // resonance speed of gear 1 [rpm]
+  double N = 0;                // resonance ratio n1 / n_E1
+  double N_S = 0;              // lower limit of the main resonance range
+  double B_p = 0, B_f = 0, B_k = 0;
+  double C_v[7] = {};          // C_v1..C_v7
+  Iso6336KvRange range = Iso6336KvRange::subcritical;
+  double K_v = 1;
+};
+
+// K_v at speed n1 [rpm] of gear 1; std::invalid_argument for non-positive stiffness, mass,
+// line load or eps_gamma <= 1, or negative deviations / relief.
+Iso6336Kv iso6336_dynamic_factor(const Iso6336KvInput& in, double n1_rpm);
+
+// m_red of two solid discs, ISO 6336-1:2006 eq. (30) as printed (above): d_m1, d_b1 [mm],
+// u = z2 / z1, densities [kg/mm^3]; [kg/mm].
+double iso6336_reduced_mass_solid(double d_m1_mm, double d_b1_mm, double u, double rho1, double rho2);
+
+// Running-in allowance of case-hardened or nitrided steel (ISO 6336-1:2006 clause 7.3.3,
+// used for y_p = y_alpha with f = f_pb and for y_f with f = f_falpha):
+//     y = 0.075 f,  at most 3 um.
+double iso6336_running_in_case_hardened(double f_um);
+
+// Tip relief produced by running-in when none is made (ISO 6336-1:2006 Table 8):
+//     C_ay = (1/18) (sigma_Hlim / 97 - 18.45)^2 + 1.5   [um],  sigma_Hlim [N/mm^2].
+double iso6336_running_in_relief(double sigma_Hlim);
+
+// Single pitch and profile form tolerances of ISO 1328-1:1995 (its Annex B for f_falpha),
+// accuracy grade Q = 1..12 [um]:
+//     f_pt   = [0.3 (m + 0.4 sqrt(d)) + 4] 2^((Q-5)/2),
+//     f_falpha = [2.5 sqrt(m) + 0.17 sqrt(d) + 0.5] 2^((Q-5)/2),
+// with m and d the geometric means of the bounds of the standard's range that holds the
+// gear (m: 0.5, 2, 3.5, 6, 10, 16, 25, 40, 70 mm; d: 5, 20, 50, 125, 280, 560, 1000, 1600,
+// 2500, 4000, 6000, 8000, 10000 mm; a value on a bound belongs to the lower range), and
+// rounded as the standard rounds: above 10 um to whole um, 5..10 um to 0.5 um, below 5 um
+// to 0.1 um. The base pitch deviation is the single pitch one projected on the base circle,
+// f_pb = f_pt cos(alpha_t) (ISO/TR 10064-1).
+struct Iso1328Tolerances {
+  double m_class = 0, d_class = 0;   // the geometric means used [mm]
+  double f_pt = 0;                   // [um]
+  double f_f_alpha = 0;              // [um]
+};
+// std::domain_error when m_n or d lie outside the ranges above or Q outside 1..12.
+Iso1328Tolerances iso1328_tolerances(int grade, double m_n_mm, double d_mm);
+double iso1328_round(double value_um);
+
 }  // namespace gearhb

@@ -25,6 +25,34 @@ double back_flank_phase(const PairSteModel& m) {
   return 2.0 * M_PI * (phi - std::floor(phi));
 }
 
+PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade) {
+  const GearGeometry* g[2] = {&m.gear1, &m.gear2};
+  PairIsoKv k;
+  const double alpha = m.gear1.pressure_angle_deg * M_PI / 180.0;
+  for (int i = 0; i < 2; ++i) {
+    k.tolerances[i] = iso1328_tolerances(grade, g[i]->module * 1e3, 2.0 * g[i]->pitch_radius() * 1e3);
+    k.f_pb = std::max(k.f_pb, k.tolerances[i].f_pt * std::cos(alpha));
+    k.f_f_alpha = std::max(k.f_f_alpha, k.tolerances[i].f_f_alpha);
+  }
+  const double eps_alpha = m.path().contact_ratio, b_mm = m.contact_length() * 1e3;
+  Iso6336KvInput& in = k.input;
+  in.z1 = m.gear1.teeth;
+  in.eps_gamma = eps_alpha;
+  in.line_load = torque / m.gear1.pitch_radius() / b_mm;
+  const Iso6336Stiffness s = iso6336_mesh_stiffness(m.gear1.teeth, m.gear2.teeth, m.gear1.profile_shift,
+                                                    m.gear2.profile_shift, m.gear1.pressure_angle_deg, hfP_over_m,
+                                                    eps_alpha, m.contact_length(), in.line_load);
+  in.c_prime = s.c_single;
+  in.c_gamma_alpha = s.c_gamma_alpha;
+  in.m_red = equivalent_mass(I1, I2, m.gear1.base_radius(), m.gear2.base_radius()) / b_mm;
+  in.f_pb_eff = k.f_pb - iso6336_running_in_case_hardened(k.f_pb);
+  in.f_f_alpha_eff = k.f_f_alpha - iso6336_running_in_case_hardened(k.f_f_alpha);
+  in.C_a = 1e6 * std::max(m.relief1.amount, m.relief2.amount);
+  k.relief_from_running_in = !(in.C_a > 0.0);
+  if (k.relief_from_running_in) in.C_a = iso6336_running_in_relief(1500.0);
+  return k;
+}
+
 DteGear gear_pair_mesh(const PairSteModel& m, const std::vector<PairStePoint>& ste, double torque, double I1,
                        double I2, double zeta, double backlash, int harmonics) {
   std::vector<double> e, g, elastic;

@@ -51,6 +51,7 @@
 
 #include "gearhb/gears/dte_model.hpp"
 #include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/iso6336.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
@@ -69,6 +70,24 @@ double back_flank_phase(const PairSteModel& m);
 // `harmonics`; the back flank at normal backlash `backlash` (infinite: none) and phase psi.
 DteGear gear_pair_mesh(const PairSteModel& m, const std::vector<PairStePoint>& ste, double torque, double I1,
                        double I2, double zeta, double backlash, int harmonics = 20);
+
+// ISO 6336-1 method B's dynamic factor for the same spur pair (iso6336.hpp), the estimate set
+// beside the computed K_v. At gear 1's torque T: F_t = T / r1 (reference radius), K_A = 1 (the
+// file's torques are the loads), line load F_t / b, c' and c_gamma_alpha of iso6336_mesh_stiffness
+// at that line load (hfP_over_m the basic-rack dedendum), eps_gamma = eps_alpha; the reduced mass
+// from the file's inertias on the base radii, m_red = I1 I2 / (I1 rb2^2 + I2 rb1^2) / b (ISO's
+// m* = J* / rb^2, so no disc shape is assumed); f_pb = f_pt cos(alpha) and f_falpha of
+// ISO 1328-1:1995 grade `grade`, the larger of the two gears, less the running-in allowance of
+// case-hardened steel; C_a the larger tip relief of the two gears, or without relief the
+// running-in amount C_ay of case-hardened steel (sigma_Hlim = 1500 N/mm^2: 1.995 um).
+// std::domain_error when the module or a reference diameter is outside ISO 1328-1's ranges.
+struct PairIsoKv {
+  Iso6336KvInput input;
+  Iso1328Tolerances tolerances[2];   // per gear
+  double f_pb = 0, f_f_alpha = 0;    // the pair's (larger) deviations before running-in [um]
+  bool relief_from_running_in = false;   // C_a = C_ay (the gears carry no tip relief)
+};
+PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade);
 
 // The model of the mesh: torsional only, or the six DOFs with bearings.
 enum class MeshDofs { one_dof, bearings };
