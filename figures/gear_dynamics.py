@@ -77,8 +77,9 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
                 for k, c in CONTACT_COLOUR.items() if any(k in d["contact"] for d in frc)]
     if iso is not None:
         handles.append(Line2D([], [], color="k", ls=":", label="ISO 6336-1 method B K_v: ISO 1328-1 grade %d,\n"
-                              "C_a = %.1f um, K_A = 1 (one curve per torque)"
-                              % (kn["iso_quality_grade"], kn["iso_tip_relief_um"])))
+                              "C_a = %.1f um%s, K_A = 1 (one curve per torque)"
+                              % (kn["iso_quality_grade"], kn["iso_tip_relief_um"],
+                                 " (running-in: no relief)" if kn["iso_tip_relief_from_running_in"] else "")))
     axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
     dyn = params.get("dynamics", {})
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (

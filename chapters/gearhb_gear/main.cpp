@@ -360,6 +360,7 @@ void GearPairFromFile::iso_dynamic_factor(Run& run) const {
       key.add("iso_f_pb_um", k.f_pb, "um");
       key.add("iso_f_f_alpha_um", k.f_f_alpha, "um");
       key.add("iso_tip_relief_um", k.input.C_a, "um");
+      key.add("iso_tip_relief_from_running_in", k.relief_from_running_in ? 1 : 0, "-");
     }
     const Iso6336Kv at0 = iso6336_dynamic_factor(k.input, 0.0);
     key.add("iso_kv_resonance_speed_rpm_" + n, at0.n_E1_rpm, "rpm");
