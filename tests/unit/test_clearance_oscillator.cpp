@@ -20,6 +20,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/first_point.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
@@ -179,7 +180,7 @@ TEST(ClearanceOscillator, HbFloquetAndTimeIntegrationAgree) {
       EXPECT_NEAR(ss.x.minCoeff(), k.x_min, 1e-2 * std::fabs(k.x_min)) << at;
       // every multiplier (a complex pair's modulus alone is fixed by det = exp(-2 zeta T);
       // the pair itself is not): each Floquet one has a GSL one within 1e-6
-      const Eigen::VectorXcd mu = ti.monodromy(ss.x0, ss.v0, k.omega, to).eigenvalues();
+      const Eigen::VectorXcd mu = general_eigenvalues(ti.monodromy(ss.x0, ss.v0, k.omega, to), "GSL monodromy");
       for (Eigen::Index i = 0; i < fl.multipliers.size(); ++i)
         EXPECT_LT((mu.array() - fl.multipliers[i]).abs().minCoeff(), 1e-6) << at << ": multiplier " << fl.multipliers[i];
     }
@@ -245,7 +246,7 @@ TEST(ClearanceOscillator, FoldAndPeriodDoublingEachListedOnce) {
       const VectorXd X = hb_at(hb, c, w, 1.0);
       ASSERT_GT(X.size(), 0);
       const FloquetResult fl = floquet_of_hb_orbit(hb, X, w, c.scaling.x[0]);
-      const Eigen::VectorXcd mu = ti.monodromy(fl.x0, fl.v0, w, to).eigenvalues();
+      const Eigen::VectorXcd mu = general_eigenvalues(ti.monodromy(fl.x0, fl.v0, w, to), "GSL monodromy");
       double most_negative = 0.0;
       for (Eigen::Index i = 0; i < mu.size(); ++i)
         if (std::fabs(mu[i].imag()) < 1e-9) most_negative = std::min(most_negative, mu[i].real());

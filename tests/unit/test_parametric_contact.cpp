@@ -19,6 +19,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/core/newton.hpp"
 #include "gearhb/gears/dte_model.hpp"
 #include "gearhb/hb/floquet.hpp"
@@ -168,7 +169,7 @@ TEST(ParametricContact, FloquetWithContactLossAgreesWithGsl) {
     TimeIntegrationOptions to;
     to.x_scale = fc.scaling.x[0];
     const Eigen::VectorXcd mu =
-        Eigen::EigenSolver<MatrixXd>(TimeIntegrator(hb).monodromy(x0, v0, P.omega, to), false).eigenvalues();
+        general_eigenvalues(TimeIntegrator(hb).monodromy(x0, v0, P.omega, to), "GSL monodromy");
     // the HB orbit (H = 25) and the integrated one differ by the truncation error, which
     // moves the contact switches: ~1e-4 in |mu| near the folds, round-off in full contact
     EXPECT_NEAR(mu.cwiseAbs().maxCoeff(), fc.floquet[i].modulus, 1e-3) << "omega = " << P.omega;
@@ -252,8 +253,7 @@ TEST(ParametricContact, NarrowMathieuTongueBetweenTwoStablePointsIsFound) {
       out.resize(2, 2);
       out << 0, 1, -(1 + e * std::cos(w * t)), -c;
     };
-    return Eigen::EigenSolver<MatrixXd>(monodromy_linear_periodic(A, 2, 2 * M_PI / w), false)
-        .eigenvalues().cwiseAbs().maxCoeff();
+    return general_eigenvalues(monodromy_linear_periodic(A, 2, 2 * M_PI / w), "Hill").cwiseAbs().maxCoeff();
   };
   ASSERT_GT(hill_modulus(2.0 - 2.5e-4), 1.0) << "the band must exist";
   auto edge = [&](double inside, double outside) {

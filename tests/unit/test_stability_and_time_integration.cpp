@@ -13,6 +13,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/stability.hpp"
@@ -90,7 +91,7 @@ TEST(Hill, AgreesWithMonodromyFromTimeIntegration) {
     const HillResult h = hill_stability(J, hb.system().M, hb.system().C, p.omega, 10);
     VectorXd x0, v0;
     hb_initial_state(hb, p.X, p.omega, x0, v0);
-    const Eigen::VectorXcd mu = Eigen::EigenSolver<MatrixXd>(ti.monodromy(x0, v0, p.omega, to)).eigenvalues();
+    const Eigen::VectorXcd mu = general_eigenvalues(ti.monodromy(x0, v0, p.omega, to), "GSL monodromy");
     const double max_mu = mu.cwiseAbs().maxCoeff();
     EXPECT_EQ(h.stable, max_mu < 1.0) << "omega = " << p.omega << ", max |mu| = " << max_mu;
     // Floquet exponent <-> multiplier: |mu| = exp(Re(lambda) T)

@@ -38,6 +38,19 @@ Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K) {
   return m;
 }
 
+bool eigen_decomposition(const Eigen::MatrixXd& A, EigenDecomposition& out) {
+  Eigen::EigenSolver<Eigen::MatrixXd> es(A);
+  if (es.info() != Eigen::Success) return false;
+  out.values = es.eigenvalues();
+  out.vectors = es.eigenvectors();
+  out.inverse_vectors = Eigen::PartialPivLU<Eigen::MatrixXcd>(out.vectors).inverse();
+  return true;
+}
+
+double smallest_singular_value(const Eigen::MatrixXcd& A) {
+  return Eigen::JacobiSVD<Eigen::MatrixXcd>(A).singularValues().minCoeff();
+}
+
 Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string& where) {
   if (!A.allFinite()) throw std::runtime_error(where + ": eigensolver given a non-finite matrix");
   Eigen::EigenSolver<Eigen::MatrixXd> real_schur(A, /*computeEigenvectors=*/false);

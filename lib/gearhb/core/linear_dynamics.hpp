@@ -41,6 +41,21 @@ Modes modal_analysis(const Eigen::MatrixXd& M, const Eigen::MatrixXd& K);
 // Throws std::runtime_error("<where>: eigensolver failed ...") if both fail.
 Eigen::VectorXcd general_eigenvalues(const Eigen::MatrixXd& A, const std::string& where);
 
+// Eigen-decomposition A = V diag(lambda) V^-1 of a general real matrix (EigenSolver with
+// eigenvectors; V^-1 by partial-pivoting LU). False, and `out` untouched, when the real
+// Schur iteration does not converge.
+struct EigenDecomposition {
+  Eigen::VectorXcd values;          // lambda
+  Eigen::MatrixXcd vectors;         // V (columns)
+  Eigen::MatrixXcd inverse_vectors; // V^-1
+};
+bool eigen_decomposition(const Eigen::MatrixXd& A, EigenDecomposition& out);
+
+// The smallest singular value of a complex matrix (Jacobi SVD): sigma_min(A - mu I) is
+// how far mu is from being an eigenvalue of A (the check of an eigensolver's output).
+// One compiled instance, so that tests do not each instantiate the SVD.
+double smallest_singular_value(const Eigen::MatrixXcd& A);
+
 // Balancing (Parlett & Reinsch 1969, as LAPACK's dgebal without permutation):
 // replaces A by D^-1 A D, D = diag(d) with powers of 2, so that the off-diagonal
 // norms of every row and its column are within a factor 2; returns d. Eigenvalues

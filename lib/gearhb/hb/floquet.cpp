@@ -47,7 +47,7 @@ Eigen::RowVectorXd PiecewiseLinearFlow::contact_row(std::size_t i) const {
   return r;
 }
 
-Eigen::MatrixXd PiecewiseLinearFlow::generator(unsigned S, double w) const {
+Eigen::MatrixXd PiecewiseLinearFlow::generator(unsigned S, double omega) const {
   const int n = n_, o = 2 * n_;
   const auto& sys = hb_.system();
   const auto& f = hb_.excitation();
@@ -70,10 +70,10 @@ Eigen::MatrixXd PiecewiseLinearFlow::generator(unsigned S, double w) const {
   A.block(n, n, n, n) = -Minv_ * sys.C;
   A.block(n, o, n, dim_ - o) = Minv_ * B;
   for (std::size_t j = 0; j < harmonics_.size(); ++j) {
-    const double kw = harmonics_[j] * w;
+    const double kw = harmonics_[j] * omega;
     const int ic = o + 1 + 2 * int(j), is = ic + 1;
-    A(ic, is) = -kw;   // (cos k w t)' = -k w sin
-    A(is, ic) = kw;    // (sin k w t)' =  k w cos
+    A(ic, is) = -kw;   // (cos k omega t)' = -k omega sin
+    A(is, ic) = kw;    // (sin k omega t)' =  k omega cos
   }
   return A;
 }
@@ -88,14 +88,14 @@ class PiecewiseLinearFlow::Propagator {
     d_ = balance(B_);
     if (!try_spectral || !A_.allFinite()) return;
     // B = W diag(lambda) W^-1: V = D W, V^-1 = W^-1 D^-1
-    Eigen::EigenSolver<Eigen::MatrixXd> es(B_);
-    if (es.info() != Eigen::Success) return;
-    const Eigen::MatrixXcd W = es.eigenvectors();
-    const Eigen::MatrixXcd Winv = Eigen::PartialPivLU<Eigen::MatrixXcd>(W).inverse();
+    EigenDecomposition es;
+    if (!eigen_decomposition(B_, es)) return;
+    const Eigen::MatrixXcd& W = es.vectors;
+    const Eigen::MatrixXcd& Winv = es.inverse_vectors;
     const double cond = W.cwiseAbs().colwise().sum().maxCoeff() * Winv.cwiseAbs().colwise().sum().maxCoeff();
     if (!(cond <= 1e4) || !Winv.allFinite()) return;
     spectral_ = true;
-    lambda_ = es.eigenvalues();
+    lambda_ = es.values;
     V_ = d_.cast<std::complex<double>>().asDiagonal() * W;
     Vinv_ = Winv * d_.cwiseInverse().cast<std::complex<double>>().asDiagonal();
     for (const auto& r : rows) rV_.push_back(r.cast<std::complex<double>>() * V_);
@@ -111,9 +111,9 @@ class PiecewiseLinearFlow::Propagator {
       for (Eigen::Index j = 0; j < s.size(); ++j) out.col(j) = exponential(s[j]).topRows(rows) * z;
       return out;
     }
-    const Eigen::VectorXcd w = Vinv_ * z.cast<std::complex<double>>();
-    Eigen::MatrixXcd M(w.size(), s.size());
-    for (Eigen::Index j = 0; j < s.size(); ++j) M.col(j) = exps(s[j]).cwiseProduct(w);
+    const Eigen::VectorXcd omega = Vinv_ * z.cast<std::complex<double>>();
+    Eigen::MatrixXcd M(omega.size(), s.size());
+    for (Eigen::Index j = 0; j < s.size(); ++j) M.col(j) = exps(s[j]).cwiseProduct(omega);
     out = (V_.topRows(rows) * M).real();
     return out;
   }
@@ -185,38 +185,38 @@ class PiecewiseLinearFlow::Propagator {
   Eigen::VectorXcd exps(double s) const { return (lambda_ * s).array().exp().matrix(); }
 };
 
-const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned S, double w) const {
-  if (!(w == cache_omega_)) {
+const PiecewiseLinearFlow::Propagator& PiecewiseLinearFlow::propagator(unsigned S, double omega) const {
+  if (!(omega == cache_omega_)) {
     cache_.clear();
-    cache_omega_ = w;
+    cache_omega_ = omega;
   }
   // the states met in one period: a handful of the 2^P possible ones
   for (const auto& [state, p] : cache_)
     if (state == S) return *p;
-  cache_.emplace_back(S, std::make_shared<Propagator>(generator(S, w), rows_, spectral_));
+  cache_.emplace_back(S, std::make_shared<Propagator>(generator(S, omega), rows_, spectral_));
   return *cache_.back().second;
 }
 
-Eigen::VectorXd PiecewiseLinearFlow::advance(unsigned state, double w, double s, const Eigen::VectorXd& z) const {
-  return propagator(state, w).apply(s, z);
+Eigen::VectorXd PiecewiseLinearFlow::advance(unsigned state, double omega, double s, const Eigen::VectorXd& z) const {
+  return propagator(state, omega).apply(s, z);
 }
 
-Eigen::MatrixXd PiecewiseLinearFlow::advance_xv(unsigned state, double w, const Eigen::VectorXd& s,
+Eigen::MatrixXd PiecewiseLinearFlow::advance_xv(unsigned state, double omega, const Eigen::VectorXd& s,
                                                 const Eigen::VectorXd& z) const {
-  return propagator(state, w).apply_all(s, z, 2 * n_);
+  return propagator(state, omega).apply_all(s, z, 2 * n_);
 }
 
-bool PiecewiseLinearFlow::spectral(unsigned state, double w) const { return propagator(state, w).spectral(); }
+bool PiecewiseLinearFlow::spectral(unsigned state, double omega) const { return propagator(state, omega).spectral(); }
 
-Eigen::MatrixXd PiecewiseLinearFlow::exponential(unsigned state, double w, double s) const {
-  return propagator(state, w).exponential(s);
+Eigen::MatrixXd PiecewiseLinearFlow::exponential(unsigned state, double omega, double s) const {
+  return propagator(state, omega).exponential(s);
 }
 
-const Eigen::MatrixXd& PiecewiseLinearFlow::generator_matrix(unsigned state, double w) const {
-  return propagator(state, w).generator();
+const Eigen::MatrixXd& PiecewiseLinearFlow::generator_matrix(unsigned state, double omega) const {
+  return propagator(state, omega).generator();
 }
 
-double PiecewiseLinearFlow::rate(unsigned state, double w) const { return propagator(state, w).rate(); }
+double PiecewiseLinearFlow::rate(unsigned state, double omega) const { return propagator(state, omega).rate(); }
 
 int PiecewiseLinearFlow::spectral_states() const {
   int k = 0;
@@ -230,24 +230,24 @@ int PiecewiseLinearFlow::pade_states() const {
   return k;
 }
 
-void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+void PiecewiseLinearFlow::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                                      const std::vector<double>& nodes, Eigen::VectorXd& xT,
                                      Eigen::VectorXd& vT, Eigen::MatrixXd& Phi, Eigen::MatrixXd* xs,
                                      std::vector<FlowSegment>* segments) const {
-  march(x0, v0, w, nodes, xT, vT, &Phi, xs, segments);
+  march(x0, v0, omega, nodes, xT, vT, &Phi, xs, segments);
 }
 
-void PiecewiseLinearFlow::follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+void PiecewiseLinearFlow::follow(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                                  const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                                  std::vector<FlowSegment>& segments) const {
-  march(x0, v0, w, nodes, xT, vT, nullptr, nullptr, &segments);
+  march(x0, v0, omega, nodes, xT, vT, nullptr, nullptr, &segments);
 }
 
-void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double w,
+void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                                 const std::vector<double>& nodes, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                                 Eigen::MatrixXd* Phi, Eigen::MatrixXd* xs, std::vector<FlowSegment>* segments) const {
   const int n = n_, m = 2 * n_;
-  const double T = 2.0 * M_PI / w;
+  const double T = 2.0 * M_PI / omega;
   const std::size_t nc = hb_.contacts().size();
   Eigen::VectorXd z = Eigen::VectorXd::Zero(dim_);
   z.head(n) = x0;
@@ -268,7 +268,7 @@ void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd
     int guard = 0;
     while (h > 0.0) {
       if (++guard > 1000) throw std::runtime_error("PiecewiseLinearFlow: too many contact switches in one step");
-      const Propagator& P = propagator(S, w);
+      const Propagator& P = propagator(S, omega);
       // without the monodromy a diagonalised propagator steps by two products; a Pade one by its kept step
       const Eigen::MatrixXd* E = Phi || !P.spectral() ? &P.step_exponential(h) : nullptr;
       const Eigen::VectorXd zb = E ? Eigen::VectorXd(*E * z) : P.apply(h, z);
@@ -309,8 +309,8 @@ void PiecewiseLinearFlow::march(const Eigen::VectorXd& x0, const Eigen::VectorXd
 namespace {
 
 // Multipliers of a monodromy matrix into r (largest modulus first) and the stable flag.
-void set_multipliers(FloquetResult& r, const Eigen::MatrixXd& Phi, const FloquetOptions& opt, double w) {
-  const Eigen::VectorXcd mu = general_eigenvalues(Phi, "Floquet multipliers at omega = " + std::to_string(w));
+void set_multipliers(FloquetResult& r, const Eigen::MatrixXd& Phi, const FloquetOptions& opt, double omega) {
+  const Eigen::VectorXcd mu = general_eigenvalues(Phi, "Floquet multipliers at omega = " + std::to_string(omega));
   std::vector<std::complex<double>> v(mu.data(), mu.data() + mu.size());
   std::sort(v.begin(), v.end(), [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   r.multipliers = Eigen::Map<Eigen::VectorXcd>(v.data(), Eigen::Index(v.size()));
@@ -328,10 +328,10 @@ bool has_stiffness_profile(const HarmonicBalance& hb) {
 
 }  // namespace
 
-FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                         const FloquetOptions& opt) {
   const int n = hb.dofs(), H = hb.harmonics();
-  const double T = 2.0 * M_PI / w;
+  const double T = 2.0 * M_PI / omega;
   const auto& sys = hb.system();
   const Eigen::MatrixXd Minv = sys.M.inverse();
   // penetration coefficients of every contact on the HB orbit, and its switch times
@@ -342,11 +342,11 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
     Eigen::VectorXd uc = hb.penetration(X, i);
     for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
       if (b - a < 2.0 * M_PI)
-        for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / w);
+        for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / omega);
     u.push_back(std::move(uc));
   }
   auto A = [&](double t, Eigen::MatrixXd& out) {
-    const double th = w * t;
+    const double th = omega * t;
     Eigen::MatrixXd Kt = sys.K;
     for (std::size_t i = 0; i < u.size(); ++i) {
       const double ui = trig_series(u[i], th);
@@ -361,8 +361,8 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
   FloquetResult r;
   r.monodromy = monodromy_linear_periodic(A, 2 * n, T, breakpoints, 1e-11);
   r.orbit_error = NAN;   // the HB orbit is not corrected on this path
-  hb_initial_state(hb, X, w, r.x0, r.v0);
-  set_multipliers(r, r.monodromy, opt, w);
+  hb_initial_state(hb, X, omega, r.x0, r.v0);
+  set_multipliers(r, r.monodromy, opt, omega);
   return r;
 }
 
@@ -390,11 +390,11 @@ using ShootingMap = std::function<void(const Eigen::VectorXd& y, Eigen::VectorXd
 // residual scaled by sc, keeping the best iterate (a step that does not lower the
 // residual ends the iteration). Fills r (state, monodromy, residual, corrected, steps,
 // multipliers) and returns x at the nodes on the best orbit.
-Eigen::MatrixXd shooting_newton(const ShootingMap& P, const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+Eigen::MatrixXd shooting_newton(const ShootingMap& P, const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                 const Eigen::VectorXd& sc, const FloquetOptions& opt, FloquetResult& r) {
   const int n = hb.dofs(), m = 2 * n;
   Eigen::VectorXd x0, v0, yT;
-  hb_initial_state(hb, X, w, x0, v0);
+  hb_initial_state(hb, X, omega, x0, v0);
   Eigen::VectorXd y(m), ybest;
   y << x0, v0;
   Eigen::MatrixXd Phi, xs, Phi_best, xs_best;
@@ -420,25 +420,25 @@ Eigen::MatrixXd shooting_newton(const ShootingMap& P, const HarmonicBalance& hb,
   }
   if (ybest.size() == 0 || Phi_best.size() == 0)   // the first residual was already not finite
     throw std::runtime_error("Floquet: the period map of the harmonic-balance orbit is not finite at omega = " +
-                             std::to_string(w) + " rad/s (a parameter far outside the model's scale?)");
+                             std::to_string(omega) + " rad/s (a parameter far outside the model's scale?)");
   r.shooting_residual = best;
   r.x0 = ybest.head(n);
   r.v0 = ybest.tail(n);
   r.monodromy = Phi_best;
-  set_multipliers(r, Phi_best, opt, w);
+  set_multipliers(r, Phi_best, opt, omega);
   return xs_best;
 }
 
-Eigen::VectorXd shooting_scale(int n, double w, double x_scale) {
+Eigen::VectorXd shooting_scale(int n, double omega, double x_scale) {
   Eigen::VectorXd sc(2 * n);
   sc.head(n).setConstant(x_scale);
-  sc.tail(n).setConstant(w * x_scale);
+  sc.tail(n).setConstant(omega * x_scale);
   return sc;
 }
 
 }  // namespace
 
-FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w,
+FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                          double x_scale, const FloquetOptions& opt) {
   const int n = hb.dofs(), H = hb.harmonics();
   const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
@@ -449,20 +449,20 @@ FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen:
   to.x_scale = x_scale;
   const ShootingMap P = [&](const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi, Eigen::MatrixXd& xs) {
     Eigen::VectorXd xT, vT;
-    ti.period_map(y.head(n), y.tail(n), w, to, xT, vT, Phi, M, &xs);
+    ti.period_map(y.head(n), y.tail(n), omega, to, xT, vT, Phi, M, &xs);
     yT.resize(2 * n);
     yT << xT, vT;
   };
   FloquetResult r;
-  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, w, shooting_scale(n, w, x_scale), opt, r);
+  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, omega, shooting_scale(n, omega, x_scale), opt, r);
   r.orbit_error = (xs - hb_orbit_samples(hb, X, M)).cwiseAbs().maxCoeff();
   return r;
 }
 
-std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, int steps) {
+std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, int steps) {
   const int H = hb.harmonics();
   const int M = steps > 0 ? steps : std::max(64, 2 * (2 * H + 1));
-  const double T = 2.0 * M_PI / w;
+  const double T = 2.0 * M_PI / omega;
   std::vector<double> nodes;
   for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
   Aft aft(H);
@@ -471,31 +471,31 @@ std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::Vecto
     const auto I = contact_intervals(uc, aft.to_time(uc));
     for (std::size_t i = 0; i < I.size(); ++i) {
       const double a = I[i].first, b = I[i].second;
-      if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / w);
+      if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / omega);
       const double a2 = I[(i + 1) % I.size()].first + (i + 1 == I.size() ? 2.0 * M_PI : 0.0);
-      if (a2 - b < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (b + a2), 2.0 * M_PI) / w);
+      if (a2 - b < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (b + a2), 2.0 * M_PI) / omega);
     }
   }
   std::sort(nodes.begin(), nodes.end());
   return nodes;
 }
 
-FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, double x_scale,
+FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, double x_scale,
                                   const FloquetOptions& opt) {
-  if (has_stiffness_profile(hb)) return floquet_of_hb_shooting_gsl(hb, X, w, x_scale, opt);
+  if (has_stiffness_profile(hb)) return floquet_of_hb_shooting_gsl(hb, X, omega, x_scale, opt);
   const int n = hb.dofs(), H = hb.harmonics();
-  const double T = 2.0 * M_PI / w;
+  const double T = 2.0 * M_PI / omega;
   const int M = opt.steps > 0 ? opt.steps : std::max(64, 2 * (2 * H + 1));
-  const std::vector<double> nodes = shooting_nodes(hb, X, w, M);
+  const std::vector<double> nodes = shooting_nodes(hb, X, omega, M);
   PiecewiseLinearFlow flow(hb);
   const ShootingMap P = [&](const Eigen::VectorXd& y, Eigen::VectorXd& yT, Eigen::MatrixXd& Phi, Eigen::MatrixXd& xs) {
     Eigen::VectorXd xT, vT;
-    flow.period_map(y.head(n), y.tail(n), w, nodes, xT, vT, Phi, &xs);
+    flow.period_map(y.head(n), y.tail(n), omega, nodes, xT, vT, Phi, &xs);
     yT.resize(2 * n);
     yT << xT, vT;
   };
   FloquetResult r;
-  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, w, shooting_scale(n, w, x_scale), opt, r);
+  const Eigen::MatrixXd xs = shooting_newton(P, hb, X, omega, shooting_scale(n, omega, x_scale), opt, r);
   // orbit error over the uniform nodes (their columns in the node list)
   const Eigen::MatrixXd xhb = hb_orbit_samples(hb, X, M);
   double e = 0.0;
