@@ -35,13 +35,13 @@ BranchOnGridReport branch_on_grid(const HarmonicBalance& hb, const Branch& b, co
   Eigen::VectorXd R;
   Eigen::MatrixXd J;
   for (std::size_t g = 0; g < omegas.size(); ++g) {
-    const double w = omegas[g];
+    const double omega = omegas[g];
     for (std::size_t i = 0; i + 1 < P.size(); ++i) {
-      const double a = P[i].omega - w, c = P[i + 1].omega - w;
+      const double a = P[i].omega - omega, c = P[i + 1].omega - omega;
       if (a * c > 0.0 || a == c) continue;
       const double t = a == c ? 0.0 : a / (a - c);
       Eigen::VectorXd X = (1.0 - t) * P[i].X + t * P[i + 1].X;
-      if (!newton_solve(hb, X, w, s).converged) {
+      if (!newton_solve(hb, X, omega, s).converged) {
         ++out.newton_failures;
         continue;
       }
@@ -53,10 +53,10 @@ BranchOnGridReport branch_on_grid(const HarmonicBalance& hb, const Branch& b, co
       sol.x_max = r.x_max;
       sol.x_h1 = r.x_h1;
       if (stability == StabilityMethod::hill) {
-        hb.evaluate(X, w, R, &J, nullptr);
-        sol.stable = hill_stability(J, hb.system().M, hb.system().C, w, hb.harmonics()).stable;
+        hb.evaluate(X, omega, R, &J, nullptr);
+        sol.stable = hill_stability(J, hb.system().M, hb.system().C, omega, hb.harmonics()).stable;
       } else if (stability == StabilityMethod::floquet) {
-        sol.stable = floquet_of_hb_orbit(hb, X, w, s.x[0], floquet).stable;
+        sol.stable = floquet_of_hb_orbit(hb, X, omega, s.x[0], floquet).stable;
       }
       sol.X = std::move(X);
       here.push_back(std::move(sol));
@@ -101,16 +101,16 @@ GridSolutions newton_stepped_sweep(const HarmonicBalance& hb, const std::vector<
   Eigen::MatrixXd J;
   bool have = false;
   for (std::size_t g = 0; g < omegas.size(); ++g) {
-    const double w = omegas[g];
-    if (!have) X = linear_first_guess(hb, w);
-    have = newton_solve(hb, X, w, s).converged;
+    const double omega = omegas[g];
+    if (!have) X = linear_first_guess(hb, omega);
+    have = newton_solve(hb, X, omega, s).converged;
     if (!have) continue;
     GridSolution sol;
     const ResponseSummary r = ev.summarize(X);
     sol.x_max = r.x_max;
     sol.x_h1 = r.x_h1;
-    hb.evaluate(X, w, R, &J, nullptr);
-    sol.stable = hill_stability(J, hb.system().M, hb.system().C, w, hb.harmonics()).stable;
+    hb.evaluate(X, omega, R, &J, nullptr);
+    sol.stable = hill_stability(J, hb.system().M, hb.system().C, omega, hb.harmonics()).stable;
     sol.X = X;
     out[g].push_back(std::move(sol));
   }
@@ -142,14 +142,14 @@ std::vector<SteppedSweepPoint> stepped_sweep(const HarmonicBalance& hb, const st
                                              Eigen::VectorXd x0, Eigen::VectorXd v0) {
   const TimeIntegrator ti(hb);
   std::vector<SteppedSweepPoint> out;
-  for (double w : omegas) {
+  for (double omega : omegas) {
     // Periodicity (and the absolute tolerance) relative to the size of the state
     // this frequency starts from, so a small response is converged as well as a large one.
     TimeIntegrationOptions o = opt;
-    o.x_scale = std::max({x0.lpNorm<Eigen::Infinity>(), v0.lpNorm<Eigen::Infinity>() / w, 1e-300});
-    const SteadyState ss = ti.steady_state(x0, v0, w, o);
+    o.x_scale = std::max({x0.lpNorm<Eigen::Infinity>(), v0.lpNorm<Eigen::Infinity>() / omega, 1e-300});
+    const SteadyState ss = ti.steady_state(x0, v0, omega, o);
     SteppedSweepPoint p;
-    p.omega = w;
+    p.omega = omega;
     p.periodic = ss.converged;
     p.periods = ss.periods;
     p.x0 = ss.x0;
@@ -162,7 +162,7 @@ std::vector<SteppedSweepPoint> stepped_sweep(const HarmonicBalance& hb, const st
       b1 += x[j] * std::sin(2 * M_PI * j / N);
     }
     p.x_h1 = 2.0 * std::hypot(a1, b1) / N;
-    p.x_max = ti.max_over_period(ss.x0, ss.v0, w, q, o);
+    p.x_max = ti.max_over_period(ss.x0, ss.v0, omega, q, o);
     x0 = ss.x0;
     v0 = ss.v0;
     out.push_back(std::move(p));

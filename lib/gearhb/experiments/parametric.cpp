@@ -50,11 +50,11 @@ Eigen::VectorXd square_wave_stiffness(double a, double b, int P) {
 namespace {
 // Transfer matrix of y'' + lambda y = 0 over a time tau (complex frequency for lambda < 0).
 Eigen::Matrix2cd transfer(double lambda, double tau) {
-  const std::complex<double> w = std::sqrt(std::complex<double>(lambda, 0.0));
+  const std::complex<double> root = std::sqrt(std::complex<double>(lambda, 0.0));
   Eigen::Matrix2cd T;
-  const std::complex<double> c = std::cos(w * tau);
-  const std::complex<double> s_over_w = std::abs(w) < 1e-300 ? std::complex<double>(tau) : std::sin(w * tau) / w;
-  T << c, s_over_w, -lambda * s_over_w, c;
+  const std::complex<double> c = std::cos(root * tau);
+  const std::complex<double> s_over_root = std::abs(root) < 1e-300 ? std::complex<double>(tau) : std::sin(root * tau) / root;
+  T << c, s_over_root, -lambda * s_over_root, c;
   return T;
 }
 }  // namespace

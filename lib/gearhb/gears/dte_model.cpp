@@ -94,10 +94,10 @@ Eigen::VectorXd dte_closed_contact(const DteGear& g, int H, double omega) {
   Eigen::VectorXd X(2 * H + 1);
   X[0] = g.F0 / g.kc - e[0];
   for (int n = 1; n <= H; ++n) {
-    const double w = n * omega;
+    const double omega_n = n * omega;
     // E_n = a - i b for e = Re(E e^{i n theta}); the same for X.
     const std::complex<double> E(e[2 * n - 1], -e[2 * n]);
-    const std::complex<double> Xn = -g.kc * E / std::complex<double>(g.kc - w * w * g.me, w * g.c);
+    const std::complex<double> Xn = -g.kc * E / std::complex<double>(g.kc - omega_n * omega_n * g.me, omega_n * g.c);
     X[2 * n - 1] = Xn.real();
     X[2 * n] = -Xn.imag();
   }

@@ -99,7 +99,7 @@ double dte_parametric_stiffness(const DteGear& g, int H, double theta);
 std::vector<UnilateralContact> dte_mesh_contacts(const DteGear& g, int H, DteModel model, const Eigen::VectorXd& n);
 
 // Closed form while the contact stays closed (linear, constant model): coefficients of x,
-//   X0 = F0 / kc - e0,  X_k = -kc E_k / (kc - (k w)^2 me + i k w c).
+//   X0 = F0 / kc - e0,  X_k = -kc E_k / (kc - (k omega)^2 me + i k omega c).
 Eigen::VectorXd dte_closed_contact(const DteGear& g, int H, double omega);
 
 // Penetration u = x + e (coefficients, 2H+1) of a harmonic-balance solution X.

@@ -70,7 +70,7 @@ DteCurveReport dte_curve_report(const DteGear& g, const HarmonicBalance& hb, con
 
 std::vector<double> dte_linear_rms(const DteGear& g, int H, const std::vector<double>& omegas) {
   std::vector<double> out;
-  for (double w : omegas) out.push_back(rms_ac(dte_closed_contact(g, H, w)));
+  for (double omega : omegas) out.push_back(rms_ac(dte_closed_contact(g, H, omega)));
   return out;
 }
 

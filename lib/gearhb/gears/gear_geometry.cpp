@@ -60,24 +60,24 @@ OperatingMesh operating_mesh(const GearGeometry& g1, const GearGeometry& g2, dou
   if (std::fabs(g1.pressure_angle_deg - g2.pressure_angle_deg) > 1e-12 ||
       std::fabs(g1.module - g2.module) > 1e-15)
     throw std::invalid_argument("path_of_contact: gears must share module and pressure angle");
-  OperatingMesh w;
+  OperatingMesh mesh;
   const double alpha = g1.pressure_angle_rad(), rb = g1.base_radius() + g2.base_radius();
   if (centre_distance > 0.0) {
     if (!(centre_distance > rb))
       throw std::invalid_argument("operating_mesh: centre distance below rb1 + rb2");
-    w.centre_distance = centre_distance;
-    w.pressure_angle = std::acos(rb / centre_distance);
+    mesh.centre_distance = centre_distance;
+    mesh.pressure_angle = std::acos(rb / centre_distance);
   } else {
     const double xs = g1.profile_shift + g2.profile_shift;
     // x1 + x2 = 0: alpha_w = alpha exactly (no round trip through inv^-1).
-    w.pressure_angle = xs == 0.0 ? alpha
+    mesh.pressure_angle = xs == 0.0 ? alpha
                                  : inverse_involute(involute(alpha) + 2.0 * std::tan(alpha) * xs /
                                                                           double(g1.teeth + g2.teeth));
-    w.centre_distance = xs == 0.0 ? g1.pitch_radius() + g2.pitch_radius() : rb / std::cos(w.pressure_angle);
+    mesh.centre_distance = xs == 0.0 ? g1.pitch_radius() + g2.pitch_radius() : rb / std::cos(mesh.pressure_angle);
   }
-  w.pitch_radius1 = operating_pitch_radius(g1, w.pressure_angle);
-  w.pitch_radius2 = operating_pitch_radius(g2, w.pressure_angle);
-  return w;
+  mesh.pitch_radius1 = operating_pitch_radius(g1, mesh.pressure_angle);
+  mesh.pitch_radius2 = operating_pitch_radius(g2, mesh.pressure_angle);
+  return mesh;
 }
 
 PathOfContact path_of_contact(const GearGeometry& g1, const GearGeometry& g2, double centre_distance) {

@@ -135,8 +135,8 @@ MeshContact classify(ContactState drive, ContactState back) {
 }
 
 bool near(const std::vector<double>& at, double omega, double margin) {
-  for (double w : at)
-    if (std::fabs(w - omega) < margin * w) return true;
+  for (double a : at)
+    if (std::fabs(a - omega) < margin * a) return true;
   return false;
 }
 

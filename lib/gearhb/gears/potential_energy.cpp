@@ -32,13 +32,13 @@ const std::vector<std::pair<double, double>>& gauss_legendre(int n) {
     if (!t) throw std::runtime_error("potential energy: GSL could not build the Gauss-Legendre rule");
     auto nodes = std::make_unique<std::vector<std::pair<double, double>>>(size_t(n));
     for (int i = 0; i < n; ++i) {
-      double x = 0, w = 0;
-      const int status = gsl_integration_glfixed_point(-1.0, 1.0, size_t(i), &x, &w, t);
+      double x = 0, weight = 0;
+      const int status = gsl_integration_glfixed_point(-1.0, 1.0, size_t(i), &x, &weight, t);
       if (status) {
         gsl_integration_glfixed_table_free(t);
         gsl_check(status, "potential energy: Gauss-Legendre node");
       }
-      (*nodes)[size_t(i)] = {x, w};
+      (*nodes)[size_t(i)] = {x, weight};
     }
     gsl_integration_glfixed_table_free(t);
     rule = std::move(nodes);
@@ -101,13 +101,13 @@ PeBeamIntegrals pe_beam_integrals(const std::function<PeSection(double)>& sectio
   double kb = 0, ks = 0, ka = 0;
   for (const auto& [node, weight] : rule) {
     const PeSection q = section(mid + half * node);
-    const double w = weight * half * q.dx_dt;
+    const double dw = weight * half * q.dx_dt;
     const double area = 2.0 * q.half_thickness * b;                                       // A = 2 y b
     const double inertia = 2.0 / 3.0 * q.half_thickness * q.half_thickness * q.half_thickness * b;   // (2y)^3 b / 12
     const double moment = c * (x_c - q.x) - s * y_c;
-    kb += w * moment * moment / (E_prime * inertia);
-    ks += w * 1.2 * c * c / (G * area);
-    ka += w * s * s / (E_prime * area);
+    kb += dw * moment * moment / (E_prime * inertia);
+    ks += dw * 1.2 * c * c / (G * area);
+    ka += dw * s * s / (E_prime * area);
   }
   return {kb, ks, ka};
 }

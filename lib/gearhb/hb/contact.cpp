@@ -196,7 +196,7 @@ void indicator_moments(const std::vector<std::pair<double, double>>& I, int M, d
 }
 
 void weighted_indicator_moments(const std::vector<std::pair<double, double>>& I,
-                                const std::function<double(double)>& w, int M, double max_piece,
+                                const std::function<double(double)>& weight, int M, double max_piece,
                                 double* Sc, double* Ss) {
   if (!(max_piece > 0.0)) throw std::invalid_argument("weighted_indicator_moments: max_piece must be > 0");
   // 10-point Gauss-Legendre nodes and weights on [-1, 1] (Abramowitz & Stegun 25.4.30).
@@ -213,7 +213,7 @@ void weighted_indicator_moments(const std::vector<std::pair<double, double>>& I,
       const double mid = a + (p + 0.5) * h, half = 0.5 * h;
       for (int q = 0; q < 10; ++q) {
         const double t = mid + (q < 5 ? -x[q] : x[q - 5]) * half;
-        const double wt = g[q % 5] * half * inv2pi * w(t);
+        const double wt = g[q % 5] * half * inv2pi * weight(t);
         // cos(m t), sin(m t) by the angle-addition recurrence
         const double c1 = std::cos(t), s1 = std::sin(t);
         double c = 1.0, s = 0.0;

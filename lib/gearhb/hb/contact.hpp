@@ -107,16 +107,16 @@ ContactState contact_state(const Eigen::VectorXd& uc, const Eigen::VectorXd& us)
 void indicator_moments(const std::vector<std::pair<double, double>>& intervals, int M,
                        double* Sc, double* Ss);
 
-// The same moments of the indicator weighted by a smooth function w(theta) (a
-// time-varying contact stiffness profile): Sc[m] = (1/2pi) int_I w cos(m theta),
-// Ss[m] = (1/2pi) int_I w sin(m theta), m = 0..M, by 10-point Gauss-Legendre
+// The same moments of the indicator weighted by a smooth function weight(theta) (a
+// time-varying contact stiffness profile): Sc[m] = (1/2pi) int_I weight cos(m theta),
+// Ss[m] = (1/2pi) int_I weight sin(m theta), m = 0..M, by 10-point Gauss-Legendre
 // quadrature on pieces of each interval no longer than `max_piece` [rad]. The
 // interval ends are the exact contact crossings, so the quadrature never straddles
 // the kink of the law; inside, w, cos and sin are smooth and the rule (exact for
 // polynomials of degree 19 on each piece) converges to round-off once a piece
 // spans well under one period of cos(M theta) and of w's fastest variation.
 void weighted_indicator_moments(const std::vector<std::pair<double, double>>& intervals,
-                                const std::function<double(double)>& w, int M, double max_piece,
+                                const std::function<double(double)>& weight, int M, double max_piece,
                                 double* Sc, double* Ss);
 
 }  // namespace gearhb

@@ -31,10 +31,10 @@ struct Scaled {
   Scaled(const ParametricProblem& prob, const Scaling& sc) : p(prob), s(sc), n(prob.size()), R(n), dRdw(n) {}
   Eigen::VectorXd X(const Eigen::VectorXd& y) const { return s.x.cwiseProduct(y.head(n)); }
   double omega(const Eigen::VectorXd& y) const { return y[n] * s.omega; }
-  Eigen::VectorXd y(const Eigen::VectorXd& X, double w) const {
+  Eigen::VectorXd y(const Eigen::VectorXd& X, double omega) const {
     Eigen::VectorXd out(n + 1);
     out.head(n) = X.cwiseQuotient(s.x);
-    out[n] = w / s.omega;
+    out[n] = omega / s.omega;
     return out;
   }
   // Linearises at y; returns max|R|/r.
@@ -254,15 +254,15 @@ Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X
   const int steps = std::max(1, opt.natural_points);
   Eigen::VectorXd last_good = X0;
   for (int i = 0; i <= steps; ++i) {
-    const double w = opt.omega_start + (opt.omega_end - opt.omega_start) * i / steps;
+    const double omega = opt.omega_start + (opt.omega_end - opt.omega_start) * i / steps;
     X = last_good;
-    NewtonReport r = newton_solve(p, X, w, s, nopt);
+    NewtonReport r = newton_solve(p, X, omega, s, nopt);
     if (!r.converged) {
       // Stop here: the point of this method is to show where it gives up.
-      b.failures.push_back({w, r.residual, 0.0, "Newton: " + r.message});
+      b.failures.push_back({omega, r.residual, 0.0, "Newton: " + r.message});
       break;
     }
-    b.points.push_back({X, w, r.iterations, r.residual, 0.0, 0.0});
+    b.points.push_back({X, omega, r.iterations, r.residual, 0.0, 0.0});
     last_good = X;
   }
   b.complete = b.failures.empty();
@@ -280,7 +280,7 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
   // Bisection on the fraction f of the chord a -> b; each trial point is pulled back
   // onto the branch in the hyperplane normal to the chord, so a fold between a and
   // b does no harm.
-  double lo = 0.0, hi = 1.0, w = a.omega;
+  double lo = 0.0, hi = 1.0, omega = a.omega;
   while ((hi - lo) * (yb - ya).norm() * s.omega > opt.tolerance) {
     const double mid = 0.5 * (lo + hi);
     if (!(mid > lo && mid < hi)) break;   // the chord's resolution in double precision (omega ~ 1e100)
@@ -292,10 +292,10 @@ double locate_transition(const ParametricProblem& p, const BranchPoint& a, const
                                std::to_string(S.omega(y)) + " (scaled residual " + std::to_string(res) + " after " +
                                std::to_string(iters) + " iterations; tolerance " +
                                std::to_string(opt.corrector_tolerance) + ")");
-    w = S.omega(y);
+    omega = S.omega(y);
     (state(S.X(y)) == sa ? lo : hi) = mid;
   }
-  return w;
+  return omega;
 }
 
 // The chord corrector's iteration limit (a trial point lies on a short chord between two

@@ -36,9 +36,9 @@ double eval(double phi, void* p) {
 }
 
 struct Workspace {
-  gsl_integration_workspace* w;
-  Workspace() : w(gsl_integration_workspace_alloc(200)) {}
-  ~Workspace() { gsl_integration_workspace_free(w); }
+  gsl_integration_workspace* work;
+  Workspace() : work(gsl_integration_workspace_alloc(200)) {}
+  ~Workspace() { gsl_integration_workspace_free(work); }
 };
 
 double integrate(Integrand& in, double phic, double epsabs, double epsrel, double& err) {
@@ -49,9 +49,9 @@ double integrate(Integrand& in, double phic, double epsabs, double epsrel, doubl
   int status;
   if (phic > 0.0 && phic < M_PI) {
     double pts[3] = {0.0, phic, M_PI};
-    status = gsl_integration_qagp(&F, pts, 3, epsabs, epsrel, 200, ws.w, &result, &e);
+    status = gsl_integration_qagp(&F, pts, 3, epsabs, epsrel, 200, ws.work, &result, &e);
   } else {
-    status = gsl_integration_qags(&F, 0.0, M_PI, epsabs, epsrel, 200, ws.w, &result, &e);
+    status = gsl_integration_qags(&F, 0.0, M_PI, epsabs, epsrel, 200, ws.work, &result, &e);
   }
   gsl_set_error_handler(old);
   if (status) throw std::runtime_error(std::string("describing_function: GSL quadrature failed: ") +

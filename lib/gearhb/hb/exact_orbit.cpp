@@ -90,7 +90,7 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
       for (Eigen::Index j = 0; j < R; ++j) z_.block(0, c0 + j, 2 * n_, 1).noalias() = E[std::size_t(j)] * p.z0;
     }
   }
-  // the oscillator rows [1, cos k w t, sin k w t] in closed form
+  // the oscillator rows [1, cos k omega t, sin k omega t] in closed form
   const auto& harmonics = flow_.oscillator_harmonics();
   z_.row(2 * n_).setOnes();
   for (std::size_t j = 0; j < harmonics.size(); ++j) {

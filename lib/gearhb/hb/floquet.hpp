@@ -4,8 +4,8 @@
 // The equation (harmonic_balance.hpp) is linear between contact switches:
 // with S the set of closed contacts,
 //   M x'' + C x' + (K + sum_{i in S} kc_i n_i n_i') x
-//       = f0 + fc cos(w t) + fs sin(w t) - sum_{i in S} kc_i n_i g_i(w t).
-// Augmenting the state with the oscillators [1, cos k w t, sin k w t] of the
+//       = f0 + fc cos(omega t) + fs sin(omega t) - sum_{i in S} kc_i n_i g_i(omega t).
+// Augmenting the state with the oscillators [1, cos k omega t, sin k omega t] of the
 // forcing (k = 1) and of the gap harmonics that are present, z = [x, v, 1, c_k, s_k],
 // gives z' = A_S z with A_S constant, so the flow over a time h is exactly
 // exp(A_S h) z (Eigen's MatrixFunctions). The switch times are the roots of
@@ -41,7 +41,7 @@ namespace gearhb {
 
 struct FloquetOptions {
   int max_newton = 8;          // shooting Newton steps
-  double tolerance = 1e-10;    // on |P(y) - y|: displacements / x_scale, velocities / (w x_scale)
+  double tolerance = 1e-10;    // on |P(y) - y|: displacements / x_scale, velocities / (omega x_scale)
   int steps = 0;               // uniform grid steps per period (0: max(64, 2 (2H+1)))
   double stability_margin = 0.0;   // stable iff max |multiplier| < 1 - margin
 };
@@ -105,7 +105,7 @@ class PiecewiseLinearFlow {
   bool spectral(unsigned state, double omega) const;
   // The (x, v) rows of exp(A_state s_j) z for several s_j at once (columns): for a
   // diagonalised propagator one product V_xv (e^{lambda s_j} o V^-1 z), else one exponential
-  // per s_j. (The other rows of z are the oscillators [1, cos k w t, sin k w t]: known.)
+  // per s_j. (The other rows of z are the oscillators [1, cos k omega t, sin k omega t]: known.)
   Eigen::MatrixXd advance_xv(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
   // The harmonics k of the oscillator states (k = 1 first; floquet.hpp's header).
   const std::vector<int>& oscillator_harmonics() const { return harmonics_; }

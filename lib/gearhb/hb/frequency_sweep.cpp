@@ -209,8 +209,8 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
     const double a = std::fabs(f.angle);
     return f.modulus > 0.75 && (a < 0.15 * M_PI || a > 0.85 * M_PI);
   };
-  auto probe = [&](const Eigen::VectorXd& X, double w) {
-    const FloquetResult r = floquet_of_hb_orbit(hb, X, w, xs, fo);
+  auto probe = [&](const Eigen::VectorXd& X, double omega) {
+    const FloquetResult r = floquet_of_hb_orbit(hb, X, omega, xs, fo);
     return StateProbe{outside(point_floquet(r)), std::log(r.modulus)};
   };
   for (std::size_t i = 1; i < P.size(); ++i) {
@@ -374,8 +374,8 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
     if (outside(c.floquet[i - 1]) == outside(c.floquet[i])) continue;
     // The probe: the count outside, and log |mu| of the crossing multiplier (zero on the circle).
     const PointFloquet &fa = c.floquet[i - 1], &fb = c.floquet[i];
-    auto state = [&hb, &opt, xs, &fa, &fb](const Eigen::VectorXd& X, double w) {
-      const FloquetResult r = floquet_of_hb_orbit(hb, X, w, xs, opt.floquet);
+    auto state = [&hb, &opt, xs, &fa, &fb](const Eigen::VectorXd& X, double omega) {
+      const FloquetResult r = floquet_of_hb_orbit(hb, X, omega, xs, opt.floquet);
       return StateProbe{outside(point_floquet(r)), std::log(std::abs(crossing_multiplier(r, fa, fb)))};
     };
     Bifurcation bf;

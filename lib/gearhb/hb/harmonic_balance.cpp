@@ -58,7 +58,7 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
   mc_.resize(2 * m); ms_.resize(2 * m);
 }
 
-void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double w, Eigen::VectorXd& R,
+void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                                    Eigen::VectorXd* dRdw) const {
   // X and R as n x (2H+1) matrices, one column per coefficient
   const int n = n_, m = 2 * H_ + 1;
@@ -68,7 +68,7 @@ void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double w, Eigen::Ve
   const Eigen::MatrixXd KX = sys_.K * Xm, MX = sys_.M * Xm, CX = sys_.C * Xm;
   Rm.col(0) = KX.col(0) - f_.f0;
   for (int k = 1; k <= H_; ++k) {
-    const double kw = k * w;
+    const double kw = k * omega;
     const int c = 2 * k - 1, s = 2 * k;
     Rm.col(c) = KX.col(c) - kw * kw * MX.col(c) + kw * CX.col(s);
     Rm.col(s) = KX.col(s) - kw * kw * MX.col(s) - kw * CX.col(c);
@@ -80,16 +80,16 @@ void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double w, Eigen::Ve
     Eigen::Map<Eigen::MatrixXd> Dm(dRdw->data(), n, m);
     for (int k = 1; k <= H_; ++k) {
       const int c = 2 * k - 1, s = 2 * k;
-      Dm.col(c) = -2.0 * k * k * w * MX.col(c) + k * CX.col(s);
-      Dm.col(s) = -2.0 * k * k * w * MX.col(s) - k * CX.col(c);
+      Dm.col(c) = -2.0 * k * k * omega * MX.col(c) + k * CX.col(s);
+      Dm.col(s) = -2.0 * k * k * omega * MX.col(s) - k * CX.col(c);
     }
   }
 }
 
-Eigen::MatrixXd HarmonicBalance::harmonic_block(int k, double w) const {
+Eigen::MatrixXd HarmonicBalance::harmonic_block(int k, double omega) const {
   if (k == 0) return sys_.K;
   const int n = n_;
-  const double kw = k * w;
+  const double kw = k * omega;
   Eigen::MatrixXd B(2 * n, 2 * n);
   const Eigen::MatrixXd D = sys_.K - kw * kw * sys_.M;
   B << D, kw * sys_.C, -kw * sys_.C, D;
@@ -149,11 +149,11 @@ void HarmonicBalance::evaluate_gap_scaled(const Eigen::VectorXd& X, double omega
   if (J) *J = assemble_jacobian(omega, G);
 }
 
-Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double w, const std::vector<Eigen::MatrixXd>& G) const {
+Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double omega, const std::vector<Eigen::MatrixXd>& G) const {
   const int n = n_, m = 2 * H_ + 1;
   Eigen::MatrixXd J = Eigen::MatrixXd::Zero(size(), size());
   J.block(0, 0, n, n) = sys_.K;
-  for (int k = 1; k <= H_; ++k) J.block(index(2 * k - 1, 0), index(2 * k - 1, 0), 2 * n, 2 * n) = harmonic_block(k, w);
+  for (int k = 1; k <= H_; ++k) J.block(index(2 * k - 1, 0), index(2 * k - 1, 0), 2 * n, 2 * n) = harmonic_block(k, omega);
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
     const Eigen::MatrixXd nn = contacts_[i].normal * contacts_[i].normal.transpose();
     for (int a = 0; a < m; ++a)
@@ -163,12 +163,12 @@ Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double w, const std::vector<E
   return J;
 }
 
-void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double w, Eigen::VectorXd& R,
+void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                                Eigen::MatrixXd* J, Eigen::VectorXd* dRdw) const {
-  linear_terms(X, w, R, dRdw);
+  linear_terms(X, omega, R, dRdw);
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, J != nullptr, J ? &G : nullptr);
-  if (J) *J = assemble_jacobian(w, G);
+  if (J) *J = assemble_jacobian(omega, G);
 }
 
 namespace {
@@ -239,8 +239,8 @@ class CondensedLinearization : public Linearization {
     r.head(q) = project(Zf);
     r[q] = g - c.dot(Zf);
     for (Eigen::Index i = 0; i <= q; ++i) {   // row equilibration for the pivoting
-      const double w = A.row(i).cwiseAbs().maxCoeff();
-      if (w > 0.0) A.row(i) /= w, r[i] /= w;
+      const double omega = A.row(i).cwiseAbs().maxCoeff();
+      if (omega > 0.0) A.row(i) /= omega, r[i] /= omega;
     }
     const Eigen::VectorXd vw = A.partialPivLu().solve(r);
     if (!vw.allFinite()) return false;
@@ -329,18 +329,18 @@ class HbLinearization : public Linearization {
 
 }  // namespace
 
-std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd& X, double w, const Scaling& s,
+std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
                                                           Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const {
-  linear_terms(X, w, R, &dRdw);
+  linear_terms(X, omega, R, &dRdw);
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, true, &G);
   const int n = n_, m = 2 * H_ + 1, P = int(contacts_.size());
-  auto dense = [this, w, G]() { return assemble_jacobian(w, G); };
+  auto dense = [this, omega, G]() { return assemble_jacobian(omega, G); };
   if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdw, s);   // nothing to condense
   std::vector<Eigen::MatrixXd> blocks;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> factors;
   for (int k = 0; k <= H_; ++k) {
-    blocks.push_back(harmonic_block(k, w));
+    blocks.push_back(harmonic_block(k, omega));
     // L singular (a free rigid-body mode at k = 0, an undamped resonance of the open
     // system at k omega): the dense system only. Near-singular blocks are caught by
     // the condensed solve's residual check.
@@ -370,11 +370,11 @@ Eigen::VectorXd HarmonicBalance::penetration(const Eigen::VectorXd& X, std::size
   return u;
 }
 
-Eigen::VectorXd HarmonicBalance::linear_solution(double w, bool closed) const {
-  return contact_set_solution(w, closed ? ~0ull : 0ull);
+Eigen::VectorXd HarmonicBalance::linear_solution(double omega, bool closed) const {
+  return contact_set_solution(omega, closed ? ~0ull : 0ull);
 }
 
-Eigen::VectorXd HarmonicBalance::contact_set_solution(double w, unsigned long long closed) const {
+Eigen::VectorXd HarmonicBalance::contact_set_solution(double omega, unsigned long long closed) const {
   Eigen::MatrixXd K = sys_.K;
   Eigen::VectorXd f0 = f_.f0;
   for (std::size_t i = 0; i < contacts_.size(); ++i) {
@@ -395,14 +395,14 @@ Eigen::VectorXd HarmonicBalance::contact_set_solution(double w, unsigned long lo
   const std::complex<double> i(0.0, 1.0);
   // fc cos + fs sin = Re((fc - i fs) e^{i theta})
   const Eigen::VectorXcd F = f_.fc.cast<std::complex<double>>() - i * f_.fs.cast<std::complex<double>>();
-  const Eigen::VectorXcd Z = frequency_response(s, F, w);
+  const Eigen::VectorXcd Z = frequency_response(s, F, omega);
   X.segment(index(1, 0), n_) = Z.real();
   X.segment(index(2, 0), n_) = -Z.imag();
   return X;
 }
 
-Eigen::VectorXd HarmonicBalance::open_contact_solution(double w) const { return linear_solution(w, false); }
-Eigen::VectorXd HarmonicBalance::closed_contact_solution(double w) const { return linear_solution(w, true); }
+Eigen::VectorXd HarmonicBalance::open_contact_solution(double omega) const { return linear_solution(omega, false); }
+Eigen::VectorXd HarmonicBalance::closed_contact_solution(double omega) const { return linear_solution(omega, true); }
 
 Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
   // The oscillating part of a gap (a transmission error) forces the system as a
@@ -424,10 +424,10 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
   // swamp the resonance peaks in the arc length.
   const int scan = 400;
   for (int i = 0; i <= scan; ++i) {
-    const double w = wmin + (wmax - wmin) * i / scan;
+    const double omega = wmin + (wmax - wmin) * i / scan;
     for (bool closed : {false, true}) {
       if (closed && contacts_.empty()) continue;
-      const Eigen::VectorXd X = linear_solution(w, closed);
+      const Eigen::VectorXd X = linear_solution(omega, closed);
       for (int d = 0; d < n_; ++d) {
         const double a = std::hypot(X[index(1, d)], X[index(2, d)]);
         if (std::isfinite(a)) xref = std::max(xref, a);

@@ -12,9 +12,9 @@
 //
 // Residual (Galerkin projection on cos(k theta), sin(k theta), k = 0..H):
 //   k = 0:  K X_0                              + Fnl_0  - f0
-//   k >= 1: (K - (k w)^2 M) X_ck + k w C X_sk  + Fnl_ck - fc [k = 1]
-//           (K - (k w)^2 M) X_sk - k w C X_ck  + Fnl_sk - fs [k = 1]
-// (thesis §2.2: D(n) = -(n w)^2 M + i n w C + K; the thesis prints -(n w^2) M.)
+//   k >= 1: (K - (k omega)^2 M) X_ck + k omega C X_sk  + Fnl_ck - fc [k = 1]
+//           (K - (k omega)^2 M) X_sk - k omega C X_ck  + Fnl_sk - fs [k = 1]
+// (thesis §2.2: D(n) = -(n omega)^2 M + i n omega C + K; the thesis prints -(n omega^2) M.)
 //
 // The contact forces Fnl come from AFT (thesis §2.3): for each contact, the
 // coefficients of u = g + n'x (n = UnilateralContact::normal) go to N time samples (FFTW), then either

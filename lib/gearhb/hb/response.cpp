@@ -79,7 +79,7 @@ ContactHistory contact_history(const HarmonicBalance& hb, const Branch& b, const
   ContactHistory h;
   for (std::size_t i = 0; i < b.points.size(); ++i) {
     const ResponseSummary r = ev.summarize(b.points[i].X);
-    const double w = b.points[i].omega;
+    const double omega = b.points[i].omega;
     if (i == 0) {
       h.start = r.contact;
       h.x_max = r.x_max;
@@ -88,8 +88,8 @@ ContactHistory contact_history(const HarmonicBalance& hb, const Branch& b, const
       ++h.transitions;
     }
     if (r.contact != h.start) {
-      h.changed_lo = std::isnan(h.changed_lo) ? w : std::min(h.changed_lo, w);
-      h.changed_hi = std::isnan(h.changed_hi) ? w : std::max(h.changed_hi, w);
+      h.changed_lo = std::isnan(h.changed_lo) ? omega : std::min(h.changed_lo, omega);
+      h.changed_hi = std::isnan(h.changed_hi) ? omega : std::max(h.changed_hi, omega);
     }
     h.x_max = std::max(h.x_max, r.x_max);
     h.x_min = std::min(h.x_min, r.x_min);

@@ -8,18 +8,18 @@
 //   D2 = I (x) M,   D1 = 2 (Nabla (x) M) + I (x) C,   D0 = dR/dX  (the HB Jacobian),
 //
 // where Nabla is the time derivative in the real Fourier basis
-// (d/dt of a cos + b sin = k w (b cos - a sin)). The 2 n (2H+1) eigenvalues of
+// (d/dt of a cos + b sin = k omega (b cos - a sin)). The 2 n (2H+1) eigenvalues of
 // this quadratic problem approximate the Floquet exponents, each repeated with
-// shifts i k w. Selection criterion: keep the 2n eigenvalues with the smallest
+// shifts i k omega. Selection criterion: keep the 2n eigenvalues with the smallest
 // |Im lambda| (those whose eigenvectors are dominated by the retained
 // low harmonics; Lazarus & Thomas, C. R. Mecanique 338 (2010) 510-517;
 // Moore, "Floquet theory as a computational tool", SIAM J. Numer. Anal. 2005),
-// plus every eigenvalue with |Im lambda| <= 0.51 w: at a period doubling the
-// multipliers are real negative, their exponents sit at Im = +-w/2 (shifted by
+// plus every eigenvalue with |Im lambda| <= 0.51 omega: at a period doubling the
+// multipliers are real negative, their exponents sit at Im = +-omega/2 (shifted by
 // the truncation error either way) and there are more of them than slots;
 // without this Hill called period-doubled orbits stable (ch. 6, against GSL
 // Floquet multipliers).
-// The eigenproblem is solved for mu = lambda / w (time in radians of forcing
+// The eigenproblem is solved for mu = lambda / omega (time in radians of forcing
 // phase), which keeps the companion matrix balanced for stiff gear models.
 // The solution is stable when every selected exponent has Re(lambda) < 0
 // (within a tolerance relative to omega).

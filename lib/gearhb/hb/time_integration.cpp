@@ -39,28 +39,28 @@ struct OdeContext {
 int rhs(double theta, const double y[], double dydt[], void* params) {
   auto* c = static_cast<OdeContext*>(params);
   const int n = c->n;
-  const double w = c->omega;
+  const double omega = c->omega;
   Eigen::Map<const Eigen::VectorXd> x(y, n), x_theta(y + n, n);
-  // The acceleration of TimeIntegrator::acceleration at t = theta / w, v = w x_theta,
-  // into the work buffer (no allocation per call), divided by w^2.
+  // The acceleration of TimeIntegrator::acceleration at t = theta / omega, v = omega x_theta,
+  // into the work buffer (no allocation per call), divided by omega^2.
   const auto& sys = c->hb->system();
   const auto& f = c->hb->excitation();
   c->r.resize(n);
   c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
-  c->r.noalias() -= w * (sys.C * x_theta);
+  c->r.noalias() -= omega * (sys.C * x_theta);
   c->r.noalias() -= sys.K * x;
   for (const auto& ct : c->hb->contacts())
     c->r -= contact_force(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
   std::copy(y + n, y + 2 * n, dydt);
-  Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (w * w);
+  Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
   if (c->variational) {
     Eigen::MatrixXd Kt = sys.K;
     for (const auto& ct : c->hb->contacts())
       Kt += contact_stiffness(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -c->Minv * Kt / (w * w);
-    A.bottomRightCorner(n, n) = -c->Minv * sys.C / w;
+    A.bottomLeftCorner(n, n) = -c->Minv * Kt / (omega * omega);
+    A.bottomRightCorner(n, n) = -c->Minv * sys.C / omega;
     Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
     dPhi = A * Phi;
@@ -266,7 +266,7 @@ void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, doubl
   v0 = Eigen::VectorXd::Zero(n);
   for (int k = 1; k <= H; ++k) {
     x0 += X.segment(hb.index(2 * k - 1, 0), n);                  // cos(0) = 1
-    v0 += k * omega * X.segment(hb.index(2 * k, 0), n);           // d/dt sin = k w cos
+    v0 += k * omega * X.segment(hb.index(2 * k, 0), n);           // d/dt sin = k omega cos
   }
 }
 

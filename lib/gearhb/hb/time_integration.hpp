@@ -1,7 +1,7 @@
 #pragma once
 // Direct time integration of the same equation the harmonic balance solves,
 //
-//   M x'' + C x' + K x + sum_i n_i max(kc_i (g_i(w t) + n_i' x), 0) = f0 + fc cos wt + fs sin wt,
+//   M x'' + C x' + K x + sum_i n_i max(kc_i (g_i(omega t) + n_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t),
 //
 // with GSL's adaptive embedded Runge-Kutta Prince-Dormand 8(9) driver
 // (gsl_odeiv2_step_rk8pd). It is the independent check of harmonic balance:
