@@ -68,18 +68,18 @@ CHAPTERS = [
          "closed linear response, shifted."),
     ]},
     {"program": "ch05_comparin_singh", "title": "Chapter 5: the Comparin & Singh impact pair", "figures": [
-        ("fig25_*.png", "Fig. 25", "Fm = 4.1 N, Fp = 0.05 N, g = -20 and -15 m. Notice the two curves coincide: both gaps "
+        ("fig25_*.png", "Fig. 25", "F0 = 4.1 N, Fa_1 = 0.05 N, g = -20 and -15 m. Notice the two curves coincide: both gaps "
          "are never reached (type 1, as the classifier predicts)."),
-        ("fig26_*.png", "Fig. 26", "Fm = 4.1 N, Fp = 0.05 N, g = -1 and 6 m. Notice, in the zoom, the g = -1 m branch leave "
+        ("fig26_*.png", "Fig. 26", "F0 = 4.1 N, Fa_1 = 0.05 N, g = -1 and 6 m. Notice, in the zoom, the g = -1 m branch leave "
          "full contact at 1.41145 rad/s and fold back (softening): intermittent solutions also exist below the predicted "
          "(grey) band."),
-        ("fig27_*.png", "Fig. 27", "Fp doubled to 0.1 N, g = -20 and -30 m. Notice both stay linear (type 1): the gaps are "
+        ("fig27_*.png", "Fig. 27", "Fa_1 doubled to 0.1 N, g = -20 and -30 m. Notice both stay linear (type 1): the gaps are "
          "far larger than the vibration."),
-        ("fig28_*.png", "Fig. 28", "Fp = 0.1 N, g = 6 and 20 m (preloaded). Notice both stay in full contact (type 2): the "
+        ("fig28_*.png", "Fig. 28", "Fa_1 = 0.1 N, g = 6 and 20 m (preloaded). Notice both stay in full contact (type 2): the "
          "closed linear response."),
-        ("fig29_*.png", "Fig. 29", "Fm = 2.1 N, Fp = 0.05 N, g = -15 and -8 m. Notice both stay linear (type 1): halving the "
+        ("fig29_*.png", "Fig. 29", "F0 = 2.1 N, Fa_1 = 0.05 N, g = -15 and -8 m. Notice both stay linear (type 1): halving the "
          "mean force does not bring the gap within reach."),
-        ("fig30_*.png", "Fig. 30", "Fm = 2.1 N, Fp = 0.05 N, g = 6 and 10 m. Notice both stay in full contact (type 2): with "
+        ("fig30_*.png", "Fig. 30", "F0 = 2.1 N, Fa_1 = 0.05 N, g = 6 and 10 m. Notice both stay in full contact (type 2): with "
          "our reading of the model 11 of the 12 thesis cases are linear; only g = -1 m (Fig. 26) loses contact."),
         ("figS2_*.png", "supplement S2", "The rebuilt regime classifier against every harmonic-balance solution of a "
          "1200-point grid. Notice there is no disagreement."),

@@ -294,7 +294,7 @@ def unscaled(data_dir, fig_dir, kn):
 def grazing(data_dir, fig_dir, kn):
     d = read_csv(data_dir / "grazing.csv")
     fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.6))
-    F = [f / kn["grazing_force"] for f in d["F"]]
+    F = [f / kn["grazing_force"] for f in d["Fa"]]
     for col, color, label in (("err_hb_exact", "C0", "HB exact contact, H = 10"),
                               ("err_hb_sampled", "C1", "HB sampled AFT, H = 10, N = 84"),
                               ("err_ti", "C3", "time integration rk8pd, tol 1e-6"),

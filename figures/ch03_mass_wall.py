@@ -8,11 +8,11 @@ from style import (CONTACT_LEVEL, case_rows, contact_rug, legend_styles, plot_br
 
 
 def frc_figure(data_dir, fig_dir, name, title, cases, vary):
-    """cases: labels of the case table; vary: the column ("gap" or "F") that tells them
+    """cases: labels of the case table; vary: the column ("gap" or "Fa") that tells them
     apart in the legend. Plots x_max and x_min vs omega and the gap levels."""
     rows = case_rows(data_dir)
-    unit = {"gap": "m", "F": "N"}[vary]
-    sym = {"gap": "g", "F": "F"}[vary]
+    unit = {"gap": "m", "Fa": "N"}[vary]
+    sym = {"gap": "g", "Fa": "Fa"}[vary]
     fig, ax = plt.subplots(figsize=(6.4, 5.0))
     drawn, walls = set(), []   # gap levels already drawn (Figs. 11-12 share one gap)
     for n, label in enumerate(cases):
@@ -49,8 +49,8 @@ def pair_title(data_dir, fig, cases, vary):
     rows = case_rows(data_dir)
     r0, r1 = rows[cases[0]], rows[cases[1]]
     if vary == "gap":
-        return "Fig. %s: g = %g and %g m (F = %g N)" % (fig, r0["gap"], r1["gap"], r0["F"])
-    return "Fig. %s: g = %g m, F = %g and %g N" % (fig, r0["gap"], r0["F"], r1["F"])
+        return "Fig. %s: g = %g and %g m (Fa = %g N)" % (fig, r0["gap"], r1["gap"], r0["Fa"])
+    return "Fig. %s: g = %g m, Fa = %g and %g N" % (fig, r0["gap"], r0["Fa"], r1["Fa"])
 
 
 POINT_RULE = {"A": "0.02 rad/s before the contact state first changes along the curve",
@@ -106,7 +106,7 @@ def draw(data_dir, fig_dir):
                 % math.sqrt((p["k"] + p["kc"]) / p["m"]))
     ax.set_xlabel(r"$\omega$ [rad/s]")
     ax.set_ylabel("amplitude |X| [m]")
-    ax.set_title("Fig. 7: linear response, F = %g N, c = %g N s/m" % (case_rows(data_dir)["g-1.2_F0.01"]["F"], p["c"]))
+    ax.set_title("Fig. 7: linear response, Fa = %g N, c = %g N s/m" % (case_rows(data_dir)["g-1.2_F0.01"]["Fa"], p["c"]))
     ax.legend()
     out.append(save(fig, fig_dir / "fig07_linear_open_full.png"))
     # Fig. 8: contact force
@@ -123,8 +123,8 @@ def draw(data_dir, fig_dir):
     out.append(save(fig, fig_dir / "fig08_contact_force.png"))
     figs = [("fig09_masswall_gap.png", "9", ["g-1.2_F0.01", "g-0.6_F0.01"], "gap"),
             ("fig10_masswall_preload.png", "10", ["g1_F0.01", "g0.4_F0.01"], "gap"),
-            ("fig11_masswall_force_g-0.6.png", "11", ["g-0.6_F0.01", "g-0.6_F0.001"], "F"),
-            ("fig12_masswall_force_g-1.2.png", "12", ["g-1.2_F0.01", "g-1.2_F0.03"], "F")]
+            ("fig11_masswall_force_g-0.6.png", "11", ["g-0.6_F0.01", "g-0.6_F0.001"], "Fa"),
+            ("fig12_masswall_force_g-1.2.png", "12", ["g-1.2_F0.01", "g-1.2_F0.03"], "Fa")]
     for name, num, cases, vary in figs:
         out.append(frc_figure(data_dir, fig_dir, name, pair_title(data_dir, num, cases, vary), cases, vary))
     out += time_figures(data_dir, fig_dir, "g-1.5_F0.01_F01", 13,

@@ -25,9 +25,9 @@ def figures(rows):
 
 def short_name(rows, labels, base):
     """File name part: what the figure varies against the first figure's loading
-    (force amplitude Fp, mean force Fm), then its gaps (m = minus, p = plus)."""
+    (force amplitude Fa_1, mean force F0), then its gaps (m = minus, p = plus)."""
     r = rows[labels[0]]
-    topic = ("force_" if r["Fp"] != base["Fp"] else "") + ("mean_" if r["Fm"] != base["Fm"] else "")
+    topic = ("force_" if r["Fa_1"] != base["Fa_1"] else "") + ("mean_" if r["F0"] != base["F0"] else "")
     gaps = "_".join(("m%g" % -rows[lb]["gap"]) if rows[lb]["gap"] < 0 else ("p%g" % rows[lb]["gap"]) for lb in labels)
     return topic + "gap_" + gaps
 
@@ -54,7 +54,7 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
         fig, (ax, axz) = plt.subplots(1, 2, figsize=(10.5, 5.0), gridspec_kw={"width_ratios": [2, 1]})
     else:
         fig, ax = plt.subplots(figsize=(7.2, 5.0))
-    title = ["Fig. %d: $F_m$ = %g N, $F_p$ = %g N (HB, H = %d)" % (num, rows[0]["Fm"], rows[0]["Fp"], p["H"])]
+    title = ["Fig. %d: $F_0$ = %g N, $F_{a,1}$ = %g N (HB, H = %d)" % (num, rows[0]["F0"], rows[0]["Fa_1"], p["H"])]
     zoom = None
     for n, (lb, r) in enumerate(zip(labels, rows)):
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
@@ -107,41 +107,41 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
 
 
 def validation_map(data_dir, fig_dir, k):
-    """k: the spring between the masses [N/m], for the static penetration s = g + Fm/k."""
+    """k: the spring between the masses [N/m], for the static penetration s = g + F0/k."""
     v = read_csv(data_dir / "classifier_validation.csv")
     fig, axes = plt.subplots(2, 2, figsize=(9.5, 7.0), sharex=True)
     style = {"type1_open": ("C0", "o", "type 1 predicted (never in contact)"),
              "type2_full": ("C2", "s", "type 2 predicted (always in contact)"),
              "intermittent": ("C3", "D", "intermittent predicted")}
-    combos = sorted(set(zip(v["Fm"], v["Fp"])))   # the grid's (Fm, Fp) pairs
-    for ax, (Fm, Fp) in zip(axes.flat, combos):
-        idx = [i for i in range(len(v["Fm"])) if v["Fm"][i] == Fm and v["Fp"][i] == Fp]
-        levels = sorted(set(round(v["gap"][i] + Fm / k, 9) for i in idx))
+    combos = sorted(set(zip(v["F0"], v["Fa_1"])))   # the grid's (F0, Fa_1) pairs
+    for ax, (F0, Fa_1) in zip(axes.flat, combos):
+        idx = [i for i in range(len(v["F0"])) if v["F0"][i] == F0 and v["Fa_1"][i] == Fa_1]
+        levels = sorted(set(round(v["gap"][i] + F0 / k, 9) for i in idx))
         row = {lv: j for j, lv in enumerate(levels)}   # one row per static penetration s (evenly spaced rows)
         for key, (c, m, lab) in style.items():
-            pts = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["prediction"][i] == key]
+            pts = [(v["omega"][i], row[round(v["gap"][i] + F0 / k, 9)]) for i in idx if v["prediction"][i] == key]
             if pts:
                 ax.plot(*zip(*pts), ls="none", marker=m, color=c, ms=4, label=lab)
-        co = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["verdict"][i] == "agree_coexisting"]
+        co = [(v["omega"][i], row[round(v["gap"][i] + F0 / k, 9)]) for i in idx if v["verdict"][i] == "agree_coexisting"]
         if co:
             ax.plot(*zip(*co), ls="none", marker="o", mfc="none", mec="k", ms=9,
                     label="agrees, + coexisting intermittent HB solutions")
-        bad = [(v["omega"][i], row[round(v["gap"][i] + Fm / k, 9)]) for i in idx if v["verdict"][i] in ("disagree", "no_solution")]
+        bad = [(v["omega"][i], row[round(v["gap"][i] + F0 / k, 9)]) for i in idx if v["verdict"][i] in ("disagree", "no_solution")]
         if bad:
             ax.plot(*zip(*bad), ls="none", marker="x", color="m", ms=10, mew=2, label="disagrees")
         ax.axhline(sum(1 for lv in levels if lv < 0) - 0.5, color="0.5", lw=0.8)
         ax.set_yticks(range(len(levels)))
         ax.set_yticklabels(["%g" % lv for lv in levels], fontsize=7)
-        ax.set_title(r"$F_m$ = %g N, $F_p$ = %g N" % (Fm, Fp))
+        ax.set_title(r"$F_0$ = %g N, $F_{a,1}$ = %g N" % (F0, Fa_1))
         ax.set_ylabel(r"$s = g + F_m/k$ [m]")
     for ax in axes[1]:
         ax.set_xlabel(r"$\Omega$ [rad/s]")
-    n = len(v["Fm"])
+    n = len(v["F0"])
     agree = sum(1 for x in v["verdict"] if x == "agree")
     co = sum(1 for x in v["verdict"] if x == "agree_coexisting")
     dis = n - agree - co
     fig.suptitle("Supplement: classifier vs every harmonic-balance solution at each grid point\n"
-                 "rows: static penetration with the contact open, s = g + Fm/k (s < 0: type 1 candidate, s > 0: type 2)\n"
+                 "rows: static penetration with the contact open, s = g + F0/k (s < 0: type 1 candidate, s > 0: type 2)\n"
                  "%d points: %d agree, %d agree with a coexisting intermittent solution, %d disagree"
                  % (n, agree, co, dis), fontsize=10)
     h, lab = axes[0, 0].get_legend_handles_labels()

@@ -750,7 +750,7 @@ void Methods::unscaled_newton(Run& run) const {
 // multiplier of the reference orbit.
 void Methods::grazing(Run& run) const {
   const double w = 0.8, F_graze = 0.6 * std::abs(std::complex<double>(1 - w * w, 0.01 * w));
-  Table t({"F", "contact_rad", "x_max_ref", "err_hb_exact", "err_hb_sampled", "err_ti", "floquet_modulus",
+  Table t({"Fa", "contact_rad", "x_max_ref", "err_hb_exact", "err_hb_sampled", "err_ti", "floquet_modulus",
            "err_hb_corrected"});
   TimeIntegrationOptions tight, loose;
   tight.rel_tol = tight.abs_tol = cmp_.ti_ref_tol;

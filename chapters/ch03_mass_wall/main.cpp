@@ -2,7 +2,7 @@
 // ch03_mass_wall: a mass against a wall (thesis ch. 3, Figs. 7-18)
 // ===========================================================================
 //
-//     m x'' + c x' + k x + max( kc (g + x), 0 ) = F0 + F cos(w t)
+//     m x'' + c x' + k x + max( kc (g + x), 0 ) = F0 + Fa cos(omega t)
 //
 // g < 0 is a clearance (the mass touches the wall when x > -g), g > 0 a preload
 // (pressed against the wall at x = 0); the contact law and its sign convention
@@ -15,7 +15,7 @@
 // Sample runs:
 //   build/bin/ch03_mass_wall                                    every figure's data
 //   build/bin/ch03_mass_wall --case quick --out /tmp/q          the regression subset
-//   build/bin/ch03_mass_wall --case own --set gap=-0.8 --set F=0.02 --out /tmp/mine
+//   build/bin/ch03_mass_wall --case own --set gap=-0.8 --set Fa=0.02 --out /tmp/mine
 //   build/bin/ch03_mass_wall --case g-0.6_F0.01 --set H=20      one curve of the table
 // ===========================================================================
 #include <cmath>
@@ -47,7 +47,7 @@ struct Oscillator {
 };
 struct Loading {
   double gap = -0.6;  // g [m]: < 0 clearance, > 0 preload
-  double F = 0.01;    // harmonic force amplitude [N]
+  double Fa = 0.01;   // harmonic force amplitude [N] (the thesis' F)
   double F0 = 0.0;    // static force [N]
 };
 
@@ -109,7 +109,8 @@ MassAgainstWall::MassAgainstWall(Study& study) {
   P.add("kc", &osc_.kc, "N/m", "contact stiffness", Range::nonnegative());
   P.group("own case (--case own)", true);
   P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload", Range::between(-1e6, 1e6));
-  P.add("F", &own_.F, "N", "harmonic force amplitude", Range::between(-1e12, 1e12));
+  P.add("Fa", &own_.Fa, "N", "harmonic force amplitude (the thesis' F)", Range::between(-1e12, 1e12));
+  P.renamed("F", "Fa");
   P.add("F0", &own_.F0, "N", "static force", Range::between(-1e12, 1e12));
   add_solver_parameters(P, sol_, 1);
   register_cases(study, kCases);
@@ -133,7 +134,7 @@ HarmonicBalance MassAgainstWall::model(const Loading& l, const SolverSettings& s
   LinearSystem sys{MatrixXd::Constant(1, 1, osc_.m), MatrixXd::Constant(1, 1, osc_.c),
                    MatrixXd::Constant(1, 1, osc_.k)};
   UnilateralContact wall{kX, osc_.kc, l.gap, {}};
-  Excitation f{VectorXd::Constant(1, l.F0), VectorXd::Constant(1, l.F), VectorXd::Zero(1)};
+  Excitation f{VectorXd::Constant(1, l.F0), VectorXd::Constant(1, l.Fa), VectorXd::Zero(1)};
   return HarmonicBalance(sys, {wall}, f, s.H, s.N, contact_quadrature(s));
 }
 
@@ -144,7 +145,7 @@ void MassAgainstWall::natural_frequencies(Run& run) const {
   LinearSystem full = open;
   full.K(0, 0) += osc_.kc;
   Table t({"omega", "x_open", "x_full"});
-  const Eigen::VectorXcd F = Eigen::VectorXcd::Constant(1, kCases.front().load.F);
+  const Eigen::VectorXcd F = Eigen::VectorXcd::Constant(1, kCases.front().load.Fa);
   for (int i = 0; i <= 600; ++i) {
     const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 600.0;
     t.add_row({w, std::abs(frequency_response(open, F, w)[0]), std::abs(frequency_response(full, F, w)[0])});
@@ -167,7 +168,7 @@ void MassAgainstWall::contact_force_law(Run& run) const {
 
 // Step 3 (Figs. 9-18): one continuation per case of the table.
 void MassAgainstWall::frequency_responses(Run& run) const {
-  Table index({"label", "figure", "gap", "F", "F0", "points", "folds", "rejected_steps", "complete"});
+  Table index({"label", "figure", "gap", "Fa", "F0", "points", "folds", "rejected_steps", "complete"});
   Table marks({"label", "mark", "omega", "x_max", "contact"});
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
@@ -175,7 +176,7 @@ void MassAgainstWall::frequency_responses(Run& run) const {
     const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
     run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kX));
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
-    index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.F, cs.load.F0, long(c.branch.points.size()),
+    index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.Fa, cs.load.F0, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
     if (measures(cs, Measure::time_marks)) time_histories(run, cs, hb, c, marks);
@@ -186,7 +187,7 @@ void MassAgainstWall::frequency_responses(Run& run) const {
 
 // The key numbers a case measures: contact onset / separation along the rising
 // branch (checked against the closed-form linear FRF), the fold count, and the
-// open resonance amplitude F/(c w) at w = sqrt(k/m) by Newton at that omega.
+// open resonance amplitude Fa/(c omega) at omega = sqrt(k/m) by Newton at that omega.
 void MassAgainstWall::measure(Run& run, const Case& cs, const HarmonicBalance& hb,
                               const FrequencyCurve& c) const {
   KeyNumbers& key = run.key_numbers();
@@ -295,7 +296,7 @@ void MassAgainstWall::own_case(Run& run) const {
 int main(int argc, char** argv) {
   Study study("ch03_mass_wall",
               "ch03_mass_wall: a mass against a wall (thesis ch. 3, Figs. 7-18)\n"
-              "  m x'' + c x' + k x + max(kc (g + x), 0) = F0 + F cos(w t),  g < 0 clearance, g > 0 preload");
+              "  m x'' + c x' + k x + max(kc (g + x), 0) = F0 + Fa cos(omega t),  g < 0 clearance, g > 0 preload");
   MassAgainstWall chapter(study);
   return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

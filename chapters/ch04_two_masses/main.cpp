@@ -2,8 +2,8 @@
 // ch04_two_masses: two masses that can touch each other (thesis ch. 4, Figs. 20-23)
 // ===========================================================================
 //
-//     m x1'' + c11 x1' + k x1 + Fc = F01 + F1 cos(w t)
-//     m x2'' + c22 x2' + k x2 - Fc = F02 + F2 cos(w t)     Fc = max( kc (g + x1 - x2), 0 )
+//     m x1'' + c11 x1' + k x1 + Fc = F0_1 + Fa_1 cos(omega t)
+//     m x2'' + c22 x2' + k x2 - Fc = F0_2 + Fa_2 cos(omega t)     Fc = max( kc (g + x1 - x2), 0 )
 //
 // i.e. M x'' + C x' + K x + w Fc = f0 + f cos(w t) with the contact normal w = [1, -1]:
 // the masses touch when the relative displacement d = x1 - x2 exceeds -g (g < 0 a
@@ -11,7 +11,7 @@
 // (+x) (library sign convention, README "Conventions"). Each mass is tied to ground by
 // k; Rayleigh damping C = alpha M + beta K with K the support springs (thesis §4).
 // With equal masses and supports s = (x1 + x2)/2 never strains the contact and d obeys
-// the mass-against-wall oscillator of ch. 3 (contact 2 kc, force F1 - F2): chapter README.
+// the mass-against-wall oscillator of ch. 3 (contact 2 kc, force Fa_1 - Fa_2): chapter README.
 //
 // The steps, in order (chapter README "Steps"): normal_modes, frequency_responses (per
 // case: its curves and what the case table says it measures: deviation_from_linear,
@@ -20,7 +20,7 @@
 // Sample runs:
 //   build/bin/ch04_two_masses                                  every figure's data
 //   build/bin/ch04_two_masses --case quick --out /tmp/q        the regression subset
-//   build/bin/ch04_two_masses --case own --set gap=-0.02 --set F1=0.05 --out /tmp/mine
+//   build/bin/ch04_two_masses --case own --set gap=-0.02 --set Fa_1=0.05 --out /tmp/mine
 //   build/bin/ch04_two_masses --case g-0.005 --set H=20        one curve of the table
 // ===========================================================================
 #include <cmath>
@@ -54,10 +54,10 @@ struct TwoMasses {
 };
 struct Loading {
   double gap = -0.005;  // g [m]: < 0 clearance, > 0 preload
-  double F1 = 0.025;    // harmonic force on mass 1 [N]
-  double F2 = 0.02;     // harmonic force on mass 2 [N]
-  double F01 = 0.0;     // static force on mass 1 [N]
-  double F02 = 0.0;     // static force on mass 2 [N]
+  double Fa_1 = 0.025;  // harmonic force amplitude on mass 1 [N] (the thesis' F1)
+  double Fa_2 = 0.02;   // harmonic force amplitude on mass 2 [N] (the thesis' F2)
+  double F0_1 = 0.0;    // static force on mass 1 [N]
+  double F0_2 = 0.0;    // static force on mass 2 [N]
 };
 struct Checks {
   int check_points = 8; // HB vs time-integration comparisons
@@ -79,7 +79,7 @@ struct Case {
   std::vector<Measure> measures;
 };
 
-// The thesis' cases (Figs. 20-23): F1 = 0.025 N, F2 = 0.02 N, four gaps.
+// The thesis' cases (Figs. 20-23): Fa_1 = 0.025 N, Fa_2 = 0.02 N (its F1, F2), four gaps.
 const std::vector<Case> kCases = {
     {"g-0.5", "20", {-0.5, 0.025, 0.02, 0.0, 0.0}, true, {Measure::open_linear}},
     {"g-0.005", "21", {-0.005, 0.025, 0.02, 0.0, 0.0}, true, {Measure::onset_and_peak, Measure::time_integration}},
@@ -131,10 +131,14 @@ TwoMassesChapter::TwoMassesChapter(Study& study) {
   P.renamed("beta", "rayleigh_beta");
   P.group("own case (--case own)", true);
   P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload");
-  P.add("F1", &own_.F1, "N", "harmonic force on mass 1");
-  P.add("F2", &own_.F2, "N", "harmonic force on mass 2");
-  P.add("F01", &own_.F01, "N", "static force on mass 1");
-  P.add("F02", &own_.F02, "N", "static force on mass 2");
+  P.add("Fa_1", &own_.Fa_1, "N", "harmonic force amplitude on mass 1 (the thesis' F1)");
+  P.add("Fa_2", &own_.Fa_2, "N", "harmonic force amplitude on mass 2 (the thesis' F2)");
+  P.add("F0_1", &own_.F0_1, "N", "static force on mass 1");
+  P.add("F0_2", &own_.F0_2, "N", "static force on mass 2");
+  P.renamed("F1", "Fa_1");
+  P.renamed("F2", "Fa_2");
+  P.renamed("F01", "F0_1");
+  P.renamed("F02", "F0_2");
   sol_.omega_min = 1.0;   // the thesis gives no range: 1-4 rad/s holds both natural frequencies
   sol_.omega_max = 4.0;
   add_solver_parameters(P, sol_, 2);
@@ -157,7 +161,7 @@ LinearSystem TwoMassesChapter::open_system() const {
 
 HarmonicBalance TwoMassesChapter::model(const Loading& l) const {
   UnilateralContact contact{kNormal, sys_.kc, l.gap, {}};
-  Excitation f{Vector2d(l.F01, l.F02), Vector2d(l.F1, l.F2), VectorXd::Zero(2)};
+  Excitation f{Vector2d(l.F0_1, l.F0_2), Vector2d(l.Fa_1, l.Fa_2), VectorXd::Zero(2)};
   return HarmonicBalance(open_system(), {contact}, f, sol_.H, sol_.N, contact_quadrature(sol_));
 }
 
@@ -198,7 +202,7 @@ void TwoMassesChapter::normal_modes(Run& run) const {
 // Step 2 (Figs. 20-23): one continuation per case of the table, its contact-state
 // counts, and what the case measures.
 void TwoMassesChapter::frequency_responses(Run& run) const {
-  Table index({"label", "figure", "gap", "F1", "F2", "F01", "F02", "points", "folds", "rejected_steps",
+  Table index({"label", "figure", "gap", "Fa_1", "Fa_2", "F0_1", "F0_2", "points", "folds", "rejected_steps",
                "intermittent_points", "full_points"});
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
@@ -213,7 +217,7 @@ void TwoMassesChapter::frequency_responses(Run& run) const {
       n.full += s == ContactState::full;
     }
     const Loading& l = cs.load;
-    index.add_row({cs.label, cs.figure, l.gap, l.F1, l.F2, l.F01, l.F02, long(c.branch.points.size()),
+    index.add_row({cs.label, cs.figure, l.gap, l.Fa_1, l.Fa_2, l.F0_1, l.F0_2, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), n.intermittent, n.full});
     measure(run, cs, hb, c, n);
   }

@@ -5,16 +5,16 @@
 // Two masses m1, m2 joined by a linear spring k and a damper c (always acting) and a
 // one-sided contact spring kc on delta = x1 - x2, contact force max(kc (g + delta), 0)
 // (g < 0 a clearance, g > 0 a preload; library sign convention, README "Conventions").
-// Mass 1 carries Fm + Fp cos(W t), mass 2 carries -Fm. Multiplying the equation of
+// Mass 1 carries F0 + Fa_1 cos(W t), mass 2 carries -F0. Multiplying the equation of
 // mass 1 by m2, that of mass 2 by m1 and subtracting (thesis §5):
 //
-//     M delta'' + c delta' + k delta + max(kc (g + delta), 0) = Fm + (M/m1) Fp cos(W t),
+//     M delta'' + c delta' + k delta + max(kc (g + delta), 0) = F0 + (M/m1) Fa_1 cos(W t),
 //     M = m1 m2 / (m1 + m2).
 //
 // The regime classifier (thesis §5, rebuilt from the two linear solutions: chapter README
 // "The regime classifier"): with static part dm and first-harmonic amplitude dp,
-//   open:   dm_o = Fm/k,                 dp_o = Fa / |k - M W^2 + i c W|
-//   closed: dm_c = (Fm - kc g)/(k + kc), dp_c = Fa / |k + kc - M W^2 + i c W|,  Fa = (M/m1) Fp,
+//   open:   dm_o = F0/k,                 dp_o = Fa / |k - M W^2 + i c W|
+//   closed: dm_c = (F0 - kc g)/(k + kc), dp_c = Fa / |k + kc - M W^2 + i c W|,  Fa = (M/m1) Fa_1,
 //   type 1 (never in contact) iff g + dm_o + dp_o <= 0, type 2 (always) iff g + dm_c - dp_c >= 0,
 //   otherwise intermittent.
 //
@@ -26,7 +26,7 @@
 // Sample runs:
 //   build/bin/ch05_comparin_singh                                  every figure's data and check
 //   build/bin/ch05_comparin_singh --case quick --out /tmp/q        the regression subset
-//   build/bin/ch05_comparin_singh --case own --set gap=-2 --set Fp=0.1 --out /tmp/mine
+//   build/bin/ch05_comparin_singh --case own --set gap=-2 --set Fa_1=0.1 --out /tmp/mine
 //   build/bin/ch05_comparin_singh --case fig26_g-1 --set H=20      one curve of the table
 // ===========================================================================
 #include <algorithm>
@@ -55,20 +55,20 @@ namespace {
 
 // --- parameters: one struct per concern, thesis defaults (§5.1 table) --------
 struct Pair {
-  double m1 = 2.0;    // mass 1 (carries Fm + Fp cos Wt) [kg]
-  double m2 = 2.0;    // mass 2 (carries -Fm) [kg]
+  double m1 = 2.0;    // mass 1 (carries F0 + Fa_1 cos Wt) [kg]
+  double m2 = 2.0;    // mass 2 (carries -F0) [kg]
   double k = 1.0;     // linear spring between the masses [N/m]
   double kc = 1.0;    // contact stiffness [N/m]
   double c = 0.01;    // viscous damper between the masses [N s/m]
   double M() const { return m1 * m2 / (m1 + m2); }
 };
 struct Loading {
-  double Fm = 4.1;    // mean force (on mass 1, minus on mass 2) [N]
-  double Fp = 0.05;   // harmonic force amplitude on mass 1 [N]
+  double F0 = 4.1;    // mean force (on mass 1, minus on mass 2) [N]
+  double Fa_1 = 0.05; // harmonic force amplitude on mass 1 [N] (the thesis' Fp)
   double gap = -1.0;  // g [m]: < 0 clearance, > 0 preload
 };
 struct Validation {
-  int grid_omegas = 25;         // frequencies per (g, Fm, Fp) combination
+  int grid_omegas = 25;         // frequencies per (g, F0, Fa_1) combination
   double grid_omega_min = 0.8;  // [rad/s] validation frequencies (inside the sweep range)
   double grid_omega_max = 1.6;  // [rad/s]
   int ti_points = 6;            // HB vs time integration points
@@ -107,8 +107,8 @@ const std::vector<Case> kCases = {
 // The loading of the checks: Fig. 26, g = -1 m, full and intermittent contact.
 const Loading kCheckedLoad{4.1, 0.05, -1.0};
 
-// The classifier validation grid: Fm x Fp x static penetrations s = g + Fm/k spanning
-// the open / closed resonance amplitudes of the two Fp levels (quick: 4 of the 12).
+// The classifier validation grid: F0 x Fa_1 x static penetrations s = g + F0/k spanning
+// the open / closed resonance amplitudes of the two Fa_1 levels (quick: 4 of the 12).
 struct Penetration {
   double s;     // [m]
   bool quick;   // in the regression subset
@@ -146,9 +146,9 @@ ContactState regime_state(Regime r) {
 struct Classifier {
   Pair p;
   Loading l;
-  double Fa() const { return p.M() / p.m1 * l.Fp; }
-  double dm_open() const { return l.Fm / p.k; }
-  double dm_closed() const { return (l.Fm - p.kc * l.gap) / (p.k + p.kc); }
+  double Fa() const { return p.M() / p.m1 * l.Fa_1; }
+  double dm_open() const { return l.F0 / p.k; }
+  double dm_closed() const { return (l.F0 - p.kc * l.gap) / (p.k + p.kc); }
   double dp(double K, double w) const { return Fa() / std::abs(std::complex<double>(K - p.M() * w * w, p.c * w)); }
   double dp_open(double w) const { return dp(p.k, w); }
   double dp_closed(double w) const { return dp(p.k + p.kc, w); }
@@ -175,7 +175,7 @@ struct Classifier {
     std::sort(out.begin(), out.end());
     return out;
   }
-  // The predicted intermittent interval, closed form. s = g + Fm/k < 0: only type 1 can
+  // The predicted intermittent interval, closed form. s = g + F0/k < 0: only type 1 can
   // hold (g + dm_c has the sign of s), intermittent where dp_o > -s; s > 0: only type 2,
   // intermittent where dp_c > g + dm_c; s = 0: intermittent at every W.
   std::vector<double> intermittent_bounds() const {
@@ -316,18 +316,20 @@ class ComparinSingh {
 ComparinSingh::ComparinSingh(Study& study) {
   ParameterSet& P = study.parameters();
   P.group("impact pair");
-  P.add("m1", &pair_.m1, "kg", "mass 1 (carries Fm + Fp cos Wt)", Range::mass());
-  P.add("m2", &pair_.m2, "kg", "mass 2 (carries -Fm)", Range::mass());
+  P.add("m1", &pair_.m1, "kg", "mass 1 (carries F0 + Fa_1 cos Wt)", Range::mass());
+  P.add("m2", &pair_.m2, "kg", "mass 2 (carries -F0)", Range::mass());
   P.add("k", &pair_.k, "N/m", "linear spring between the masses", Range::positive());
   P.add("kc", &pair_.kc, "N/m", "contact stiffness", Range::nonnegative());
   P.add("c", &pair_.c, "N s/m", "viscous damper between the masses", Range::positive());
   P.group("own case (--case own)", true);
-  P.add("Fm", &own_.Fm, "N", "mean force (on mass 1, minus on mass 2)");
-  P.add("Fp", &own_.Fp, "N", "harmonic force amplitude on mass 1", Range::positive());
+  P.add("F0", &own_.F0, "N", "mean force (on mass 1, minus on mass 2; the thesis' Fm)");
+  P.add("Fa_1", &own_.Fa_1, "N", "harmonic force amplitude on mass 1", Range::positive());
+  P.renamed("Fm", "F0");
+  P.renamed("Fp", "Fa_1");
   P.add("gap", &own_.gap, "m", "g: < 0 clearance, > 0 preload");
   add_solver_parameters(P, sol_, 1);
   P.group("checks");
-  P.add("grid_omegas", &val_.grid_omegas, "-", "validation frequencies per (g, Fm, Fp)", Range::between(1, 1000));
+  P.add("grid_omegas", &val_.grid_omegas, "-", "validation frequencies per (g, F0, Fa_1)", Range::between(1, 1000));
   P.add("grid_wmin", &val_.grid_omega_min, "rad/s", "lowest validation frequency", Range::positive());
   P.add("grid_wmax", &val_.grid_omega_max, "rad/s", "highest validation frequency", Range::positive());
   P.add("ti_points", &val_.ti_points, "-", "HB vs time-integration comparison points", Range::between(1, 50));
@@ -355,19 +357,19 @@ HarmonicBalance ComparinSingh::model(const Loading& l, int H, int N) const {
   LinearSystem sys{MatrixXd::Constant(1, 1, pair_.M()), MatrixXd::Constant(1, 1, pair_.c),
                    MatrixXd::Constant(1, 1, pair_.k)};
   UnilateralContact contact{kDelta, pair_.kc, l.gap, {}};
-  Excitation f{VectorXd::Constant(1, l.Fm), VectorXd::Constant(1, pair_.M() / pair_.m1 * l.Fp), VectorXd::Zero(1)};
+  Excitation f{VectorXd::Constant(1, l.F0), VectorXd::Constant(1, pair_.M() / pair_.m1 * l.Fa_1), VectorXd::Zero(1)};
   return HarmonicBalance(sys, {contact}, f, H, N, contact_quadrature(sol_));
 }
 
 // The original two-mass system (thesis §5, before the reduction), as a model the library's
 // time integrator can run: M = diag(m1, m2), spring k and damper c between the masses,
-// contact on x1 - x2, mean forces +Fm / -Fm, Fp on mass 1. (Its stiffness matrix is
+// contact on x1 - x2, mean forces +F0 / -F0, Fa_1 on mass 1. (Its stiffness matrix is
 // singular - a free rigid-body mode - so it is only integrated in time, never solved by HB.)
 HarmonicBalance ComparinSingh::two_mass_model(const Loading& l) const {
   const Eigen::Vector2d w(1.0, -1.0);
   const MatrixXd M = Eigen::Vector2d(pair_.m1, pair_.m2).asDiagonal();
   LinearSystem sys{M, pair_.c * w * w.transpose(), pair_.k * w * w.transpose()};
-  Excitation f{Eigen::Vector2d(l.Fm, -l.Fm), Eigen::Vector2d(l.Fp, 0.0), VectorXd::Zero(2)};
+  Excitation f{Eigen::Vector2d(l.F0, -l.F0), Eigen::Vector2d(l.Fa_1, 0.0), VectorXd::Zero(2)};
   return HarmonicBalance(sys, {UnilateralContact{w, pair_.kc, l.gap, {}}}, f, 1);
 }
 
@@ -393,7 +395,7 @@ void ComparinSingh::reduction(Run& run) const {
 // Step 2 (Figs. 25-30): one continuation per case of the table, the classifier's
 // prediction beside it, and whether the branch visits exactly the predicted states.
 void ComparinSingh::thesis_cases(Run& run) const {
-  Table index({"label", "figure", "Fm", "Fp", "gap", "static_penetration_open", "prediction", "intermittent_from",
+  Table index({"label", "figure", "F0", "Fa_1", "gap", "static_penetration_open", "prediction", "intermittent_from",
                "intermittent_to", "hb_states", "points", "folds", "rejected_steps", "failures"});
   long failures = 0, mismatches = 0;
   for (const auto& cs : kCases) {
@@ -411,7 +413,7 @@ void ComparinSingh::thesis_cases(Run& run) const {
     const auto b = cls.intermittent_bounds();
     const std::string prediction = cls.describe(sol_.omega_min, sol_.omega_max);
     const Loading& l = cs.load;
-    index.add_row({cs.label, cs.figure, l.Fm, l.Fp, l.gap, l.gap + cls.dm_open(), prediction,
+    index.add_row({cs.label, cs.figure, l.F0, l.Fa_1, l.gap, l.gap + cls.dm_open(), prediction,
                    b.size() == 2 ? bound_cell(b[0]) : Table::Cell(std::string()),
                    b.size() == 2 ? bound_cell(b[1]) : Table::Cell(std::string()), state_list(seen),
                    long(c.branch.points.size()), long(c.branch.folds.size()), long(c.branch.rejected_steps),
@@ -452,16 +454,16 @@ void ComparinSingh::measure(Run& run, const Case& cs, const HarmonicBalance& hb,
 }
 
 // Step 3: the classifier against the contact state of every HB solution on a
-// (Fm, Fp, s, W) grid.
+// (F0, Fa_1, s, W) grid.
 void ComparinSingh::classifier_validation(Run& run) const {
-  Table t({"Fm", "Fp", "gap", "omega", "prediction", "n_solutions", "hb_states", "hb_stable", "verdict",
+  Table t({"F0", "Fa_1", "gap", "omega", "prediction", "n_solutions", "hb_states", "hb_stable", "verdict",
            "open_margin", "closed_margin", "newton_failures"});
   GridTally n;
   run.timed("classifier validation", [&] {
-    for (double Fm : kGridFm)
-      for (double Fp : kGridFp)
+    for (double F0 : kGridFm)
+      for (double Fa_1 : kGridFp)
         for (const auto& pen : kPenetrations)
-          if (!run.quick() || pen.quick) validate_loading(Loading{Fm, Fp, pen.s - Fm / pair_.k}, t, n);
+          if (!run.quick() || pen.quick) validate_loading(Loading{F0, Fa_1, pen.s - F0 / pair_.k}, t, n);
   });
   run.write("classifier_validation.csv", t);
   KeyNumbers& key = run.key_numbers();
@@ -478,10 +480,10 @@ void ComparinSingh::classifier_validation(Run& run) const {
           std::to_string(n.disagree) + " disagree");
 }
 
-// One (Fm, Fp, g) of the grid: continue it, then judge every grid frequency.
+// One (F0, Fa_1, g) of the grid: continue it, then judge every grid frequency.
 void ComparinSingh::validate_loading(const Loading& l, Table& t, GridTally& n) const {
   const HarmonicBalance hb = model(l, sol_.H, sol_.N);
-  const std::string label = "grid_Fm" + fmt(l.Fm) + "_Fp" + fmt(l.Fp) + "_g" + fmt(l.gap);
+  const std::string label = "grid_Fm" + fmt(l.F0) + "_Fp" + fmt(l.Fa_1) + "_g" + fmt(l.gap);
   const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol_), label), label);
   const Classifier cls{pair_, l};
   for (int j = 0; j < val_.grid_omegas; ++j) {
@@ -496,13 +498,13 @@ void ComparinSingh::validate_loading(const Loading& l, Table& t, GridTally& n) c
     n.coexisting += v.verdict == "agree_coexisting";
     n.disagree += v.verdict == "disagree" || v.verdict == "no_solution";
     n.newton_failures += v.newton_failures;
-    t.add_row({l.Fm, l.Fp, l.gap, w, std::string(regime_name(r)), v.solutions, v.states, v.stable, v.verdict,
+    t.add_row({l.F0, l.Fa_1, l.gap, w, std::string(regime_name(r)), v.solutions, v.states, v.stable, v.verdict,
                cls.open_margin(w), cls.closed_margin(w), v.newton_failures});
   }
 }
 
 // Step 4 (thesis §5): describing functions N_fm, N_fp by GSL quadrature against the
-// H = 1 HB branch of the checked loading: dm N_fm = Fm and |N_fp - M W^2 + i c W| dp = Fa.
+// H = 1 HB branch of the checked loading: dm N_fm = F0 and |N_fp - M W^2 + i c W| dp = Fa.
 void ComparinSingh::describing_function_check(Run& run) const {
   const Loading& l = kCheckedLoad;
   const HarmonicBalance hb = model(l, 1, 0);
@@ -510,7 +512,7 @@ void ComparinSingh::describing_function_check(Run& run) const {
     return require_complete(sweep_frequency(hb, sweep_options(sol_), "describing_function_H1"), "describing_function_H1");
   });
   const PiecewiseLinearForce f{pair_.k, pair_.kc, l.gap};
-  const double M = pair_.M(), Fa = M / pair_.m1 * l.Fp;
+  const double M = pair_.M(), Fa = M / pair_.m1 * l.Fa_1;
   Table t({"omega", "dm", "dp", "contact_angle", "N_fm", "N_fp", "rel_err_static", "rel_err_dynamic",
            "quadrature_error", "stable"});
   double worst = 0.0, worst_intermittent = 0.0;
@@ -519,7 +521,7 @@ void ComparinSingh::describing_function_check(Run& run) const {
     const auto& p = c.branch.points[i];
     const double dm = p.X[hb.index(0, 0)], dp = std::hypot(p.X[hb.index(1, 0)], p.X[hb.index(2, 0)]);
     const DescribingFunction d = describing_function(f, dm, dp);
-    const double e0 = std::fabs(dm * d.N_fm - l.Fm) / l.Fm;
+    const double e0 = std::fabs(dm * d.N_fm - l.F0) / l.F0;
     const double e1 =
         std::fabs(std::abs(std::complex<double>(d.N_fp - M * p.omega * p.omega, pair_.c * p.omega)) * dp - Fa) / Fa;
     worst = std::max({worst, e0, e1});
@@ -553,7 +555,7 @@ void ComparinSingh::time_integration_check(Run& run) const {
 
 // The reduction: integrate the TWO-mass equations (GSL rk8pd) from the state the reduced
 // HB solution implies until periodic, and compare max(x1 - x2) over the last period with
-// the reduced HB x_max. The centre of mass moves as xc = -Fp cos(Wt) / ((m1 + m2) W^2)
+// the reduced HB x_max. The centre of mass moves as xc = -Fa_1 cos(Wt) / ((m1 + m2) W^2)
 // (the mean forces cancel), so x1 = xc + m2/(m1+m2) delta, x2 = xc - m1/(m1+m2) delta.
 void ComparinSingh::two_mass_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
   const Loading& l = kCheckedLoad;
@@ -572,7 +574,7 @@ void ComparinSingh::two_mass_check(Run& run, const HarmonicBalance& hb, const Fr
     const double w = Pts[best].omega, mt = pair_.m1 + pair_.m2;
     VectorXd d0, dv0;
     hb_initial_state(hb, Pts[best].X, w, d0, dv0);
-    const double xc = -l.Fp / (mt * w * w);
+    const double xc = -l.Fa_1 / (mt * w * w);
     const Eigen::Vector2d x0(xc + pair_.m2 / mt * d0[0], xc - pair_.m1 / mt * d0[0]);
     const Eigen::Vector2d v0(pair_.m2 / mt * dv0[0], -pair_.m1 / mt * dv0[0]);
     const SteadyState ss = ti2.steady_state(x0, v0, w, opt);
@@ -609,7 +611,7 @@ void ComparinSingh::own_case(Run& run) const {
 int main(int argc, char** argv) {
   Study study("ch05_comparin_singh",
               "ch05_comparin_singh: the Comparin & Singh impact pair reduced to delta = x1 - x2 (thesis ch. 5, Figs. 25-30)\n"
-              "  M delta'' + c delta' + k delta + max(kc (g + delta), 0) = Fm + (M/m1) Fp cos(W t),  M = m1 m2/(m1 + m2)");
+              "  M delta'' + c delta' + k delta + max(kc (g + delta), 0) = F0 + (M/m1) Fa_1 cos(W t),  M = m1 m2/(m1 + m2)");
   ComparinSingh chapter(study);
   return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

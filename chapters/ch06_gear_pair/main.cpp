@@ -56,7 +56,7 @@ namespace {
 struct MeshStudy {
   double kc_alt = 5e2;         // the printed mesh stiffness, the other curves of the kc study [N/m]
   double ds_max_alt = 0.02;    // arc-length step cap of the kc_alt curves (no folds there)
-  int damping_on_mesh = 0;     // 1: beta multiplies K + Kc
+  bool damping_on_mesh = false;   // beta multiplies K + Kc (else K, the supports, only)
 };
 struct Loading {
   double Fi = -1e6;            // static torque on gear 1 [N m] (gear 2: -Fi rb2/rb1)
@@ -188,7 +188,7 @@ GearPairChapter::GearPairChapter(Study& study) {
   P.group("kc study");
   P.add("kc_alt", &mesh_.kc_alt, "N/m", "the other mesh stiffness (cases *_kc_alt)", kStiffness);
   P.add("ds_max_alt", &mesh_.ds_max_alt, "-", "arc-length step cap of the kc_alt curves", Range::between(1e-6, 1.0));
-  P.add("damp_mesh", &mesh_.damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only", Range::between(0, 1));
+  P.add("damp_mesh", &mesh_.damping_on_mesh, "-", "1: beta multiplies K + Kc, 0: K (supports) only");
   P.group("own case (--case own)", true);
   P.add("Fi", &own_.Fi, "N m", "static torque on gear 1; gear 2 gets -Fi rb2/rb1", Range::between(-1e12, 1e12));
   P.add("Fa", &own_.Fa, "N, N m", "harmonic amplitude of F = Fa [1,0,1,1,0,1]", Range::between(0.0, 1e12));
@@ -231,7 +231,7 @@ void GearPairChapter::run(Run& run) {
 GearPairParameters GearPairChapter::gear(Mesh m) const {
   GearPairParameters g = gear_;
   g.kc = m == Mesh::kc ? gear_.kc : mesh_.kc_alt;
-  g.damping_on_mesh = mesh_.damping_on_mesh != 0;
+  g.damping_on_mesh = mesh_.damping_on_mesh;
   return g;
 }
 

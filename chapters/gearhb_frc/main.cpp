@@ -42,7 +42,7 @@ class FrequencyResponseFromFile {
 
  private:
   Study& study_;
-  int plot_ = 1;
+  bool plot_ = true;
   ModelFile model_;
 
   void read_model();

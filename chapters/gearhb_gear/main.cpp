@@ -115,7 +115,7 @@ class GearPairFromFile {
 
  private:
   Study& study_;
-  int plot_ = 1;
+  bool plot_ = true;
   GearFile file_;
 
   // The pair stiffness of model.method: empty for the beams (mesh_phases' own), the

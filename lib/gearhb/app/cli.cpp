@@ -45,6 +45,12 @@ void ParameterSet::add(const std::string& name, int* value, const std::string& u
   entries_.push_back({name, unit, help, nullptr, value, nullptr, double(*value), "", range, group_, group_own_});
 }
 
+void ParameterSet::add(const std::string& name, bool* value, const std::string& unit, const std::string& help) {
+  Entry e{name, unit, help, nullptr, nullptr, nullptr, *value ? 1.0 : 0.0, "", Range::between(0, 1), group_, group_own_};
+  e.b = value;
+  entries_.push_back(e);
+}
+
 void ParameterSet::add(const std::string& name, std::string* value, const std::string& unit,
                        const std::string& help) {
   Entry e{name, unit, help, nullptr, nullptr, value, 0.0, *value, Range::any(), group_, group_own_};
@@ -111,6 +117,15 @@ void ParameterSet::set(const std::string& assignment) {
     overridden_.push_back(key);
     return;
   }
+  if (e->b) {   // true | false, or a number equal to 1 or 0 (a study writes 0.0)
+    const bool word = text == "true" || text == "false";
+    const double v = word ? (text == "true" ? 1.0 : 0.0) : parse_decimal(text, "parameter '" + key + "'");
+    if (v != 0.0 && v != 1.0)
+      throw UsageError("parameter '" + key + "': '" + text + "' is not a flag (1, 0, true or false)");
+    *e->b = v == 1.0;
+    overridden_.push_back(key);
+    return;
+  }
   const double v = parse_decimal(text, "parameter '" + key + "'");
   if (e->i) {
     if (v != std::floor(v)) throw UsageError("parameter '" + key + "': '" + text + "' is not a whole number");
@@ -124,7 +139,7 @@ void ParameterSet::set(const std::string& assignment) {
 
 void ParameterSet::validate() const {
   for (const auto& e : entries_) {
-    if (e.s) continue;   // strings are checked by the chapter
+    if (e.s || e.b) continue;   // strings are checked by the chapter; a flag is 0 or 1 by construction
     const double v = e.d ? *e.d : double(*e.i);
     const std::string why = e.range.violation(v);
     if (!why.empty()) {
@@ -171,7 +186,9 @@ std::string ParameterSet::help_text() const {
     }
     os << "  " << std::left << std::setw(int(wn) + 2) << e.name << std::setw(int(wd) + 2) << defaults[i]
        << std::setw(int(wu) + 2) << (e.unit.empty() ? "-" : e.unit) << e.help;
-    if (e.range.kind != Range::Kind::any) {
+    if (e.b) {
+      os << " (flag: 1 or 0)";
+    } else if (e.range.kind != Range::Kind::any) {
       std::ostringstream r;
       r << std::setprecision(12);
       switch (e.range.kind) {
@@ -191,6 +208,7 @@ nlohmann::json ParameterSet::to_json() const {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& e : entries_) {
     if (e.s) j[e.name] = {{"value", *e.s}, {"unit", e.unit}};
+    else if (e.b) j[e.name] = {{"value", *e.b}, {"unit", e.unit}};
     else if (e.d) j[e.name] = {{"value", *e.d}, {"unit", e.unit}};
     else j[e.name] = {{"value", *e.i}, {"unit", e.unit}};
   }

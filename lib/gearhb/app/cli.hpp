@@ -49,6 +49,8 @@ class ParameterSet {
            const std::string& help, Range range = Range::any());
   void add(const std::string& name, int* value, const std::string& unit,
            const std::string& help, Range range = Range::any());
+  // Bind an on/off flag: --set name=1 | 0 | true | false (echoed as true / false).
+  void add(const std::string& name, bool* value, const std::string& unit, const std::string& help);
   // Bind a string (e.g. a file path): any text is accepted by --set, empty
   // included; checking it (does the file exist, is it valid) is the chapter's
   // cross-parameter check.
@@ -93,6 +95,7 @@ class ParameterSet {
     Range range;
     std::string group;
     bool own_case = false;
+    bool* b = nullptr;   // a flag (set after the aggregate initialisation)
   };
   const Entry* find(const std::string& name) const;
   std::vector<Entry> entries_;

@@ -59,7 +59,7 @@ void check_potential_energy(GearFile& f, const std::string& path, const PathOfCo
   const ContactRadii highest = contact_radii(f.pair.gear1, f.pair.gear2, p, p.AE);
   const double r_low[2] = {lowest.r1, highest.r2}, r_tip[2] = {highest.r1, lowest.r2};
   for (int i = 0; i < 2; ++i) {
-    const std::string w = "gears." + std::to_string(i);
+    const std::string prefix = "gears." + std::to_string(i);
     const GearGeometry& G = *geo[i];
     PeGear& g = f.pe[i];
     g.teeth = G.teeth;
@@ -74,17 +74,17 @@ void check_potential_energy(GearFile& f, const std::string& path, const PathOfCo
     g.poisson_ratio = f.gear[i].poisson_ratio;
     g.bore_radius = f.gear[i].rim_radius;
     if (!(g.bore_radius > 0.0))
-      fail_key(path, w + ".rim_radius",
+      fail_key(path, prefix + ".rim_radius",
                "is needed by method potential_energy (the bore radius of Sainsot's fillet foundation) and is missing or 0");
     for (double r_c : {r_low[i], r_tip[i]}) {
       PeToothCompliance c;
       try {
         c = pe_tooth_compliance(g, r_c);
       } catch (const std::exception& e) {
-        fail_key(path, w + ".z", std::string("is not a tooth of the potential-energy method: ") + e.what());
+        fail_key(path, prefix + ".z", std::string("is not a tooth of the potential-energy method: ") + e.what());
       }
       if (!(c.fillet > 0.0) || !std::isfinite(c.total()))
-        fail_key(path, w + ".rim_radius", "takes Sainsot's fillet fit so far out of its range (h_f = rf / rim_radius = " +
+        fail_key(path, prefix + ".rim_radius", "takes Sainsot's fillet fit so far out of its range (h_f = rf / rim_radius = " +
                                               std::to_string(G.root_radius() / g.bore_radius) +
                                               ", fitted 1.4..7) that it gives no positive compliance");
     }
@@ -126,12 +126,12 @@ void read_dynamics(GearFile& f, const json& j, const std::string& path) {
   d.iso_quality_grade =
       dyn.contains("iso_quality_grade") ? json_whole(dyn["iso_quality_grade"], path, "dynamics.iso_quality_grade", 1, 12) : 5;
   for (int i = 0; i < 2; ++i) {
-    const std::string w = "gears." + std::to_string(i);
-    if (!(f.gear[i].inertia > 0.0)) fail_key(path, w + ".inertia", "is needed by the dynamics (speed) and is missing or 0");
+    const std::string prefix = "gears." + std::to_string(i);
+    if (!(f.gear[i].inertia > 0.0)) fail_key(path, prefix + ".inertia", "is needed by the dynamics (speed) and is missing or 0");
     if (d.dofs == MeshDofs::bearings && !(f.gear[i].mass > 0.0))
-      fail_key(path, w + ".mass", "is needed by dynamics.model six_dof and is missing or 0");
+      fail_key(path, prefix + ".mass", "is needed by dynamics.model six_dof and is missing or 0");
     if (d.dofs == MeshDofs::bearings && !(f.gear[i].bearing_stiffness > 0.0))
-      fail_key(path, w + ".bearing_stiffness", "is needed by dynamics.model six_dof and is missing or 0");
+      fail_key(path, prefix + ".bearing_stiffness", "is needed by dynamics.model six_dof and is missing or 0");
   }
 }
 
@@ -181,31 +181,31 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     ReliefShape shape = ReliefShape::linear;
   } relief[2];
   for (int i = 0; i < 2; ++i) {
-    const std::string w = "gears." + std::to_string(i);
+    const std::string prefix = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
-    only_keys(g, path, w, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief", "mass",
+    only_keys(g, path, prefix, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief", "mass",
                            "bearing_stiffness"});
     GearGeometry& G = *geo[i];
     G.module = m;
     G.pressure_angle_deg = alpha;
     G.addendum = ha * m;
     G.dedendum = hf * m;
-    if (!g.contains("z")) fail_key(path, w + ".z", "is missing");
-    G.teeth = json_whole(g["z"], path, w + ".z", 5, 1000);
-    G.profile_shift = r.optional(g, w, "x", 0.0, -1.0, 2.0, "[-1, 2]");
-    G.face_width = r.number(g, w, "b", 1e-4, 10.0, "[1e-4, 10] m");
-    *E[i] = r.number(g, w, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
-    f.gear[i].poisson_ratio = r.optional(g, w, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
-    f.gear[i].inertia = r.optional(g, w, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
-    f.gear[i].rim_radius = r.optional(g, w, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
-    f.gear[i].mass = r.optional(g, w, "mass", 0.0, 0.0, 1e6, "[0, 1e6] kg (0: not given)");
-    f.gear[i].bearing_stiffness = r.optional(g, w, "bearing_stiffness", 0.0, 0.0, 1e13, "[0, 1e13] N/m (0: not given)");
-    f.gear[i].thickness_allowance = r.optional(g, w, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
+    if (!g.contains("z")) fail_key(path, prefix + ".z", "is missing");
+    G.teeth = json_whole(g["z"], path, prefix + ".z", 5, 1000);
+    G.profile_shift = r.optional(g, prefix, "x", 0.0, -1.0, 2.0, "[-1, 2]");
+    G.face_width = r.number(g, prefix, "b", 1e-4, 10.0, "[1e-4, 10] m");
+    *E[i] = r.number(g, prefix, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
+    f.gear[i].poisson_ratio = r.optional(g, prefix, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
+    f.gear[i].inertia = r.optional(g, prefix, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
+    f.gear[i].rim_radius = r.optional(g, prefix, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
+    f.gear[i].mass = r.optional(g, prefix, "mass", 0.0, 0.0, 1e6, "[0, 1e6] kg (0: not given)");
+    f.gear[i].bearing_stiffness = r.optional(g, prefix, "bearing_stiffness", 0.0, 0.0, 1e13, "[0, 1e13] N/m (0: not given)");
+    f.gear[i].thickness_allowance = r.optional(g, prefix, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
-      fail_key(path, w + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
-    if (G.root_radius() <= 0.0) fail_key(path, w + ".z", "gives no root circle (rf <= 0)");
+      fail_key(path, prefix + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
+    if (G.root_radius() <= 0.0) fail_key(path, prefix + ".z", "gives no root circle (rf <= 0)");
     if (g.contains("tip_relief")) {
-      const std::string t = w + ".tip_relief";
+      const std::string t = prefix + ".tip_relief";
       const json& tr = g["tip_relief"];
       only_keys(tr, path, t, {"amount", "start", "shape"});
       relief[i].amount = r.number(tr, t, "amount", 0.0, 1e-3, "[0, 1e-3] m");

@@ -81,6 +81,13 @@ int json_whole(const json& j, const std::string& file, const std::string& key, i
   return int(v);
 }
 
+bool json_flag(const json& j, const std::string& file, const std::string& key) {
+  if (j.is_boolean()) return j.get<bool>();
+  if (!j.is_number() || !(j.get<double>() == 0.0 || j.get<double>() == 1.0))
+    fail_key(file, key, "must be a flag: true, false, 1 or 0");
+  return j.get<double>() == 1.0;
+}
+
 void only_keys(const json& j, const std::string& file, const std::string& where,
                const std::vector<std::string>& allowed) {
   if (!j.is_object()) fail_key(file, where, "must be an object");

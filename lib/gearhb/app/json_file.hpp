@@ -27,6 +27,8 @@ void apply_override(nlohmann::json& root, const std::string& file, const std::st
 double json_number(const nlohmann::json& j, const std::string& file, const std::string& key);
 // A whole number in [lo, hi].
 int json_whole(const nlohmann::json& j, const std::string& file, const std::string& key, int lo, int hi);
+// An on/off flag: true / false, or 1 / 0.
+bool json_flag(const nlohmann::json& j, const std::string& file, const std::string& key);
 // An object whose keys are all in `allowed` (`where` is its dotted path, "" the root).
 void only_keys(const nlohmann::json& j, const std::string& file, const std::string& where,
                const std::vector<std::string>& allowed);

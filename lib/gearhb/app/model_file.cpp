@@ -164,7 +164,7 @@ void read_settings(const json& j, const std::string& path, int n, ModelFile& m) 
   m.forcing = {force("static"), force("cos"), force("sin")};
   const json solver = j.value("solver", json::object());
   only_keys(solver, path, "solver", {"exact_contact", "ds_max"});
-  if (solver.contains("exact_contact")) m.exact_contact = whole(solver["exact_contact"], path, "solver.exact_contact", 0, 1);
+  if (solver.contains("exact_contact")) m.exact_contact = json_flag(solver["exact_contact"], path, "solver.exact_contact");
   if (solver.contains("ds_max")) {
     m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
     if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
@@ -215,12 +215,12 @@ std::string model_file_help() {
          "  contacts[i].gap_file  optional CSV 'phase,gap' (one period, uniform phases from 0, gap [m])\n"
          "  contacts[i].kc_file   optional CSV 'phase,factor': a time-varying stiffness kc s(theta), s the\n"
          "                        factor's first H harmonics (> 0 over the period; e.g. a gear mesh's k(t) / kc)\n"
-         "  forcing.static/cos/sin  n numbers each: f0 + fc cos(w t) + fs sin(w t) [N]\n"
+         "  forcing.static/cos/sin  n numbers each: f0 + fc cos(omega t) + fs sin(omega t) [N]\n"
          "  harmonics             H >= 1\n"
          "  samples               AFT samples per period (0 = 4(2H+1); else >= 4H+2)\n"
          "  omega.from, omega.to  frequency range [rad/s], swept from 'from' to 'to'\n"
          "  output.direction      n numbers: the plotted coordinate q'x\n"
-         "  solver.exact_contact  1 exact projection of the contact law (default), 0 sampled AFT\n"
+         "  solver.exact_contact  flag (true | false, or 1 | 0): exact projection of the contact law (default), else sampled AFT\n"
          "  solver.ds_max         largest arc-length step (default 0.02)\n"
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"

@@ -51,7 +51,7 @@ struct ModelFile {
   int harmonics = 0, samples = 0;
   double omega_from = 0.0, omega_to = 0.0;   // [rad/s]
   Eigen::VectorXd output;                    // the plotted coordinate
-  int exact_contact = 1;
+  bool exact_contact = true;
   double ds_max = 0.02;
   nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
 

@@ -9,10 +9,8 @@ void add_solver_parameters(ParameterSet& params, SolverSettings& s, int dofs) {
   params.add("H", &s.H, "-", "number of harmonics (time per point grows as H^3: README 'Cost of a run')", Range::between(1, max_harmonics(dofs)));
   params.add("N", &s.N, "-", "AFT time samples per period (0 = 4(2H+1); else >= 4H+2)",
              Range::between(0, max_aft_samples));
-  params.add("exact_contact", &s.exact_contact, "-", "1 exact projection of the contact law, 0 sampled AFT",
-             Range::between(0, 1));
-  params.add("natural", &s.natural, "-", "1 natural continuation (stops at a fold), 0 arc-length",
-             Range::between(0, 1));
+  params.add("exact_contact", &s.exact_contact, "-", "1 exact projection of the contact law, 0 sampled AFT");
+  params.add("natural", &s.natural, "-", "1 natural continuation (stops at a fold), 0 arc-length");
   params.add("omega_min", &s.omega_min, "rad/s", "start of the frequency range", Range::positive());
   params.add("omega_max", &s.omega_max, "rad/s", "end of the frequency range", Range::positive());
   params.add("ds_max", &s.ds_max, "-", "largest arc-length step (scaled unknowns)", Range::between(1e-6, 1.0));
@@ -29,7 +27,7 @@ SweepOptions sweep_options(const SolverSettings& s) {
   SweepOptions o;
   o.omega_min = s.omega_min;
   o.omega_max = s.omega_max;
-  o.natural = s.natural != 0;
+  o.natural = s.natural;
   o.continuation.ds_max = s.ds_max;
   return o;
 }

@@ -19,8 +19,8 @@ namespace gearhb {
 struct SolverSettings {
   int H = 10;                // harmonics
   int N = 0;                 // AFT time samples per period (0 = 4 (2H+1))
-  int exact_contact = 1;     // 1 exact projection of the contact law, 0 sampled AFT
-  int natural = 0;           // 1 natural continuation (teaching: stops at a fold), 0 arc-length
+  bool exact_contact = true; // exact projection of the contact law, else sampled AFT
+  bool natural = false;      // natural continuation (teaching: stops at a fold), else arc-length
   double omega_min = 0.5;    // start of the frequency range [rad/s]
   double omega_max = 2.0;    // end of the frequency range [rad/s]
   double ds_max = 0.02;      // largest arc-length step (scaled)

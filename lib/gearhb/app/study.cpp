@@ -278,11 +278,11 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   return 0;
 }
 
-void file_program(Study& study, const std::string& what, int* plot, std::function<void()> read) {
+void file_program(Study& study, const std::string& what, bool* plot, std::function<void()> read) {
   ParameterSet& P = study.parameters();
   P.keep_unregistered();   // --set PATH=VALUE addresses the file
   P.group("program");
-  P.add("plot", plot, "-", "1 draw the figures into DIR (needs python3-matplotlib), 0 data only", Range::between(0, 1));
+  P.add("plot", plot, "-", "1 draw the figures into DIR (needs python3-matplotlib), 0 data only");
   study.positional(what);
   study.check([read = std::move(read)](const Selection&) { read(); });
 }

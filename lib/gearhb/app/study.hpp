@@ -124,7 +124,7 @@ class Study {
 // the file (ParameterSet::keep_unregistered), adds the `plot` switch (1 draw the
 // figures, 0 data only) and runs `read` among the study's checks, so a bad file
 // exits 2 before anything is written.
-void file_program(Study& study, const std::string& what, int* plot, std::function<void()> read);
+void file_program(Study& study, const std::string& what, bool* plot, std::function<void()> read);
 
 // Draw the figures of a run: /usr/bin/python3 SCRIPT STAGING (the script writes its
 // PNGs into the staging folder). Says `what` was not drawn when the script is empty
