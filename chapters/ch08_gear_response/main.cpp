@@ -34,6 +34,7 @@
 #include <vector>
 
 #include "gearhb/app/case_table.hpp"
+#include "gearhb/app/gear_tables.hpp"
 #include "gearhb/app/gear_mesh_parameters.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"

@@ -12,7 +12,6 @@
 
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
-#include "gearhb/gears/dte_response.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {
@@ -47,24 +46,6 @@ inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, SweepOpti
 inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, const SolverSettings& s,
                                   const std::string& label) {
   return timed_sweep(run, hb, sweep_options(s), label);
-}
-
-// The gear-mesh chapters' HB vs time-integration check of one curve
-// (dte_time_integration_check), timed as "time integration <label>", a failure named
-// by the label, its count and worst difference as key numbers ti_points_<label>,
-// ti_rms_rel_diff_<label>.
-inline DteTimeCheck timed_dte_time_check(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                         const FrequencyCurve& c) {
-  const DteTimeCheck chk = run.timed("time integration " + label, [&] {
-    try {
-      return dte_time_integration_check(hb, c);
-    } catch (const std::runtime_error& e) {
-      throw std::runtime_error(label + ": " + e.what());
-    }
-  });
-  run.key_numbers().add("ti_points_" + label, double(chk.rows.size()), "-");
-  run.key_numbers().add("ti_rms_rel_diff_" + label, chk.worst_rel_diff, "-");
-  return chk;
 }
 
 }  // namespace gearhb

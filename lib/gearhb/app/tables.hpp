@@ -9,7 +9,6 @@
 #include <Eigen/Dense>
 
 #include "gearhb/app/output.hpp"
-#include "gearhb/gears/dte_response.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
@@ -57,16 +56,4 @@ Table time_integration_table(const TimeIntegrationCheck& check);
 // The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: f_mesh_hz,
 // then the common columns of the mesh deflection.
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);
-// Contact-loss bands of labelled curves: label, band (1, 2, ...), f_lo_hz, f_hi_hz.
-Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>& reports);
-// HB vs time integration of labelled curves: label, f_mesh_hz, contact, x_rms_ac_hb,
-// x_rms_ac_ti, rel_diff, periods.
-Table dte_time_integration_table(const std::vector<std::pair<std::string, DteTimeCheck>>& checks);
-// The multipliers of a labelled curve against time integration (dte_floquet_check):
-// label, f_mesh_hz, contact, stable, modulus_variational (the curve's), modulus_time_integration, abs_diff.
-Table dte_floquet_table(const std::string& label, const DteFloquetCheck& check);
-// The linear closed-contact curve (dte_linear_rms) at `points` + 1 uniform omegas of
-// [omega_min, omega_max]: f_mesh_hz, x_rms_ac.
-Table linear_mesh_table(const DteGear& g, int H, double omega_min, double omega_max, int points = 800);
-
 }  // namespace gearhb
