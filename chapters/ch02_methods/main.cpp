@@ -3,12 +3,12 @@
 // (thesis ch. 2: harmonic balance §2.1, continuation §2.2, contact and AFT §2.3)
 // ===========================================================================
 //
-//     M x'' + C x' + K x + n max( kc (g(theta) + n' x), 0 ) = f0 + f cos(theta),  theta = w t
+//     M x'' + C x' + K x + n max( kc (g(theta) + n' x), 0 ) = f0 + f cos(theta),  theta = omega t
 //
 // Three scenes (the cases of this chapter):
-//   mass_wall   thesis ch. 3, g = -0.6 m, F = 0.01 N, w = 0.5 ... 2 rad/s (contact, two folds)
+//   mass_wall   thesis ch. 3, g = -0.6 m, Fa = 0.01 N, omega = 0.5 ... 2 rad/s (contact, two folds)
 //   nlvib_ex03  NLvib's example 03: two unit masses, chain springs [0 1 1], damping 0.03 K,
-//               0.1 cos on DOF 2, spring 100 behind a gap of 1 on DOF 1, w = 0.5 ... 0.8
+//               0.1 cos on DOF 2, spring 100 behind a gap of 1 on DOF 1, omega = 0.5 ... 0.8
 //   gear_300Nm  thesis ch. 8: the 1-DOF gear mesh at 300 N m driven by its STE (5 harmonics)
 // Each is solved on a fixed frequency grid by harmonic balance (exact contact, H = 1 ... 60;
 // sampled AFT, N = 2 ... 32 (2H+1)) and by direct time integration stepped up and down
@@ -280,10 +280,10 @@ HarmonicBalance Methods::gear(int H, int N, ContactQuadrature q) const {
 
 // --- step 1: the reference of a scene ------------------------------------------
 std::vector<double> Methods::grid(const Scene& sc) const {
-  std::vector<double> w;
+  std::vector<double> omegas;
   for (int i = 0; i < cmp_.grid_points; ++i)
-    w.push_back(sc.grid_min + (sc.grid_max - sc.grid_min) * (i + 0.5) / cmp_.grid_points);
-  return w;
+    omegas.push_back(sc.grid_min + (sc.grid_max - sc.grid_min) * (i + 0.5) / cmp_.grid_points);
+  return omegas;
 }
 
 SweepOptions Methods::hb_sweep(const Scene& sc) const {
@@ -576,18 +576,18 @@ void Methods::cost_growth(Run& run) const {
       fc[n - 1] = 0.1;
       const HarmonicBalance hb(LinearSystem{MatrixXd::Identity(n, n), 0.02 * K, K}, {UnilateralContact{e1, 10.0, -0.5, {}}},
                                Excitation{VectorXd::Zero(n), fc, VectorXd::Zero(n)}, H);
-      const double w = 0.3;
-      const Scaling sc = hb.scaling(0.5 * w, 2.0 * w);
-      const VectorXd X = hb.open_contact_solution(w) * 3.0;
+      const double omega = 0.3;
+      const Scaling sc = hb.scaling(0.5 * omega, 2.0 * omega);
+      const VectorXd X = hb.open_contact_solution(omega) * 3.0;
       const VectorXd border = VectorXd::Ones(hb.size() + 1);
       VectorXd R, dX, dRdw;
       MatrixXd J;
       const double dense = seconds_per_call([&] {
-        hb.evaluate(X, w, R, &J, nullptr);
+        hb.evaluate(X, omega, R, &J, nullptr);
         dX = J.partialPivLu().solve(R);
       });
       const double condensed = seconds_per_call([&] {
-        const auto lin = hb.linearize(X, w, sc, R, dRdw);
+        const auto lin = hb.linearize(X, omega, sc, R, dRdw);
         lin->solve_bordered(border, border, dX);
       });
       t.add_row({long(n), long(H), long(unknowns), dense, condensed});
@@ -709,13 +709,13 @@ void Methods::unscaled_newton(Run& run) const {
            "unscaled_residual_N", "solution_rel_diff"});
   long fail_scaled = 0, fail_unscaled = 0;
   for (int i = 0; i < charts_.newton_frequencies; ++i) {
-    const double w = sc.omega_min + (sc.omega_max - sc.omega_min) * (i + 0.5) / charts_.newton_frequencies;
-    VectorXd Xs = linear_first_guess(hb, w), Xu = Xs;
-    const NewtonReport rs = newton_solve(hb, Xs, w, scaled), ru = newton_solve(hb, Xu, w, none);
+    const double omega = sc.omega_min + (sc.omega_max - sc.omega_min) * (i + 0.5) / charts_.newton_frequencies;
+    VectorXd Xs = linear_first_guess(hb, omega), Xu = Xs;
+    const NewtonReport rs = newton_solve(hb, Xs, omega, scaled), ru = newton_solve(hb, Xu, omega, none);
     fail_scaled += !rs.converged;
     fail_unscaled += !ru.converged;
     const double diff = (Xu - Xs).lpNorm<Eigen::Infinity>() / Xs.lpNorm<Eigen::Infinity>();
-    t.add_row({w, long(rs.converged), long(rs.iterations), long(ru.converged), long(ru.iterations), ru.residual, diff});
+    t.add_row({omega, long(rs.converged), long(rs.iterations), long(ru.converged), long(ru.iterations), ru.residual, diff});
   }
   run.write("unscaled_newton.csv", t);
   KeyNumbers& key = run.key_numbers();
@@ -744,12 +744,12 @@ void Methods::unscaled_newton(Run& run) const {
 // --- failure 7: grazing -------------------------------------------------------------
 // Mass against the wall at omega = 0.8 rad/s (below resonance, one solution), force
 // amplitude F stepped through the value where the crest just touches the wall
-// (F_graze = |1 - w^2 + i 0.01 w| 0.6 for the linear open response). Reference:
+// (F_graze = |1 - omega^2 + i 0.01 omega| 0.6 for the linear open response). Reference:
 // GSL rk8pd at ti_ref_tol. Errors of x_max: HB exact (H = 10), HB sampled (H = 10,
 // N = 4(2H+1)), time integration (rk8pd 1e-6); the contact duration and the Floquet
 // multiplier of the reference orbit.
 void Methods::grazing(Run& run) const {
-  const double w = 0.8, F_graze = 0.6 * std::abs(std::complex<double>(1 - w * w, 0.01 * w));
+  const double omega = 0.8, F_graze = 0.6 * std::abs(std::complex<double>(1 - omega * omega, 0.01 * omega));
   Table t({"Fa", "contact_rad", "x_max_ref", "err_hb_exact", "err_hb_sampled", "err_ti", "floquet_modulus",
            "err_hb_corrected"});
   TimeIntegrationOptions tight, loose;
@@ -760,24 +760,24 @@ void Methods::grazing(Run& run) const {
     const double F = F_graze * (0.97 + 0.06 * i / (charts_.grazing_points - 1));
     const HarmonicBalance ex = wall(F, 10, 0, ContactQuadrature::exact), sa = wall(F, 10, 84, ContactQuadrature::sampled);
     const Scaling s = ex.scaling(0.5, 2.0);
-    VectorXd Xe = linear_first_guess(ex, w), Xs = Xe;
-    if (!newton_solve(ex, Xe, w, s).converged || !newton_solve(sa, Xs, w, s).converged)
+    VectorXd Xe = linear_first_guess(ex, omega), Xs = Xe;
+    if (!newton_solve(ex, Xe, omega, s).converged || !newton_solve(sa, Xs, omega, s).converged)
       throw std::runtime_error("grazing: Newton failed at F = " + std::to_string(F));
     VectorXd x0, v0;
-    hb_initial_state(ex, Xe, w, x0, v0);
+    hb_initial_state(ex, Xe, omega, x0, v0);
     tight.x_scale = loose.x_scale = s.x[0];
-    const auto ref = stepped_sweep(ex, {w}, vec({1.0}), tight, x0, v0).front();
-    const auto ti = stepped_sweep(ex, {w}, vec({1.0}), loose).front();
+    const auto ref = stepped_sweep(ex, {omega}, vec({1.0}), tight, x0, v0).front();
+    const auto ti = stepped_sweep(ex, {omega}, vec({1.0}), loose).front();
     const ResponseEvaluator ev(ex, vec({1.0})), evs(sa, vec({1.0}));
     const VectorXd uc = ex.penetration(Xe, 0);
     double width = 0.0;
     for (const auto& [lo, hi] : contact_intervals(uc, Aft(ex.harmonics()).to_time(uc))) width += hi - lo;
-    const FloquetResult fr = floquet_of_hb_orbit(ex, Xe, w, s.x[0]);
+    const FloquetResult fr = floquet_of_hb_orbit(ex, Xe, omega, s.x[0]);
     auto err = [&](double x) { return std::fabs(x - ref.x_max) / std::fabs(ref.x_max); };
     // HB H = 10 corrected on the exact flow: empty where the correction fails or is inconsistent
     double corrected = NAN;
     if (fr.corrected) {
-      const ExactOrbit o(ex, Xe, w, fr.x0, fr.v0);
+      const ExactOrbit o(ex, Xe, omega, fr.x0, fr.v0);
       if (o.consistent()) corrected = err(o.measures(vec({1.0})).x_max);
     }
     t.add_row({F, width, ref.x_max, err(ev.summarize(Xe).x_max), err(evs.summarize(Xs).x_max), err(ti.x_max),
@@ -799,7 +799,7 @@ HarmonicBalance Methods::wall(double F, int H, int N, ContactQuadrature q) const
 int main(int argc, char** argv) {
   Study study("ch02_methods",
               "ch02_methods: the method, speed against accuracy, and where each method fails (thesis ch. 2)\n"
-              "  M x'' + C x' + K x + n max(kc (g + n'x), 0) = f0 + f cos(w t): harmonic balance, continuation,\n"
+              "  M x'' + C x' + K x + n max(kc (g + n'x), 0) = f0 + f cos(omega t): harmonic balance, continuation,\n"
               "  time integration and stability on three scenes (mass against wall, NLvib ex. 03, gear at 300 N m)");
   Methods chapter(study);
   return study.run(argc, argv, [&](Run& run) { chapter.run(run); });

@@ -147,8 +147,8 @@ void MassAgainstWall::natural_frequencies(Run& run) const {
   Table t({"omega", "x_open", "x_full"});
   const Eigen::VectorXcd F = Eigen::VectorXcd::Constant(1, kCases.front().load.Fa);
   for (int i = 0; i <= 600; ++i) {
-    const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 600.0;
-    t.add_row({w, std::abs(frequency_response(open, F, w)[0]), std::abs(frequency_response(full, F, w)[0])});
+    const double omega = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 600.0;
+    t.add_row({omega, std::abs(frequency_response(open, F, omega)[0]), std::abs(frequency_response(full, F, omega)[0])});
   }
   run.write("fig07_linear.csv", t);
   run.key_numbers().add("omega_open", modal_analysis(open.M, open.K).omega[0], "rad/s");

@@ -5,7 +5,7 @@
 //     m x1'' + c11 x1' + k x1 + Fc = F0_1 + Fa_1 cos(omega t)
 //     m x2'' + c22 x2' + k x2 - Fc = F0_2 + Fa_2 cos(omega t)     Fc = max( kc (g + x1 - x2), 0 )
 //
-// i.e. M x'' + C x' + K x + w Fc = f0 + f cos(w t) with the contact normal w = [1, -1]:
+// i.e. M x'' + C x' + K x + n Fc = f0 + f cos(omega t) with the contact normal n = [1, -1]:
 // the masses touch when the relative displacement d = x1 - x2 exceeds -g (g < 0 a
 // clearance, g > 0 a preload); the contact pushes mass 1 back (-x) and mass 2 forward
 // (+x) (library sign convention, README "Conventions"). Each mass is tied to ground by
@@ -87,7 +87,7 @@ const std::vector<Case> kCases = {
     {"g0.6", "23", {0.6, 0.025, 0.02, 0.0, 0.0}, true, {Measure::closed_linear}},
 };
 
-const Vector2d kNormal(1.0, -1.0);   // d = x1 - x2 = w' x, the plotted coordinate
+const Vector2d kNormal(1.0, -1.0);   // d = x1 - x2 = n' x, the plotted coordinate
 
 struct ContactCounts {
   long intermittent = 0, full = 0;
@@ -177,7 +177,7 @@ void TwoMassesChapter::write_curves(Run& run, const HarmonicBalance& hb, const F
 }
 
 // Step 1 (thesis §4.1): natural frequencies and mass-normalised shapes, contact open and
-// closed; Phi' M Phi = I and Phi' K Phi = diag(w^2) are checked rather than assumed.
+// closed; Phi' M Phi = I and Phi' K Phi = diag(omega_i^2) are checked rather than assumed.
 void TwoMassesChapter::normal_modes(Run& run) const {
   const LinearSystem open = open_system();
   const MatrixXd Kc = sys_.kc * kNormal * kNormal.transpose();
@@ -259,7 +259,7 @@ double TwoMassesChapter::deviation_from_linear(const HarmonicBalance& hb, const 
   for (const auto& pt : c.branch.points) {
     const std::complex<double> d1 = kNormal.cast<std::complex<double>>().dot(frequency_response(sys, F, pt.omega));
     const VectorXd dc = hb.project(pt.X, kNormal);
-    // X = [a0, a1, b1, a2, b2, ...]: a1 = Re(Z), b1 = -Im(Z) for the response Re(Z e^{i w t}).
+    // X = [a0, a1, b1, a2, b2, ...]: a1 = Re(Z), b1 = -Im(Z) for the response Re(Z e^{i omega t}).
     const double higher = dc.size() > 3 ? dc.tail(dc.size() - 3).cwiseAbs().maxCoeff() : 0.0;
     const double err =
         std::max({std::fabs(dc[0] - d0), std::fabs(dc[1] - d1.real()), std::fabs(dc[2] + d1.imag()), higher});
@@ -313,7 +313,7 @@ void TwoMassesChapter::own_case(Run& run) const {
 int main(int argc, char** argv) {
   Study study("ch04_two_masses",
               "ch04_two_masses: two masses that can touch (thesis ch. 4, Figs. 20-23)\n"
-              "  m xi'' + C x' + k xi +- max(kc (g + x1 - x2), 0) = F0i + Fi cos(w t),  g < 0 clearance, g > 0 preload");
+              "  m xi'' + C x' + k xi +- max(kc (g + x1 - x2), 0) = F0_i + Fa_i cos(omega t),  g < 0 clearance, g > 0 preload");
   TwoMassesChapter chapter(study);
   return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

@@ -149,19 +149,19 @@ struct Classifier {
   double Fa() const { return p.M() / p.m1 * l.Fa_1; }
   double dm_open() const { return l.F0 / p.k; }
   double dm_closed() const { return (l.F0 - p.kc * l.gap) / (p.k + p.kc); }
-  double dp(double K, double w) const { return Fa() / std::abs(std::complex<double>(K - p.M() * w * w, p.c * w)); }
-  double dp_open(double w) const { return dp(p.k, w); }
-  double dp_closed(double w) const { return dp(p.k + p.kc, w); }
+  double dp(double K, double omega) const { return Fa() / std::abs(std::complex<double>(K - p.M() * omega * omega, p.c * omega)); }
+  double dp_open(double omega) const { return dp(p.k, omega); }
+  double dp_closed(double omega) const { return dp(p.k + p.kc, omega); }
   // Margins: type 1 holds iff open_margin >= 0, type 2 iff closed_margin >= 0.
-  double open_margin(double w) const { return -(l.gap + dm_open() + dp_open(w)); }
-  double closed_margin(double w) const { return l.gap + dm_closed() - dp_closed(w); }
-  Regime regime(double w) const {
-    if (open_margin(w) >= 0) return Regime::type1;
-    if (closed_margin(w) >= 0) return Regime::type2;
+  double open_margin(double omega) const { return -(l.gap + dm_open() + dp_open(omega)); }
+  double closed_margin(double omega) const { return l.gap + dm_closed() - dp_closed(omega); }
+  Regime regime(double omega) const {
+    if (open_margin(omega) >= 0) return Regime::type1;
+    if (closed_margin(omega) >= 0) return Regime::type2;
     return Regime::intermittent;
   }
   // Frequencies (closed form) where the linear amplitude dp with stiffness K equals A:
-  // M^2 w^4 - (2 K M - c^2) w^2 + K^2 - (Fa/A)^2 = 0. Returns the positive roots, sorted.
+  // M^2 omega^4 - (2 K M - c^2) omega^2 + K^2 - (Fa/A)^2 = 0. Returns the positive roots, sorted.
   std::vector<double> amplitude_crossings(double K, double A) const {
     std::vector<double> out;
     if (A <= 0) return out;
@@ -222,23 +222,23 @@ std::string state_list(const States& seen) {
   return out;
 }
 
-// Every harmonic-balance solution at frequency w on a continued branch: each crossing of
-// the branch with w, linearly interpolated and corrected by Newton at fixed w; duplicates
+// Every harmonic-balance solution at frequency omega on a continued branch: each crossing of
+// the branch with omega, linearly interpolated and corrected by Newton at fixed omega; duplicates
 // removed.
 struct Crossing {
   VectorXd X;
   bool converged = false;
 };
-std::vector<Crossing> solutions_at(const HarmonicBalance& hb, const FrequencyCurve& c, double w) {
+std::vector<Crossing> solutions_at(const HarmonicBalance& hb, const FrequencyCurve& c, double omega) {
   std::vector<Crossing> out;
   const auto& P = c.branch.points;
   for (std::size_t i = 1; i < P.size(); ++i) {
-    const double a = P[i - 1].omega - w, b = P[i].omega - w;
+    const double a = P[i - 1].omega - omega, b = P[i].omega - omega;
     if (a * b > 0 || (b == 0 && i + 1 < P.size())) continue;   // count an exact hit once
     const double t = a == b ? 0.0 : a / (a - b);
     Crossing cr;
     cr.X = P[i - 1].X + t * (P[i].X - P[i - 1].X);
-    cr.converged = newton_solve(hb, cr.X, w, c.scaling).converged;
+    cr.converged = newton_solve(hb, cr.X, omega, c.scaling).converged;
     bool dup = false;
     for (const auto& o : out)
       dup = dup || ((o.X - cr.X).cwiseQuotient(c.scaling.x).cwiseAbs().maxCoeff() < 1e-6);
@@ -247,13 +247,13 @@ std::vector<Crossing> solutions_at(const HarmonicBalance& hb, const FrequencyCur
   return out;
 }
 
-// Hill stability of a solution (X, w): the flag of the nearest branch point (scaled distance).
-bool stable_near(const FrequencyCurve& c, const VectorXd& X, double w) {
+// Hill stability of a solution (X, omega): the flag of the nearest branch point (scaled distance).
+bool stable_near(const FrequencyCurve& c, const VectorXd& X, double omega) {
   std::size_t best = 0;
   double dbest = INFINITY;
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     const double d = (c.branch.points[i].X - X).cwiseQuotient(c.scaling.x).norm() +
-                     std::fabs(c.branch.points[i].omega - w) / c.scaling.omega;
+                     std::fabs(c.branch.points[i].omega - omega) / c.scaling.omega;
     if (d < dbest) { dbest = d; best = i; }
   }
   return c.stable[best];
@@ -264,15 +264,15 @@ struct GridVerdict {
   long solutions = 0, newton_failures = 0;
   std::string states, stable, verdict;
 };
-GridVerdict judge(const HarmonicBalance& hb, const FrequencyCurve& c, double w, ContactState predicted) {
+GridVerdict judge(const HarmonicBalance& hb, const FrequencyCurve& c, double omega, ContactState predicted) {
   const ResponseEvaluator ev(hb, kDelta);
-  const auto sols = solutions_at(hb, c, w);
+  const auto sols = solutions_at(hb, c, omega);
   GridVerdict v;
   bool has_pred = false, all_pred = true;
   for (const auto& s : sols) {
     const ContactState st = ev.summarize(s.X).contact;
     v.states += (v.states.empty() ? "" : "+") + std::string(to_string(st));
-    v.stable += (v.stable.empty() ? "" : "+") + std::string(stable_near(c, s.X, w) ? "1" : "0");
+    v.stable += (v.stable.empty() ? "" : "+") + std::string(stable_near(c, s.X, omega) ? "1" : "0");
     has_pred = has_pred || st == predicted;
     all_pred = all_pred && st == predicted;
     v.newton_failures += !s.converged;
@@ -366,20 +366,20 @@ HarmonicBalance ComparinSingh::model(const Loading& l, int H, int N) const {
 // contact on x1 - x2, mean forces +F0 / -F0, Fa_1 on mass 1. (Its stiffness matrix is
 // singular - a free rigid-body mode - so it is only integrated in time, never solved by HB.)
 HarmonicBalance ComparinSingh::two_mass_model(const Loading& l) const {
-  const Eigen::Vector2d w(1.0, -1.0);
+  const Eigen::Vector2d n(1.0, -1.0);
   const MatrixXd M = Eigen::Vector2d(pair_.m1, pair_.m2).asDiagonal();
-  LinearSystem sys{M, pair_.c * w * w.transpose(), pair_.k * w * w.transpose()};
+  LinearSystem sys{M, pair_.c * n * n.transpose(), pair_.k * n * n.transpose()};
   Excitation f{Eigen::Vector2d(l.F0, -l.F0), Eigen::Vector2d(l.Fa_1, 0.0), VectorXd::Zero(2)};
-  return HarmonicBalance(sys, {UnilateralContact{w, pair_.kc, l.gap, {}}}, f, 1);
+  return HarmonicBalance(sys, {UnilateralContact{n, pair_.kc, l.gap, {}}}, f, 1);
 }
 
 // The classifier's linear amplitudes and regime vs W over the sweep range.
 void ComparinSingh::write_prediction(Run& run, const Classifier& cls, const std::string& file) const {
   Table pr({"omega", "dm_open", "dp_open", "dm_closed", "dp_closed", "regime"});
   for (int i = 0; i <= 400; ++i) {
-    const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 400.0;
-    pr.add_row({w, cls.dm_open(), cls.dp_open(w), cls.dm_closed(), cls.dp_closed(w),
-                std::string(regime_name(cls.regime(w)))});
+    const double omega = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 400.0;
+    pr.add_row({omega, cls.dm_open(), cls.dp_open(omega), cls.dm_closed(), cls.dp_closed(omega),
+                std::string(regime_name(cls.regime(omega)))});
   }
   run.write(file, pr);
 }
@@ -487,19 +487,19 @@ void ComparinSingh::validate_loading(const Loading& l, Table& t, GridTally& n) c
   const FrequencyCurve c = require_complete(sweep_frequency(hb, sweep_options(sol_), label), label);
   const Classifier cls{pair_, l};
   for (int j = 0; j < val_.grid_omegas; ++j) {
-    const double w = val_.grid_omegas == 1 ? 0.5 * (val_.grid_omega_min + val_.grid_omega_max)
+    const double omega = val_.grid_omegas == 1 ? 0.5 * (val_.grid_omega_min + val_.grid_omega_max)
                                            : val_.grid_omega_min + (val_.grid_omega_max - val_.grid_omega_min) *
                                                                        j / (val_.grid_omegas - 1);
-    const Regime r = cls.regime(w);
-    const GridVerdict v = judge(hb, c, w, regime_state(r));
+    const Regime r = cls.regime(omega);
+    const GridVerdict v = judge(hb, c, omega, regime_state(r));
     ++n.points;
     ++n.predicted[int(r)];
     n.agree += v.verdict == "agree";
     n.coexisting += v.verdict == "agree_coexisting";
     n.disagree += v.verdict == "disagree" || v.verdict == "no_solution";
     n.newton_failures += v.newton_failures;
-    t.add_row({l.F0, l.Fa_1, l.gap, w, std::string(regime_name(r)), v.solutions, v.states, v.stable, v.verdict,
-               cls.open_margin(w), cls.closed_margin(w), v.newton_failures});
+    t.add_row({l.F0, l.Fa_1, l.gap, omega, std::string(regime_name(r)), v.solutions, v.states, v.stable, v.verdict,
+               cls.open_margin(omega), cls.closed_margin(omega), v.newton_failures});
   }
 }
 
@@ -571,21 +571,21 @@ void ComparinSingh::two_mass_check(Run& run, const HarmonicBalance& hb, const Fr
     std::size_t best = 0;   // the stable point closest to wt on the branch
     for (std::size_t i = 0; i < Pts.size(); ++i)
       if (c.stable[i] && std::fabs(Pts[i].omega - wt) < std::fabs(Pts[best].omega - wt)) best = i;
-    const double w = Pts[best].omega, mt = pair_.m1 + pair_.m2;
+    const double omega = Pts[best].omega, mt = pair_.m1 + pair_.m2;
     VectorXd d0, dv0;
-    hb_initial_state(hb, Pts[best].X, w, d0, dv0);
-    const double xc = -l.Fa_1 / (mt * w * w);
+    hb_initial_state(hb, Pts[best].X, omega, d0, dv0);
+    const double xc = -l.Fa_1 / (mt * omega * omega);
     const Eigen::Vector2d x0(xc + pair_.m2 / mt * d0[0], xc - pair_.m1 / mt * d0[0]);
     const Eigen::Vector2d v0(pair_.m2 / mt * dv0[0], -pair_.m1 / mt * dv0[0]);
-    const SteadyState ss = ti2.steady_state(x0, v0, w, opt);
+    const SteadyState ss = ti2.steady_state(x0, v0, omega, opt);
     if (!ss.converged)
-      throw std::runtime_error("two-mass time integration did not become periodic at omega = " + fmt(w) +
+      throw std::runtime_error("two-mass time integration did not become periodic at omega = " + fmt(omega) +
                                " (mismatch " + fmt(ss.mismatch) + " after " + std::to_string(ss.periods) + " periods)");
     const double dmax = (ss.x.col(0) - ss.x.col(1)).maxCoeff();
     const ResponseSummary rs = ev.summarize(Pts[best].X);
     const double rel = std::fabs(rs.x_max - dmax) / std::fabs(dmax);
     worst = std::max(worst, rel);
-    t.add_row({w, rs.x_max, dmax, rel, long(ss.periods), std::string(to_string(rs.contact))});
+    t.add_row({omega, rs.x_max, dmax, rel, long(ss.periods), std::string(to_string(rs.contact))});
   }
   run.write("check_two_mass.csv", t);
   run.key_numbers().add("xmax_rel_diff_reduced_vs_two_mass", worst, "-");

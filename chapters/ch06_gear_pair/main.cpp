@@ -4,7 +4,7 @@
 // ===========================================================================
 //
 //     q = [x1, y1, th1, x2, y2, th2]
-//     M q'' + C q' + K q = F0 + F cos(w t) + T1 max(kc Delta, 0),   Delta = T2 q
+//     M q'' + C q' + K q = F0 + F cos(omega t) + T1 max(kc Delta, 0),   Delta = T2 q
 //     T2 = [cos a, -sin a, rb1, -cos a, sin a, -rb2],  T1 = -T2'
 //     closed mesh: K + Kc,  Kc = kc T2' T2;   C = alpha M + beta K (K: supports)
 //     F0 = [0, 0, Fi, 0, 0, -Fi rb2/rb1],  F = Fa [1, 0, 1, 1, 0, 1]
@@ -283,8 +283,9 @@ void GearPairChapter::linear_responses(Run& run) const {
     const Eigen::VectorXcd F = harmonic_shape(1e4).cast<std::complex<double>>();
     Table t({"omega", "delta_open", "delta_closed"});
     for (int i = 0; i <= 3000; ++i) {
-      const double w = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 3000.0;
-      t.add_row({w, std::abs(T2.dot(frequency_response(open, F, w))), std::abs(T2.dot(frequency_response(closed, F, w)))});
+      const double omega = sol_.omega_min + (sol_.omega_max - sol_.omega_min) * i / 3000.0;
+      t.add_row({omega, std::abs(T2.dot(frequency_response(open, F, omega))),
+                 std::abs(T2.dot(frequency_response(closed, F, omega)))});
     }
     run.write("linear_" + name(m) + ".csv", t);
   }
@@ -328,8 +329,8 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
   TransitionOptions to;
   to.corrector_tolerance = corrector_.tolerance;
   for (Measure m : cs.measures) {
-    const double w = first_transition(hb, c, m == Measure::separation ? opens_somewhere(hb) : touches_somewhere(hb), to);
-    if (std::isfinite(w)) run.key_numbers().add("first_change_omega_" + cs.label, w, "rad/s");
+    const double omega = first_transition(hb, c, m == Measure::separation ? opens_somewhere(hb) : touches_somewhere(hb), to);
+    if (std::isfinite(omega)) run.key_numbers().add("first_change_omega_" + cs.label, omega, "rad/s");
     else run.say(cs.label + ": the contact state never changes in the frequency range");
   }
 }
@@ -437,7 +438,7 @@ void GearPairChapter::own_case(Run& run) const {
 int main(int argc, char** argv) {
   Study study("ch06_gear_pair",
               "ch06_gear_pair: 6-DOF spur-gear pair (thesis ch. 6, Figs. 40-45)\n"
-              "  M q'' + C q' + K q = F0 + F cos(w t) + T1 max(kc T2 q, 0),  Delta = T2 q the mesh deflection");
+              "  M q'' + C q' + K q = F0 + F cos(omega t) + T1 max(kc T2 q, 0),  Delta = T2 q the mesh deflection");
   GearPairChapter chapter(study);
   return study.run(argc, argv, [&](Run& run) { chapter.run(run); });
 }

@@ -2,7 +2,7 @@
 // gearhb_frc: the frequency response of your own system, from a model file
 // ===========================================================================
 //
-//     M x'' + C x' + K x + sum_i d_i max(kc_i (g_i(theta) + d_i' x), 0) = f0 + fc cos(w t) + fs sin(w t)
+//     M x'' + C x' + K x + sum_i d_i max(kc_i (g_i(theta) + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)
 //
 // Any n-DOF system with unilateral contacts, described in JSON (model_file.hpp,
 // README "Your own system from a file"); no C++ needed. The steps: read_model
@@ -175,7 +175,7 @@ void FrequencyResponseFromFile::draw(Run& run) const {
 int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
-              "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(w t) + fs sin(w t)\n"
+              "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
               "Writes DIR/frc.csv, bifurcations.csv, modes.csv, key_numbers.json, params.json (the resolved model),\n"
               "timings.csv (wall time per step) and frc.png.\n\n" +
                   model_file_help());

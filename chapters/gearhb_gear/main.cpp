@@ -393,10 +393,10 @@ void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size
   const auto& P = r.curve.branch.points;
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
   const double wn = 2.0 * M_PI * closed_contact_frequencies(r.mesh, MeshDofs::one_dof, {}).front();
-  for (double w : {0.5 * wn, r.summary.dte_rms_peak_omega, 1.5 * wn}) {
+  for (double omega : {0.5 * wn, r.summary.dte_rms_peak_omega, 1.5 * wn}) {
     std::size_t best = P.size();
     for (std::size_t k = 0; k < P.size(); ++k)
-      if (r.curve.stable[k] && (best == P.size() || std::fabs(P[k].omega - w) < std::fabs(P[best].omega - w))) best = k;
+      if (r.curve.stable[k] && (best == P.size() || std::fabs(P[k].omega - omega) < std::fabs(P[best].omega - omega))) best = k;
     if (best == P.size()) continue;
     const Eigen::VectorXd c = hb.project(P[best].X, q);
     for (int k = 1; k <= hb.harmonics(); ++k)

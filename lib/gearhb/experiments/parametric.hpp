@@ -13,8 +13,6 @@
 //    harmonics (what Hill's method sees: k enters only through its harmonics up
 //    to 2H, by the product matrix of fourier.hpp). hill_stability (stability.hpp)
 //    takes it as it takes a contact problem's.
-//  - mathieu_transition_a: the closed-form transition curves of Mathieu's chart
-//    for small q (Abramowitz & Stegun 20.2.25, to O(q^4) or O(q^5)).
 //  - meissner_trace: the exact trace of Meissner's monodromy matrix (two
 //    constant-stiffness half periods, each a closed-form transfer matrix);
 //    stable iff |trace| < 2 (det = 1 without damping).
