@@ -81,14 +81,13 @@ def frc_figure(data_dir, fig_dir, num, short, labels, cases, omega_open, omega_c
         ax.annotate(r"$\omega_{%s}$ = %.3f" % (name, w), (w, 0.12), xycoords=("data", "axes fraction"),
                     fontsize=7, rotation=90, xytext=(2, 0), textcoords="offset points", color="0.35")
     ax.set_xlim(p["omega_min"], p["omega_max"])
-    lo, hi = ax.get_ylim()
-    ax.set_ylim(lo, hi + 0.18 * (hi - lo))   # room for the legend above the curves
     rug_room(ax, len(labels))
     ax.set_xlabel(r"forcing frequency $\Omega$ [rad/s]")
     ax.set_ylabel(r"relative displacement $\delta = x_1 - x_2$ [m]")
     ax.set_title("\n".join(title), fontsize=8.5)
     h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + legend_styles(), loc="upper right", ncol=2, fontsize=7, framealpha=0.95)
+    ax.legend(handles=h + legend_styles(), loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=7,
+              frameon=False)   # below the axes: never over a curve
     if zoom is not None:
         d, c, g, r = zoom
         draw_case(axz, d, c, None)
@@ -133,7 +132,7 @@ def validation_map(data_dir, fig_dir, k):
         ax.set_yticks(range(len(levels)))
         ax.set_yticklabels(["%g" % lv for lv in levels], fontsize=7)
         ax.set_title(r"$F_0$ = %g N, $F_{a,1}$ = %g N" % (F0, Fa_1))
-        ax.set_ylabel(r"$s = g + F_m/k$ [m]")
+        ax.set_ylabel(r"$s = g + F_0/k$ [m]")
     for ax in axes[1]:
         ax.set_xlabel(r"$\Omega$ [rad/s]")
     n = len(v["F0"])
