@@ -309,18 +309,18 @@ def grazing(data_dir, fig_dir, kn):
                     label="correction failed (no exact value)")
     ax.set_yscale("log")
     ax.axvline(1.0, color="0.5", ls=":")
-    ax.set_xlabel("F / F_graze")
+    ax.set_xlabel("Fa / F_graze (harmonic force amplitude over the grazing one)")
     ax.set_ylabel("relative error of x_max (vs rk8pd tol 1e-12)")
     ax.legend(fontsize=8)
     bx.plot(F, d["contact_rad"], "k.-", label="contact duration [rad]")
-    bx.set_xlabel("F / F_graze")
+    bx.set_xlabel("Fa / F_graze")
     bx.set_ylabel("contact duration per period [rad]")
     b2 = bx.twinx()
     b2.plot(F, d["floquet_modulus"], "C2.-", label="largest Floquet multiplier |mu|")
     b2.set_ylabel("|mu| (Floquet)", color="C2")
     bx.legend(loc="upper left", fontsize=8)
     b2.legend(loc="lower right", fontsize=8)
-    fig.suptitle("Grazing: mass against wall at omega = 0.8 rad/s, force through F_graze = %.5f N" % kn["grazing_force"],
+    fig.suptitle("Grazing: mass against wall at omega = 0.8 rad/s, amplitude Fa through F_graze = %.5f N" % kn["grazing_force"],
                  fontsize=10)
     return save(fig, fig_dir / "figM9_grazing.png")
 

@@ -98,7 +98,6 @@ const double kTorques[] = {100, 200, 300};   // Fig. 67
 const VectorXd kX = VectorXd::Constant(1, 1.0);
 
 std::string torque_tag(double T) { return "T" + std::to_string(long(std::lround(T))); }
-double hz(double omega) { return omega / (2 * M_PI); }
 
 // The worst values of the chapter's own checks over every point computed.
 struct Worst {

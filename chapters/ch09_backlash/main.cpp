@@ -96,7 +96,6 @@ const std::map<std::string, BacklashValues> kValues = {{"thesis", BacklashValues
                                                         {"exact", BacklashValues::exact}};
 
 std::string torque_tag(double T) { return "T" + std::to_string(long(std::lround(T))); }
-double hz(double omega) { return omega / (2 * M_PI); }
 
 template <class E>
 E lookup(const std::map<std::string, E>& m, const std::string& key, const std::string& name) {

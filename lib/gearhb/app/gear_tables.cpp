@@ -5,10 +5,6 @@
 
 namespace gearhb {
 
-namespace {
-double hz(double omega) { return omega / (2 * M_PI); }
-}  // namespace
-
 Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>& reports) {
   Table t({"label", "band", "f_lo_hz", "f_hi_hz"});
   for (const auto& [label, r] : reports)

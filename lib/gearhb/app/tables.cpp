@@ -133,9 +133,7 @@ Table time_integration_table(const TimeIntegrationCheck& check) {
   return t;
 }
 
-namespace {
 double hz(double omega) { return omega / (2 * M_PI); }
-}  // namespace
 
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c) {
   const ResponseEvaluator ev(hb, Eigen::VectorXd::Constant(1, 1.0));

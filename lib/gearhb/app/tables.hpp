@@ -53,6 +53,9 @@ Table bifurcation_table(const FrequencyCurve& c);
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);
 
+// An angular frequency omega [rad/s] in Hz, omega / (2 pi) (a mesh frequency f_mesh_hz).
+double hz(double omega);
+
 // The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: f_mesh_hz,
 // then the common columns of the mesh deflection.
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);

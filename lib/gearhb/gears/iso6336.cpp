@@ -111,16 +111,6 @@ IsoTransverseGeometry iso_transverse_geometry(int z1, int z2, double m_n, double
   return g;
 }
 
-const char* to_string(Iso6336KvRange r) {
-  switch (r) {
-    case Iso6336KvRange::subcritical: return "subcritical";
-    case Iso6336KvRange::main_resonance: return "main_resonance";
-    case Iso6336KvRange::intermediate: return "intermediate";
-    case Iso6336KvRange::supercritical: return "supercritical";
-  }
-  return "?";
-}
-
 namespace {
 
 // Table 8 of ISO 6336-1:2006 (formulas in the header).

@@ -123,7 +123,6 @@ IsoTransverseGeometry iso_transverse_geometry(int z1, int z2, double m_n, double
 // Check: ISO/TR 6336-30:2017 Example 01 prints K_v = 1.003 (tests/unit/test_iso6336.cpp, with
 // the deviations of ISO 1328-1:1995 grade 5, C_a = 70 um, K_A = 1).
 enum class Iso6336KvRange : int { subcritical = 0, main_resonance = 1, intermediate = 2, supercritical = 3 };
-const char* to_string(Iso6336KvRange r);
 
 struct Iso6336KvInput {
   int z1 = 0;                  // teeth of gear 1 (whose speed n1 is given)

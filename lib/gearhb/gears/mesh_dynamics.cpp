@@ -28,11 +28,10 @@ double back_flank_phase(const PairSteModel& m) {
 PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade) {
   const GearGeometry* g[2] = {&m.gear1, &m.gear2};
   PairIsoKv k;
-  const double alpha = m.gear1.pressure_angle_deg * M_PI / 180.0;
-  for (int i = 0; i < 2; ++i) {
-    k.tolerances[i] = iso1328_tolerances(grade, g[i]->module * 1e3, 2.0 * g[i]->pitch_radius() * 1e3);
-    k.f_pb = std::max(k.f_pb, k.tolerances[i].f_pt * std::cos(alpha));
-    k.f_f_alpha = std::max(k.f_f_alpha, k.tolerances[i].f_f_alpha);
+  for (const GearGeometry* gi : g) {
+    const Iso1328Tolerances t = iso1328_tolerances(grade, gi->module * 1e3, 2.0 * gi->pitch_radius() * 1e3);
+    k.f_pb = std::max(k.f_pb, t.f_pt * std::cos(gi->pressure_angle_rad()));
+    k.f_f_alpha = std::max(k.f_f_alpha, t.f_f_alpha);
   }
   const double eps_alpha = m.path().contact_ratio, b_mm = m.contact_length() * 1e3;
   Iso6336KvInput& in = k.input;

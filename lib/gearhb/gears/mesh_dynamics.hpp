@@ -83,7 +83,6 @@ DteGear gear_pair_mesh(const PairSteModel& m, const std::vector<PairStePoint>& s
 // std::domain_error when the module or a reference diameter is outside ISO 1328-1's ranges.
 struct PairIsoKv {
   Iso6336KvInput input;
-  Iso1328Tolerances tolerances[2];   // per gear
   double f_pb = 0, f_f_alpha = 0;    // the pair's (larger) deviations before running-in [um]
   bool relief_from_running_in = false;   // C_a = C_ay (the gears carry no tip relief)
 };
