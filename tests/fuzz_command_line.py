@@ -96,7 +96,8 @@ def main():
     for i in range(a.runs):
         name = OUT_NAMES[i % len(OUT_NAMES)] % i
         out = work / name
-        staging = work / ("." + name + ".staging")
+        def staging(name=name):   # this run's staging folders (app/output_folder.hpp), a lock file
+            return [f for f in work.iterdir() if f.name.startswith("." + name + ".")]
         sets = []
         for key, default in rng.sample(params, min(len(params), rng.randint(1, 3))):
             sets += ["--set", "%s=%s" % (key, value_for(rng, default))]
@@ -108,7 +109,8 @@ def main():
             counts["timeout"] = counts.get("timeout", 0) + 1
             if out.exists():
                 failures.append("%s: killed, but %s exists" % (" ".join(sets), out))
-            shutil.rmtree(staging, ignore_errors=True)
+            for f in staging():
+                shutil.rmtree(f, ignore_errors=True)
             continue
         s = p.returncode
         counts[s] = counts.get(s, 0) + 1
@@ -127,8 +129,8 @@ def main():
                 failures.append("%s: exit %d but %s was written" % (what, s, out))
         else:
             failures.append("%s: exit status %d (signal or crash): %s" % (what, s, p.stderr.strip()[-300:]))
-        if staging.exists():
-            failures.append("%s: staging folder left behind" % what)
+        if staging():
+            failures.append("%s: staging folder left behind: %s" % (what, [f.name for f in staging()]))
         if list(work.rglob("INJECTED")) or pathlib.Path("INJECTED").exists():
             failures.append("%s into %r: a command in the output path ran" % (what, name))
     print("%s: %d runs: %s" % (pathlib.Path(a.program).name, a.runs,

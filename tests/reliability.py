@@ -20,15 +20,28 @@ import sys
 BIN, SRC, WORK = (pathlib.Path(p).resolve() for p in sys.argv[1:4])
 EXAMPLES = SRC / "chapters" / "gearhb_frc" / "examples"
 failures = []
+sys.stdout.reconfigure(errors="backslashreplace")   # a case's arguments may hold bytes that are not UTF-8
 
 
-def run(args, out, cwd=None, timeout=120):
-    staging = out.parent / ("." + out.name + ".staging")
+def beside(out):
+    """What a run leaves next to its output folder: staging folders, a lock file."""
+    return sorted(out.parent.glob("." + out.name + ".*"))
+
+
+def run(args, out, cwd=None, timeout=120, stdin=None):
     shutil.rmtree(out, ignore_errors=True)
-    shutil.rmtree(staging, ignore_errors=True)
+    for f in beside(out):
+        shutil.rmtree(f, ignore_errors=True)
     cmd = [str(BIN / args[0])] + [str(a) for a in args[1:]] + ["--quiet", "--out", str(out)]
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=timeout, cwd=cwd)
-    return p, staging
+    p = subprocess.run(cmd, capture_output=True, timeout=timeout, cwd=cwd)
+    # stderr must be UTF-8 whatever the input held (issue 32: a study reads it as text)
+    try:
+        err = p.stderr.decode("utf-8")
+    except UnicodeDecodeError as e:
+        failures.append("%s: stderr is not UTF-8 (%s): %r" % (" ".join(cmd), e, p.stderr[-300:]))
+        err = p.stderr.decode("utf-8", "backslashreplace")
+    p = subprocess.CompletedProcess(p.args, p.returncode, p.stdout.decode("utf-8", "backslashreplace"), err)
+    return p, beside(out)
 
 
 def case(name, args, status, says=(), says_not=(), cwd=None):
@@ -43,8 +56,8 @@ def case(name, args, status, says=(), says_not=(), cwd=None):
     if status != 0:
         if len(lines) != 1:
             failures.append("%s: %d lines on stderr, expected 1: %r" % (what, len(lines), p.stderr))
-        if out.exists() or staging.exists():
-            failures.append("%s: exit %d but something was written" % (what, status))
+        if out.exists() or staging:
+            failures.append("%s: exit %d but something was written: %s" % (what, status, [out] + staging))
         for s in says:
             if s not in p.stderr:
                 failures.append("%s: message does not say %r: %s" % (what, s, p.stderr.strip()))
@@ -93,7 +106,7 @@ for weird in ["o'; touch INJECTED; echo '", 'o"; touch INJECTED; echo "', "o $(t
 
 # 3. Deep nesting: refused with one line, not a stack overflow.
 deep = WORK / "deep.json"
-deep.write_text('{"name": "deep", "mass": ' + "[" * 1000000 + "]" * 1000000 + "}")
+deep.write_text('{"name": "deep", "mass": ' + "[\n" * 1000000 + "]\n" * 1000000 + "}")   # lines < 4096
 case("nested_1e6", ["gearhb_frc", deep], 2, says=["nested deeper"])
 
 # 5. A solver that fails is exit 1 with its reason, no placeholder in any file; a range
@@ -124,6 +137,39 @@ case("gap_file_dev_zero", ["gearhb_frc", model("dev_zero", gap_file("/dev/zero")
 case("newline_in_value", ["ch03_mass_wall", "--case", "own", "--set", "gap=1\n2"], 2, says=["\\n"])
 case("duplicate_key", ["gearhb_frc", model("duplicate", '{"name": "a", "name": "b"}')], 2, says=["twice"])
 
+# 11. Issue 32: error lines are valid UTF-8 (run() checks every stderr), input files are
+# text of bounded lines, a file that is not what the key expects is never quoted.
+GEAR = SRC / "chapters" / "gearhb_gear" / "examples" / "thesis_pair.json"
+def gear_file(name, text):
+    path = WORK / (name + ".json")
+    path.write_bytes(text)
+    return path
+gear = GEAR.read_bytes()
+case("gear_name_byte_ff", ["gearhb_gear", gear_file("ff", gear.replace(b'"name": "', b'"name": "\xff', 1))], 2,
+     says=["not valid JSON", "line"], says_not=["last read"])
+case("set_key_byte_80", ["gearhb_gear", GEAR, "--set", "gears.0.\udc80=1"], 2, says=["\\x80"])
+long_line = gear.replace(b'"name": "', b'"name": "' + b"x" * 5292, 1)
+case("json_line_5292", ["gearhb_gear", gear_file("long_line", long_line)], 2, says=["line", "longer than 4096"])
+long_name = json.loads(gear)
+long_name["name"] = "n" * 121
+case("gear_name_121", ["gearhb_gear", gear_file("long_name", json.dumps(long_name, indent=1).encode())], 2,
+     says=["'name'", "120"])
+case("model_name_control", ["gearhb_frc", model("name_tab", lambda m: m.update(name="a\tb"))], 2, says=["'name'"])
+case("json_nul_then_garbage", ["gearhb_frc", model("nul", (EXAMPLES / "two_masses.json").read_text() + "\0 garbage")],
+     2, says=["NUL"])
+for proc in ["/proc/self/mem", "/proc/self/pagemap"]:
+    tag = proc.rsplit("/", 1)[1]
+    case("positional_" + tag, ["gearhb_frc", proc], 2, says=[proc])
+    case("gap_file_" + tag, ["gearhb_frc", model("gap_" + tag, gap_file(proc))], 2, says=[proc, "gap_file"])
+    case("ste_file_" + tag, ["ch08_gear_response", "--case", "own", "--set", "ste_file=" + proc], 2,
+         says=[proc, "ste_file"])
+secret = WORK / "shadow"
+secret.write_text("root:SECRET-HASH:19000:0:99999:7:::\nuser:OTHER-SECRET:19000::::::\n")
+case("ste_file_not_ste", ["ch08_gear_response", "--case", "own", "--set", "ste_file=" + str(secret)], 2,
+     says=["ste_file", str(secret), "line 1"], says_not=["SECRET"])
+case("model_file_not_json", ["gearhb_frc", secret], 2, says=[str(secret), "line 1"], says_not=["SECRET", "root"])
+case("gear_file_not_json", ["gearhb_gear", secret], 2, says=[str(secret), "line 1"], says_not=["SECRET", "root"])
+
 # 8.-10. Messages that give the real reason and name the parameter.
 case("backlash_0", ["ch09_backlash", "--case", "own", "--set", "backlash_um=0"], 1,
      says=["mesh stiffness F / STE does not exist"], says_not=["outside 1e-150"])
@@ -134,8 +180,10 @@ case("stiffness_1.8e308", ["gearhb_frc", two, "--set", "stiffness.0.0=1.7e308"],
 case("H_too_large", ["ch03_mass_wall", "--case", "own", "--set", "H=2147483648"], 2, says=["too large"])
 case("ste_file_names_key", ["ch08_gear_response", "--case", "own", "--set", "ste_file=/dev/zero"], 2,
      says=["ste_file"])
-case("too_many_dofs", ["gearhb_frc", model("dofs", lambda m: m.update(
-    mass=[[1.0 if r == c else 0.0 for c in range(1366)] for r in range(1366)]))], 2, says=["too many"])
+def rows_per_line(m):   # one matrix row a line: 1366 entries "0," fit the 4096-character line
+    return json.dumps(m, separators=(",", ":")).replace("],[", "],\n[")
+case("too_many_dofs", ["gearhb_frc", model("dofs", lambda m: rows_per_line(dict(
+    m, mass=[[1 if r == c else 0 for c in range(1366)] for r in range(1366)])))], 2, says=["too many"])
 
 # A CRLF gap file is read like an LF one.
 crlf = WORK / "gap_crlf.csv"

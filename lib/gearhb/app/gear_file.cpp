@@ -145,8 +145,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   const Reader r{path};
   GearFile f;
   f.resolved = j;
-  if (j.contains("name") && !j["name"].is_string()) fail_key(path, "name", "must be a text");
-  f.name = j.value("name", std::string("gear pair"));
+  f.name = json_name(j, path, "name", "gear pair");
 
   // --- the pair -----------------------------------------------------------------
   const double m = r.number(j, "", "module", 1e-5, 1.0, "[1e-5, 1] m");
@@ -308,7 +307,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
 
 std::string gear_file_help() {
   return "Gear-pair file keys (JSON; SI units; gear 1 drives):\n"
-         "  name                         text shown in titles\n"
+         "  name                         text shown in titles (1..120 characters)\n"
          "  module                       m [m], in [1e-5, 1]\n"
          "  pressure_angle_deg           alpha [deg], in [10, 35]\n"
          "  basic_rack.addendum          ha* (units of m, default 1)\n"

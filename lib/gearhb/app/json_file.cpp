@@ -10,10 +10,25 @@ namespace gearhb {
 
 using nlohmann::json;
 
+namespace {
+
+// nlohmann's parse error without its "; last read: '...'" tail, which quotes the file's
+// text: the error names the line and column, never the content of a file that may not
+// be a model at all (a password file given by mistake).
+std::string parse_error_without_text(std::string what) {
+  if (const auto tail = what.find("; last read:"); tail != std::string::npos) what.erase(tail);
+  if (const auto id = what.find("] "); what.rfind("[json.exception.", 0) == 0 && id != std::string::npos)
+    what.erase(0, id + 2);
+  return what;
+}
+
+}  // namespace
+
 json read_json_file(const std::string& path) {
   std::string text;
   try {
     text = read_text_file(path);
+    check_line_lengths(text);
   } catch (const TextFileError& e) {
     throw UsageError(path + ": " + e.what());
   }
@@ -37,7 +52,7 @@ json read_json_file(const std::string& path) {
   try {
     return json::parse(text, check);
   } catch (const json::exception& e) {
-    throw UsageError(path + ": not valid JSON (" + std::string(e.what()) + ")");
+    throw UsageError(path + ": not valid JSON (" + parse_error_without_text(e.what()) + ")");
   }
 }
 
@@ -79,6 +94,24 @@ int json_whole(const json& j, const std::string& file, const std::string& key, i
   if (v != std::floor(v) || v < lo || v > hi)
     fail_key(file, key, "must be a whole number in [" + std::to_string(lo) + ", " + std::to_string(hi) + "]");
   return int(v);
+}
+
+std::string json_name(const json& root, const std::string& file, const std::string& key,
+                      const std::string& fallback) {
+  if (!root.contains(key)) return fallback;
+  const json& j = root[key];
+  if (!j.is_string()) fail_key(file, key, "must be a text in quotes");
+  const std::string name = j.get<std::string>();
+  int chars = 0;   // UTF-8 code points (the parser has checked the encoding)
+  bool control = false;
+  for (const unsigned char c : name) {
+    chars += (c & 0xc0) != 0x80;
+    control = control || c < 0x20 || c == 0x7f;
+  }
+  if (chars < 1 || chars > max_name_chars || control)
+    fail_key(file, key, "must be 1 to " + std::to_string(max_name_chars) +
+                            " characters without control characters (it titles the figures)");
+  return name;
 }
 
 bool json_flag(const json& j, const std::string& file, const std::string& key) {

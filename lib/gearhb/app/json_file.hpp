@@ -10,9 +10,10 @@
 
 namespace gearhb {
 
-// A JSON input file (a model file, a gear file): a regular file of at most 16 MiB,
-// nested at most max_json_depth levels, no key twice in one object. Throws
-// UsageError naming the path and what is wrong.
+// A JSON input file (a model file, a gear file): a regular text file (no NUL byte) of
+// at most 16 MiB with lines of at most 4096 characters (core/text_file.hpp), nested at
+// most max_json_depth levels, no key twice in one object. Throws UsageError naming the
+// path and what is wrong (a parse error by line and column, never quoting the file).
 constexpr int max_json_depth = 32;
 nlohmann::json read_json_file(const std::string& path);
 
@@ -27,6 +28,11 @@ void apply_override(nlohmann::json& root, const std::string& file, const std::st
 double json_number(const nlohmann::json& j, const std::string& file, const std::string& key);
 // A whole number in [lo, hi].
 int json_whole(const nlohmann::json& j, const std::string& file, const std::string& key, int lo, int hi);
+// A name that figures put in their titles: a text of 1..max_name_chars characters
+// without control characters (`fallback` where the key is absent).
+constexpr int max_name_chars = 120;
+std::string json_name(const nlohmann::json& root, const std::string& file, const std::string& key,
+                      const std::string& fallback);
 // An on/off flag: true / false, or 1 / 0.
 bool json_flag(const nlohmann::json& j, const std::string& file, const std::string& key);
 // An object whose keys are all in `allowed` (`where` is its dotted path, "" the root).

@@ -183,8 +183,7 @@ ModelFile read_model_file(const std::string& path,
     if (!j.contains(k)) fail(path, k, "is missing");
   ModelFile m;
   m.resolved = j;
-  if (j.contains("name") && !j["name"].is_string()) fail(path, "name", "must be a text in quotes");
-  m.name = j.value("name", std::string("model"));
+  m.name = json_name(j, path, "name", "model");
   if (!j["mass"].is_array() || j["mass"].empty()) fail(path, "mass", "must be a non-empty list of rows");
   const int n = int(j["mass"].size());
   if (max_harmonics(n) < 1)
@@ -203,7 +202,7 @@ HarmonicBalance ModelFile::harmonic_balance() const {
 
 std::string model_file_help() {
   return "Model file keys (JSON; SI units; n = number of DOFs):\n"
-         "  name                  text shown in titles\n"
+         "  name                  text shown in titles (1..120 characters)\n"
          "  mass                  n x n, symmetric positive definite [kg]\n"
          "  stiffness             n x n [N/m]\n"
          "  damping               n x n [N s/m], or instead\n"

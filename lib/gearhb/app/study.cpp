@@ -1,24 +1,16 @@
 #include "gearhb/app/study.hpp"
 
-#include <fcntl.h>
-#include <unistd.h>
-
-#include <cerrno>
-#include <csignal>
 #include <cstdio>
-#include <cstdlib>
-#include <cstring>
-#include <filesystem>
 #include <iostream>
+#include <memory>
 #include <new>
 #include <sstream>
 #include <stdexcept>
 
+#include "gearhb/app/output_folder.hpp"
 #include "gearhb/core/gsl_errors.hpp"
 
 namespace gearhb {
-
-namespace fs = std::filesystem;
 
 // --- Run ------------------------------------------------------------------------
 
@@ -90,6 +82,53 @@ std::string Study::help_text() const {
   return os.str();
 }
 
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong form, no
+// surrogate, at most U+10FFFF), or 0 where the byte starts none.
+namespace {
+
+// The length of the well-formed UTF-8 sequence at s[i] (RFC 3629: no overlong form, no
+// surrogate, at most U+10FFFF), or 0 where the byte starts none.
+std::size_t utf8_sequence(const std::string& s, std::size_t i) {
+  const auto byte = [&](std::size_t k) { return k < s.size() ? static_cast<unsigned char>(s[k]) : 0u; };
+  const unsigned c = byte(i);
+  const auto cont = [&](std::size_t k, unsigned lo = 0x80, unsigned hi = 0xbf) { return byte(k) >= lo && byte(k) <= hi; };
+  if (c < 0x80) return 1;
+  if (c >= 0xc2 && c <= 0xdf) return cont(i + 1) ? 2 : 0;
+  if (c >= 0xe0 && c <= 0xef) {
+    const unsigned lo = c == 0xe0 ? 0xa0 : 0x80, hi = c == 0xed ? 0x9f : 0xbf;
+    return cont(i + 1, lo, hi) && cont(i + 2) ? 3 : 0;
+  }
+  if (c >= 0xf0 && c <= 0xf4) {
+    const unsigned lo = c == 0xf0 ? 0x90 : 0x80, hi = c == 0xf4 ? 0x8f : 0xbf;
+    return cont(i + 1, lo, hi) && cont(i + 2) && cont(i + 3) ? 4 : 0;
+  }
+  return 0;
+}
+
+}  // namespace
+
+std::string one_line(const std::string& message) {
+  std::string out;
+  for (std::size_t i = 0; i < message.size();) {
+    const auto c = static_cast<unsigned char>(message[i]);
+    const std::size_t n = utf8_sequence(message, i);
+    if (n > 1 || (n == 1 && c >= 0x20 && c != 0x7f)) {
+      out.append(message, i, n);
+      i += n;
+      continue;
+    }
+    if (c == '\n') {
+      out += "\\n";
+    } else {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\x%02x", unsigned(c));
+      out += buf;
+    }
+    ++i;
+  }
+  return out;
+}
+
 namespace {
 
 struct Parsed {
@@ -141,96 +180,12 @@ Parsed parse(int argc, char** argv, ParameterSet& params, const std::vector<std:
   return p;
 }
 
-// A message is one line: a control character of the user's input (a newline in a
-// value) is shown escaped, never printed.
-std::string one_line(const std::string& message) {
-  std::string out;
-  for (const unsigned char c : message) {
-    if (c >= 0x20 && c != 0x7f) {
-      out.push_back(char(c));
-    } else if (c == '\n') {
-      out += "\\n";
-    } else {
-      char buf[8];
-      std::snprintf(buf, sizeof buf, "\\x%02x", unsigned(c));
-      out += buf;
-    }
-  }
-  return out;
-}
-
-// The output folder as an absolute, normalised path without a trailing separator.
-fs::path output_folder(const std::string& out) {
-  fs::path abs = fs::absolute(out).lexically_normal();
-  if (abs.filename().empty()) abs = abs.parent_path();
-  if (abs.filename().empty() || abs == abs.root_path() || abs.filename() == "." || abs.filename() == "..")
-    throw UsageError("--out '" + out + "' does not name a folder");
-  return abs;
-}
-
-// The staging folder beside the output folder: ".<name>.staging".
-fs::path staging_for(const fs::path& folder) {
-  return folder.parent_path() / ("." + folder.filename().string() + ".staging");
-}
-
-// DIR is replaced as a whole by a run, so it must be empty or hold an earlier run's
-// output (its key_numbers.json): a user's folder of other files is never swept away.
-void check_replaceable(const fs::path& folder, const std::string& out) {
-  std::error_code ec;
-  const auto status = fs::symlink_status(folder, ec);
-  if (ec || status.type() == fs::file_type::not_found) return;
-  if (status.type() != fs::file_type::directory)
-    throw UsageError("--out '" + out + "' is not a folder");
-  if (!fs::is_empty(folder, ec) && !fs::exists(folder / "key_numbers.json"))
-    throw UsageError("--out '" + out + "' holds files that are not a gearhb run's output (no key_numbers.json): "
-                     "choose an empty or new folder");
-}
-
-// Test hook (tests/publish_kill.sh): GEARHB_PUBLISH_KILL_AT=staged|swapped kills the
-// process with SIGKILL at that point of publish(), to show DIR is never half written.
-void kill_point(const char* where) {
-  const char* at = std::getenv("GEARHB_PUBLISH_KILL_AT");
-  if (at != nullptr && std::strcmp(at, where) == 0) std::raise(SIGKILL);
-}
-
-void sync_folder(const fs::path& folder) {
-  const int fd = ::open(folder.c_str(), O_RDONLY | O_DIRECTORY);
-  if (fd < 0) return;
-  ::fsync(fd);
-  ::close(fd);
-}
-
-// Publish the whole staging folder as DIR in one atomic step, so that DIR is always
-// exactly one run's complete output: rename it onto a DIR that does not exist, or
-// swap the two folders (Linux renameat2 RENAME_EXCHANGE) and remove the old output,
-// now in the staging folder's place. Where the file system cannot swap, DIR is moved
-// aside first (a kill between the two renames leaves no DIR, never a mixed one).
-void publish(const fs::path& staging, const fs::path& folder) {
-  sync_folder(staging);
-  kill_point("staged");
-  std::error_code ec;
-  if (!fs::exists(fs::symlink_status(folder, ec))) {
-    fs::rename(staging, folder);
-  } else if (::renameat2(AT_FDCWD, staging.c_str(), AT_FDCWD, folder.c_str(), RENAME_EXCHANGE) != 0) {
-    if (errno != EINVAL && errno != ENOSYS)
-      throw std::runtime_error("cannot publish " + folder.string() + ": " + std::strerror(errno));
-    const fs::path aside = folder.parent_path() / ("." + folder.filename().string() + ".old");
-    fs::remove_all(aside, ec);
-    fs::rename(folder, aside);
-    fs::rename(staging, folder);
-    fs::rename(aside, staging);
-  }
-  sync_folder(folder.parent_path());
-  kill_point("swapped");
-  fs::remove_all(staging);   // the previous output
-}
-
 }  // namespace
 
 int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   const std::string default_out = "build/data/" + program_;
   Parsed p;
-  fs::path folder, staging;
+  std::unique_ptr<OutputFolder> out;
   try {
     p = parse(argc, argv, params_, labels_, default_out, positional_name_);
     positional_ = p.positional;
@@ -239,15 +194,7 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
       return 0;
     }
     if (checks_) checks_(p.selection);
-    folder = output_folder(p.out);
-    check_replaceable(folder, p.out);
-    staging = staging_for(folder);
-    // The output folder must be writable: make the staging folder now (a killed run's is removed).
-    std::error_code ec;
-    fs::remove_all(staging, ec);
-    fs::remove_all(folder.parent_path() / ("." + folder.filename().string() + ".old"), ec);
-    fs::create_directories(staging, ec);
-    if (ec) throw UsageError("--out '" + p.out + "': cannot write there (" + ec.message() + ")");
+    out = std::make_unique<OutputFolder>(p.out, program_);
   } catch (const UsageError& e) {
     std::cerr << program_ << ": error: " << one_line(e.what()) << "\n";
     return 2;
@@ -258,15 +205,14 @@ int Study::run(int argc, char** argv, const std::function<void(Run&)>& steps) {
   const auto t0 = std::chrono::steady_clock::now();
   GslErrorsReturned gsl_policy;
   try {
-    Run run(program_, p.selection, staging.string(), p.quiet);
+    Run run(program_, p.selection, out->staging().string(), p.quiet);
     run.write_text("params.json", params_.to_json().dump(2) + "\n");
     steps(run);
-    run.key_numbers().write((staging / "key_numbers.json").string());
+    run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
     run.write("timings.csv", run.timings_);
-    publish(staging, folder);
+    out->publish();
   } catch (const std::exception& e) {
-    std::error_code ec;
-    fs::remove_all(staging, ec);
+    out.reset();   // removes the staging folder: DIR is left as it was
     const bool usage = dynamic_cast<const UsageError*>(&e) != nullptr;
     const bool memory = dynamic_cast<const std::bad_alloc*>(&e) != nullptr;
     std::cerr << program_ << (usage ? ": error: " : ": failed: ")

@@ -14,11 +14,13 @@
 //   1. parses the command line and validates every parameter (ranges, then the
 //      chapter's cross-parameter checks) before anything is written: bad input is
 //      one line on stderr and exit status 2;
-//   2. runs the steps with a Run, which writes every file into a staging folder next
-//      to DIR (".<DIR name>.staging", cleaned by the next run if a run was killed);
-//   3. on success moves the files into DIR (each fsync'ed, then renamed) and prints the
-//      wall time; on failure (exit 1, one line saying where and why) removes the
-//      staging folder, so DIR is left as it was.
+//   2. runs the steps with a Run, which writes every file into this run's own staging
+//      folder next to DIR (app/output_folder.hpp: unique per run, locked while the run
+//      lives, removed by a later run if this one was killed);
+//   3. on success publishes the staging folder as DIR in one step and prints the wall
+//      time; on failure (exit 1, one line saying where and why) removes the staging
+//      folder, so DIR is left as it was. Error lines are valid UTF-8 (bytes that are
+//      not are shown escaped).
 // Every run writes params.json (the parameters used), key_numbers.json and
 // timings.csv (wall-clock seconds per step: the only file that differs between runs).
 #include <chrono>
@@ -129,6 +131,12 @@ void file_program(Study& study, const std::string& what, bool* plot, std::functi
 // Draw the figures of a run: /usr/bin/python3 SCRIPT STAGING (the script writes its
 // PNGs into the staging folder). Says `what` was not drawn when the script is empty
 // or fails; never fails the run.
+// A message as one line of valid UTF-8, whatever the user's input held: a control
+// character (a newline in a value) and a byte that is not UTF-8 (RFC 3629: overlong
+// forms, surrogates and code points beyond U+10FFFF are not) are shown escaped as
+// \n and \xNN. Every error line of the frame passes through it.
+std::string one_line(const std::string& message);
+
 void draw_with_script(const Run& run, const std::string& script, const std::string& what);
 
 }  // namespace gearhb

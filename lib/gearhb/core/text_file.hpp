@@ -19,8 +19,12 @@ constexpr std::size_t max_input_file_bytes = std::size_t(16) << 20;   // 16 MiB
 constexpr std::size_t max_input_line = 4096;                           // characters
 
 // The whole file. Throws TextFileError ("cannot be opened", "is a folder, not a file",
-// "is not a regular file", "is larger than 16 MiB").
+// "is not a regular file", "is larger than 16 MiB", "cannot be read (<reason>)", "holds a
+// NUL byte": text files have none).
 std::string read_text_file(const std::string& path, std::size_t max_bytes = max_input_file_bytes);
+
+// TextFileError naming the first line of `text` longer than `max_line` characters.
+void check_line_lengths(const std::string& text, std::size_t max_line = max_input_line);
 
 // The file's lines (LF or CRLF), each at most `max_line` characters (TextFileError
 // naming the line number otherwise).

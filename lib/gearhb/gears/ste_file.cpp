@@ -51,7 +51,7 @@ SteFile read_ste_file(const std::string& path, int min_rows, bool require_positi
     for (std::string fld; std::getline(ss, fld, ',');) fields.push_back(fld);
     if (!header) {
       if (fields.size() != 2 || trim(fields[0]) != "phase" || trim(fields[1]) != "ste_um")
-        fail(path, line, "header must be 'phase,ste_um', got '" + t + "'");
+        fail(path, line, "is not an STE file: its first line must be the header 'phase,ste_um'");
       header = true;
       continue;
     }
