@@ -3,7 +3,6 @@
 minimises each (best.txt); and the best design's STE and DTE response beside the unmodified
 one's (amount 0 on the first axis, the same other axes), best_vs_unmodified.png."""
 import csv
-import json
 import math
 import pathlib
 
@@ -29,15 +28,14 @@ def num(v):
 
 def draw(study_path, out):
     out = pathlib.Path(out)
-    spec = json.loads(pathlib.Path(study_path).read_text())
-    _, axes, _, _ = study.load(study_path)
-    keys = spec.get("maps", [])
+    spec = study.load(study_path)
+    axes, keys = spec.axes, spec.maps
     rows = read(out / "table.csv")
     px, py = axes[0][0], axes[1][0]
     groups = sorted({r[axes[2][0]] for r in rows}, key=num) if len(axes) > 2 else [None]
     fig, grid = plt.subplots(len(groups), max(1, len(keys)), figsize=(5.2 * max(1, len(keys)), 3.6 * len(groups)),
                              squeeze=False)
-    best = ["study %s: %d designs, %d failed" % (spec.get("name", study_path), len(rows),
+    best = ["study %s: %d designs, %d failed" % (spec.name or study_path, len(rows),
                                                  sum(r["status"] != "ok" for r in rows))]
     for gi, g in enumerate(groups):
         sub = [r for r in rows if g is None or r[axes[2][0]] == g]
