@@ -162,6 +162,7 @@ OutputFolder::OutputFolder(const std::string& out, const std::string& program) :
   if (marker_fd_ < 0 || ::write(marker_fd_, text.data(), text.size()) != ssize_t(text.size()) ||
       ::flock(marker_fd_, LOCK_EX | LOCK_NB) != 0) {
     const int error = errno;
+    if (marker_fd_ >= 0) ::close(marker_fd_);
     fs::remove_all(staging_, ec);
     throw UsageError("--out '" + out + "': cannot write there (" + std::strerror(error) + ")");
   }
