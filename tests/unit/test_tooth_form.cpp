@@ -59,20 +59,21 @@ double involute_psi(const GearGeometry& g, double R) {
 // is the rack tooth with the tip corners rounded by rho.
 struct RackCut {
   double r, xm, p, hf, rho;
-  explicit RackCut(const GearGeometry& g)
+  explicit RackCut(const GearGeometry& g, double rho_f = rho_star)
       : r(g.pitch_radius()), xm(g.profile_shift * g.module), p(M_PI * g.module), hf(g.dedendum),
-        rho(rho_star * g.module) {}
+        rho(rho_f * g.module) {}
   // Rack coordinates (u relative to the nearest rack tooth's centre, v).
   Vec rack_point(const Vec& Q, double tau) const {
     const double c = std::cos(tau), s = std::sin(tau);
     const double u = Q.x() * c - Q.y() * s + r * tau, v = Q.x() * s + Q.y() * c - r - xm;
     return {u - p * std::floor(u / p) - p / 2, v};
   }
-  // Distance of a rack point from the core K (0 inside).
+  // Signed distance of a rack point from the core K (negative inside: minus the distance to
+  // the nearer of its bottom and flank lines, K being convex).
   double core_distance(const Vec& q) const {
     const double t = std::tan(alpha), vc = -(hf - rho), w0 = p / 4 - rho / std::cos(alpha);
     const double au = std::fabs(q.x()), v = q.y();
-    if (v >= vc && au <= w0 + v * t) return 0.0;
+    if (v >= vc && au <= w0 + v * t) return -std::min(v - vc, (w0 + v * t - au) * std::cos(alpha));
     const double uw = w0 + vc * t;   // half width of the core's bottom
     const double d_bottom = std::hypot(std::max(au - uw, 0.0), v - vc);
     const Vec dir = Vec(t, 1.0).normalized();   // along the core's flank, upward
@@ -270,6 +271,19 @@ TEST(ToothForm, FormIsExactlyWhatTheRackLeaves) {
     }
     EXPECT_LT(worst, 1e-10 * g.module / 3e-3) << "z " << g.teeth;
   }
+  // Other rack tip radii: 0 (a sharp corner: the fillet is the corner's trochoid) and 0.25.
+  for (double rho_f : {0.0, 0.25})
+    for (const GearGeometry& g : {fzg16(), pinion10()}) {
+      ToothFormOptions o = spaced(g.module / 20);
+      o.root_radius_coefficient = rho_f;
+      const ToothForm f = tooth_form(g, o);
+      const RackCut rack(g, rho_f);
+      double worst = 0;
+      for (size_t i = 0; i < f.points.size(); ++i)
+        if (f.segment[i] != ToothSegment::tip)
+          worst = std::max(worst, std::fabs(rack.min_clearance(Vec(std::fabs(f.points[i].x()), f.points[i].y()))));
+      EXPECT_LT(worst, 1e-10 * g.module / 3e-3) << "z " << g.teeth << " rho_f* " << rho_f;
+    }
 }
 
 TEST(ToothForm, UndercutExactlyWhenTheRackFlankPassesTheInterferencePoint) {
