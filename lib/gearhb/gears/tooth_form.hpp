@@ -87,7 +87,7 @@ struct ToothFormOptions {
   double root_radius_coefficient = 0.38;   // rho_f* of the basic rack (rho = rho_f* m)
   TipRelief relief;                        // amount 0: none (gear_geometry.hpp, tip_relief)
   double tip_rounding_radius = 0.0;        // r_k [m], 0: a sharp tip edge
-  double spacing = 0.0;                    // largest distance between points [m]; 0: m / 50
+  double spacing = 0.0;                    // distance between points [m] (about; each segment equally divided); 0: m / 50
 };
 
 // One tooth, ordered from the left root-circle midpoint between teeth (polar angle -pi/z)
