@@ -174,6 +174,12 @@ double tip_relief_at(const TipRelief& r, double roll) {
   return r.shape == ReliefShape::parabolic ? r.amount * u * u : r.amount * u;
 }
 
+double tip_relief_slope(const TipRelief& r, double roll) {
+  if (!(r.amount > 0.0) || roll < r.start_roll || roll >= r.tip_roll) return 0.0;
+  const double length = r.tip_roll - r.start_roll, u = (roll - r.start_roll) / length;
+  return r.shape == ReliefShape::parabolic ? 2.0 * r.amount * u / length : r.amount / length;
+}
+
 double relief_start_roll(const GearGeometry& g, ReliefStart kind, double value) {
   const double rb = g.base_radius(), ra = g.tip_radius();
   switch (kind) {

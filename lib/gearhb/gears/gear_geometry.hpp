@@ -143,6 +143,9 @@ struct TipRelief {
 };
 // Ca at the roll length xi (distance from T_i along the line of action) [m].
 double tip_relief_at(const TipRelief& relief, double roll);
+// Its slope dCa/dxi (one-sided from above at the start; 0 beyond the tip roll, where
+// tip_relief_at holds Ca).
+double tip_relief_slope(const TipRelief& relief, double roll);
 // How the start may be given: roll angle xi_S / rb [deg], diameter d_Ca [m], or
 // length L_Ca along the path of contact measured from the tip end [m].
 enum class ReliefStart { roll_angle_deg, diameter, length };
