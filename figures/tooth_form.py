@@ -50,7 +50,9 @@ def draw(csv_path, png_path):
     axes = axes.ravel()
     for ax, (name, rows) in zip(axes, gears.items()):
         draw_form(ax, rows, name)
-    axes[0].legend(markerscale=4, loc="lower left")
+    # One legend of every segment kind, below the panels (never over a tooth).
+    handles = [plt.Line2D([], [], marker=".", ls="", ms=8, color=c, label=seg) for seg, c in SEGMENT_COLOURS.items()]
+    fig.legend(handles=handles, loc="lower center", ncol=len(handles), frameon=False)
     undercut = [rows for name, rows in gears.items() if "undercut" in name]
     if undercut and len(gears) < len(axes):
         ax = axes[len(gears)]
@@ -59,7 +61,7 @@ def draw(csv_path, png_path):
                 and 13.0 < math.hypot(float(r["x_mm"]), float(r["y_mm"])) < 15.0
                 and abs(math.atan2(float(r["x_mm"]), float(r["y_mm"]))) < math.pi / 10]
         draw_form(ax, rows, "z10 undercut corner, normals", normals=True)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0.05, 1, 1))
     fig.savefig(png_path)
 
 
