@@ -13,7 +13,7 @@ PYTHON     ?= /usr/bin/python3
 # Debian packages the project needs (Debian 12 names).
 PACKAGES := cmake g++ make pkg-config libeigen3-dev libfftw3-dev libgsl-dev \
             libgtest-dev libbenchmark-dev nlohmann-json3-dev python3-matplotlib \
-            python3-scipy snakemake
+            python3-scipy snakemake libgmsh-dev libsuitesparse-dev
 
 .PHONY: all deps configure build figures test bench docs clean
 
