@@ -23,9 +23,10 @@
 #include "../tooth_form/example_gears.hpp"
 
 using namespace gearhb;
-using namespace tooth_form_examples;
 
 namespace iso6336_root_test {
+
+using namespace tooth_form_examples;
 
 constexpr double alpha = 20.0 * M_PI / 180.0;
 constexpr double rho_star = 0.38;
