@@ -179,10 +179,6 @@ Richardson richardson(double f1, double f2, double f3, double r) {
   return out;
 }
 
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
-
 }  // namespace
 
 // The split of section 2 (fe_tooth_contact.hpp): the compliance at the reference width w
@@ -252,6 +248,45 @@ TEST(FePair, SinglePairZoneIsTheSeriesOfBothGears) {
   EXPECT_GT(single, 0);
 }
 
+// The phase interpolation of the compliances (16 knots per cycle) against loading every
+// one of 64 phases itself (FZG C: two different gears; 5-tooth sectors for speed, the
+// interpolation does not depend on them). Where every contact point lies more than w + one
+// knot spacing from both tips the compliances are smooth in the phase and the STE must
+// agree to within the default mesh's own discretisation error (4e-4: the mesh study in
+// reference/fe_tooth_contact.md; the directly loaded values carry that mesh ripple as the
+// load moves across elements); nearer a tip the unit load is cut off by the tip corner
+// (a kink), so there the difference is not bounded here (fe_tooth_contact.hpp,
+// knots_per_base_pitch).
+TEST(FePair, PhaseInterpolationEqualsLoadingEveryPhaseAwayFromTheTips) {
+  const PairCase c = issue_pairs()[1];
+  FePairOptions o = c.fe;
+  set_sector(o, 5, CutFaces::fixed);
+  o.knots_per_base_pitch = 16;
+  const FePairModel interpolated(c.pair, 64, o);
+  o.knots_per_base_pitch = 0;
+  const FePairModel direct(c.pair, 64, o);
+  const auto a = interpolated.ste(c.torque), b = direct.ste(c.torque);
+  const PathOfContact& path = direct.path();
+  // Roll-length margin: w + one knot spacing (pb / 16) along the path.
+  const double margin = c.pair.gear1.module * o.gear1.load_width * 2 + path.base_pitch / 16;
+  const double tip1 = std::sqrt(std::pow(c.pair.gear1.tip_radius(), 2) - std::pow(c.pair.gear1.base_radius(), 2));
+  const double tip2 = std::sqrt(std::pow(c.pair.gear2.tip_radius(), 2) - std::pow(c.pair.gear2.base_radius(), 2));
+  double worst_inner = 0;
+  int inner = 0;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    bool near_tip = false;
+    for (const PairContact& p : direct.phases()[q].pairs) {
+      const double xi1 = path.T1A + p.s, xi2 = path.T1T2 - xi1;
+      near_tip = near_tip || tip1 - xi1 < margin || tip2 - xi2 < margin;
+    }
+    if (near_tip) continue;
+    ++inner;
+    worst_inner = std::max(worst_inner, std::abs(a[q].ste / b[q].ste - 1));
+  }
+  EXPECT_GT(inner, 32);
+  EXPECT_LE(worst_inner, 4e-4);
+}
+
 TEST(FeToothContact, RefusesPointsOffTheFlankAndTooSmallSectors) {
   const GearGeometry g = thesis_gear();
   FeGearOptions o;
@@ -265,23 +300,24 @@ TEST(FeToothContact, RefusesPointsOffTheFlankAndTooSmallSectors) {
 }
 
 // Mesh convergence of the mean mesh stiffness and the pitch-point single-pair stiffness:
-// element sizes times 2, sqrt 2, 1 (default), 1/sqrt 2, 1/2; Richardson from the three
+// element sizes times sqrt 2, 1 (default), 1/sqrt 2, 1/2; Richardson from the three
 // finest; the default's error against the extrapolated value (target <= 1 %).
 TEST(DISABLED_FeToothContactStudy, MeshConvergence) {
-  const std::vector<double> scales{2.0, std::sqrt(2.0), 1.0, 1 / std::sqrt(2.0), 0.5};
+  const std::vector<double> scales{std::sqrt(2.0), 1.0, 1 / std::sqrt(2.0), 0.5};
   for (const PairCase& c : issue_pairs()) {
     std::vector<PairNumbers> n;
     for (double s : scales) {
       FePairOptions o = c.fe;
       set_density(o, s);
+      o.gear1.max_nodes = o.gear2.max_nodes = 1e7;   // the size-field estimate is far above the real count
       n.push_back(pair_numbers(c, o));
       std::cout << c.name << " scale " << s << " nodes " << n.back().nodes1 << " / " << n.back().nodes2
                 << " mean " << n.back().mean / 1e6 << " MN/m single " << n.back().single / 1e6 << " MN/m ("
                 << n.back().seconds << " s)\n";
     }
-    const Richardson rm = richardson(n[2].mean, n[3].mean, n[4].mean, std::sqrt(2.0));
-    const Richardson rs = richardson(n[2].single, n[3].single, n[4].single, std::sqrt(2.0));
-    const double em = std::abs(n[2].mean - rm.limit) / rm.limit, es = std::abs(n[2].single - rs.limit) / rs.limit;
+    const Richardson rm = richardson(n[1].mean, n[2].mean, n[3].mean, std::sqrt(2.0));
+    const Richardson rs = richardson(n[1].single, n[2].single, n[3].single, std::sqrt(2.0));
+    const double em = std::abs(n[1].mean - rm.limit) / rm.limit, es = std::abs(n[1].single - rs.limit) / rs.limit;
     std::cout << c.name << " mean: limit " << rm.limit / 1e6 << " order " << rm.order << " default error " << 100 * em
               << " %; single: limit " << rs.limit / 1e6 << " order " << rs.order << " default error " << 100 * es
               << " %\n";
@@ -308,4 +344,41 @@ TEST(DISABLED_FeToothContactStudy, SectorSize) {
                   << 100 * (n.single / w.single - 1) << " %)\n";
       }
   }
+}
+
+// The three pairs at their files' largest torque beside the issue's table (beam /
+// potential energy / ISO c_gamma_alpha b, measured by gearhb_gear), default FE options.
+TEST(DISABLED_FeToothContactStudy, PairsBesideFastModels) {
+  for (const PairCase& c : issue_pairs()) {
+    const FePairModel m(c.pair, 64, c.fe);
+    const double F = m.force(c.torque);
+    const auto ste = m.ste(c.torque);
+    double lo = 1e300, hi = -1e300;
+    for (const auto& p : ste) lo = std::min(lo, p.ste), hi = std::max(hi, p.ste);
+    std::cout << c.name << " T1 " << c.torque << " N m, F = T1/rb1 " << F << " N: mean " << fe_mean_stiffness(ste, F) / 1e6
+              << " MN/m, single pair at C " << m.single_pair_stiffness(m.path().AC, F) / 1e6 << " MN/m, STE mean "
+              << 0.5 * (lo + hi) * 1e6 << " um, p-p " << (hi - lo) * 1e6 << " um, nodes " << m.gear1().mesh().node_count()
+              << " / " << m.gear2().mesh().node_count() << ", bore " << m.gear1().bore_radius() * 1e3 << " / "
+              << m.gear2().bore_radius() * 1e3 << " mm\n";
+  }
+}
+
+// The bodies' torsion between bore and root circle (all teeth loaded equally at the pitch
+// point; rotation of the root arcs), beside the annulus r_i..r_f in torsion,
+// phi / T = (1 / (4 pi G b)) (1 / r_i^2 - 1 / r_f^2) (Timoshenko & Goodier §33).
+TEST(DISABLED_FeToothContactStudy, BodyTorsion) {
+  for (const PairCase& c : issue_pairs())
+    for (int k : {1, 2}) {
+      const GearGeometry& g = k == 1 ? c.pair.gear1 : c.pair.gear2;
+      const double E = k == 1 ? c.pair.youngs_modulus1 : c.pair.youngs_modulus2;
+      const FeGearOptions& o = k == 1 ? c.fe.gear1 : c.fe.gear2;
+      const FeGearModel m(g, E, 0.3, o);
+      const double fe = m.body_torsion_compliance();
+      const double ri = m.bore_radius(), rf = g.root_radius(), G = E / 2.6;
+      const double annulus = (1 / ri / ri - 1 / rf / rf) / (4 * M_PI * G * g.face_width);
+      const double rb = g.base_radius();
+      std::cout << c.name << " gear " << k << ": bore " << ri * 1e3 << " mm, rf " << rf * 1e3 << " mm, torsion "
+                << fe << " rad/(N m) (annulus " << annulus << "), along the line of action rb^2 c = "
+                << rb * rb * fe * 1e9 << " um/kN = 1 / " << 1 / (rb * rb * fe) / 1e6 << " MN/m\n";
+    }
 }

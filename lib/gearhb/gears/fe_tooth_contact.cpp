@@ -257,18 +257,31 @@ void FeGearModel::Impl::build_mesh() {
   near.size_min = d.tooth_size * d.scale * m;
   near.dist_min = 0;
   near.dist_max = 2 * m;
-  far.size_min = d.far_tooth_size * d.scale * m;
-  far.dist_min = 0;
+  // On a tooth's boundary h stays below a quarter module whatever the scale: a P2 edge much
+  // longer than the fillet's curvature radius (about rho_f* m) is too curved to map.
+  far.size_min = std::min(d.far_tooth_size * d.scale, 0.25) * m;
+  far.dist_min = far.size_min;   // points size_min apart: every boundary point within size_min of one
   far.dist_max = 2 * m;
   for (std::size_t i = 0; i < runs.size(); ++i) {
     const int t = runs[i].tooth, k = t - first_loaded;
     const std::pair<int, int> seg{0, int(i)};
     if (k >= 0 && k < K && runs[i].cls == flank_right) contact.segments.push_back(seg);
-    if (k >= -1 && k <= K) near.segments.push_back(seg);
-    else far.segments.push_back(seg);
+    if (k >= -1 && k <= K) {
+      near.segments.push_back(seg);
+      continue;
+    }
+    // The other teeth by points about far.size_min apart along their boundary: Gmsh's
+    // distance to hundreds of curves (200 samples each) is slow to evaluate, to a point
+    // cloud fast (a whole gear of 62 teeth: 4 s less meshing).
+    const std::vector<Vector2d>& pts = runs[i].points;
+    double since = 1e300;
+    for (std::size_t j = 0; j < pts.size(); ++j) {
+      if (j > 0) since += (pts[j] - pts[j - 1]).norm();
+      if (since >= far.size_min) far.points.push_back(pts[j]), since = 0;
+    }
   }
   spec.refinements = {contact, near};
-  if (!far.segments.empty()) spec.refinements.push_back(far);
+  if (!far.points.empty()) spec.refinements.push_back(far);
   mesh = fe::mesh_with_gmsh(spec);
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) edges_of_tag[mesh.edge_tags[e]].push_back(int(e));
 }
@@ -422,6 +435,84 @@ bool same_options(const FeGearOptions& a, const FeGearOptions& b) {
 
 }  // namespace
 
+namespace {
+
+// The contact points of the pairs at mesh phase phi on gear 1 or 2: pair k at
+// s = (phi + k) pb from A while s <= AE (as mesh_phases), roll lengths T1A + s on gear 1
+// and T1T2 - T1A - s on gear 2.
+std::vector<FlankPoint> pair_points(const PathOfContact& path, double phi, int gear) {
+  std::vector<FlankPoint> out;
+  for (int k = 0;; ++k) {
+    const double s = (phi + k) * path.base_pitch;
+    if (s > path.AE * (1 + 1e-12)) break;
+    const double xi1 = path.T1A + std::min(s, path.AE);
+    out.push_back({k, gear == 1 ? xi1 : path.T1T2 - xi1});
+  }
+  return out;
+}
+
+// Knots in the mesh phase for interpolating the compliances: j / N, j = 0..N, and the
+// phase at which each pair k reaches E (phi = eps - k, when below 1). Entry (k, l) of the
+// compliance is a smooth function of the phase on [0, min(phi_max k, phi_max l)],
+// interpolated piecewise cubically through its knots.
+struct PhaseGrid {
+  std::vector<double> knots;
+  PhaseGrid(const PathOfContact& path, int n) {
+    for (int j = 0; j <= n; ++j) knots.push_back(double(j) / n);
+    const double eps = path.AE / path.base_pitch;
+    for (int k = 0; eps - k > 0; ++k)
+      if (eps - k < 1) knots.push_back(eps - k);
+    std::sort(knots.begin(), knots.end());
+    knots.erase(std::unique(knots.begin(), knots.end(), [](double a, double b) { return std::abs(a - b) < 1e-12; }),
+                knots.end());
+  }
+  Eigen::MatrixXd interpolate(const std::vector<Eigen::MatrixXd>& at_knots, double phi, int n) const {
+    Eigen::MatrixXd C(n, n);
+    for (int k = 0; k < n; ++k)
+      for (int l = k; l < n; ++l) {
+        std::vector<double> x, y;
+        for (std::size_t j = 0; j < knots.size(); ++j)
+          if (at_knots[j].rows() > std::max(k, l)) x.push_back(knots[j]), y.push_back(at_knots[j](k, l));
+        C(k, l) = C(l, k) = spline_value(x, y, std::clamp(phi, x.front(), x.back()));
+      }
+    return C;
+  }
+  // Piecewise cubic Lagrange interpolation: the four knots nearest to `at` (one-sided at
+  // the ends), error O(h^4) up to the ends (a natural spline's free ends give O(h^2)).
+  static double spline_value(const std::vector<double>& x, const std::vector<double>& y, double at) {
+    const int n = int(x.size());
+    if (n == 1) return y[0];
+    const int order = std::min(n, 4);
+    const int i = int(std::upper_bound(x.begin(), x.end(), at) - x.begin()) - 1;   // at in [x_i, x_i+1)
+    const int first = std::clamp(i - (order / 2 - 1), 0, n - order);
+    double v = 0;
+    for (int a = first; a < first + order; ++a) {
+      double basis = 1;
+      for (int b = first; b < first + order; ++b)
+        if (b != a) basis *= (at - x[b]) / (x[a] - x[b]);
+      v += basis * y[a];
+    }
+    return v;
+  }
+};
+
+}  // namespace
+
+void FePairModel::compliances(const std::vector<std::vector<FlankPoint>>& sets1,
+                              const std::vector<std::vector<FlankPoint>>& sets2, bool shared,
+                              std::vector<Eigen::MatrixXd>& c1, std::vector<Eigen::MatrixXd>& c2) const {
+  if (shared) {
+    std::vector<std::vector<FlankPoint>> all = sets1;
+    all.insert(all.end(), sets2.begin(), sets2.end());
+    const std::vector<Eigen::MatrixXd> c = gear1_->compliance(all);
+    c1.assign(c.begin(), c.begin() + long(sets1.size()));
+    c2.assign(c.begin() + long(sets1.size()), c.end());
+  } else {
+    c1 = gear1_->compliance(sets1);
+    c2 = gear2_->compliance(sets2);
+  }
+}
+
 FePairModel::FePairModel(const PairSteModel& pair, int samples, const FePairOptions& options)
     : pair_(pair), options_(options), path_(pair.path()) {
   const int K = int(std::ceil(path_.contact_ratio - 1e-12));
@@ -437,27 +528,28 @@ FePairModel::FePairModel(const PairSteModel& pair, int samples, const FePairOpti
   length_ = std::min(pair.gear1.face_width, pair.gear2.face_width);
 
   const std::vector<MeshPhase> kinematics = mesh_phases(pair, samples, [](double, double, bool) { return 1.0; });
-  const double rb1 = pair.gear1.base_radius(), rb2 = pair.gear2.base_radius();
   std::vector<std::vector<FlankPoint>> sets1, sets2;
   for (const MeshPhase& q : kinematics) {
-    std::vector<FlankPoint> p1, p2;
-    for (int k = 0; k < int(q.pairs.size()); ++k) {
-      p1.push_back({k, std::sqrt(std::max(0.0, q.pairs[k].r1 * q.pairs[k].r1 - rb1 * rb1))});
-      p2.push_back({k, std::sqrt(std::max(0.0, q.pairs[k].r2 * q.pairs[k].r2 - rb2 * rb2))});
-    }
-    sets1.push_back(p1);
-    sets2.push_back(p2);
+    sets1.push_back(pair_points(path_, q.phase, 1));
+    sets2.push_back(pair_points(path_, q.phase, 2));
+    if (sets1.back().size() != q.pairs.size()) throw std::logic_error("FePairModel: pairs differ from mesh_phases");
   }
   std::vector<Eigen::MatrixXd> c1, c2;
-  if (shared) {
-    std::vector<std::vector<FlankPoint>> all = sets1;
-    all.insert(all.end(), sets2.begin(), sets2.end());
-    std::vector<Eigen::MatrixXd> c = gear1_->compliance(all);
-    c1.assign(c.begin(), c.begin() + long(sets1.size()));
-    c2.assign(c.begin() + long(sets1.size()), c.end());
+  if (options.knots_per_base_pitch > 0) {
+    const PhaseGrid grid(path_, options.knots_per_base_pitch);
+    std::vector<std::vector<FlankPoint>> knots1, knots2;
+    for (double phi : grid.knots) {
+      knots1.push_back(pair_points(path_, phi, 1));
+      knots2.push_back(pair_points(path_, phi, 2));
+    }
+    std::vector<Eigen::MatrixXd> k1, k2;
+    compliances(knots1, knots2, shared, k1, k2);
+    for (const MeshPhase& q : kinematics) {
+      c1.push_back(grid.interpolate(k1, q.phase, int(q.pairs.size())));
+      c2.push_back(grid.interpolate(k2, q.phase, int(q.pairs.size())));
+    }
   } else {
-    c1 = gear1_->compliance(sets1);
-    c2 = gear2_->compliance(sets2);
+    compliances(sets1, sets2, shared, c1, c2);
   }
   for (std::size_t q = 0; q < kinematics.size(); ++q) {
     FePhase p;
