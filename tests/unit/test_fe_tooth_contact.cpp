@@ -13,8 +13,11 @@
 #include "gearhb/gears/coupled_load_sharing.hpp"
 #include "gearhb/gears/fe_tooth_contact.hpp"
 #include "gearhb/gears/load_sharing.hpp"
+#include "fe_pair_examples.hpp"
 
 using namespace gearhb;
+using fe_pair_examples::issue_pairs;
+using fe_pair_examples::PairCase;
 
 // C diagonal: the coupled solver must be load_sharing.hpp's elastic active set (a second
 // method: sorted gaps and closed forms there, enumeration of KKT sets here).
@@ -102,46 +105,6 @@ GearGeometry thesis_gear() {
   return g;
 }
 
-// The three pairs of the issue's table, at their files' largest torque
-// (chapters/gearhb_gear/examples/{thesis_pair,fzg_c,ross_pair}.json; GEARS.md §3).
-struct PairCase {
-  const char* name;
-  PairSteModel pair;
-  FePairOptions fe;
-  double torque;
-};
-
-GearGeometry spur(double m, int z, double x, double b) {
-  GearGeometry g;
-  g.module = m;
-  g.teeth = z;
-  g.profile_shift = x;
-  g.addendum = m;
-  g.dedendum = 1.25 * m;
-  g.face_width = b;
-  return g;
-}
-
-std::vector<PairCase> issue_pairs() {
-  std::vector<PairCase> out(3);
-  out[0].name = "thesis 50/50 m 3";
-  out[0].pair.gear1 = out[0].pair.gear2 = spur(3e-3, 50, 0, 0.02);
-  out[0].pair.youngs_modulus1 = out[0].pair.youngs_modulus2 = 207e9;
-  out[0].torque = 300;
-  out[1].name = "FZG C 16/24 m 4.5";
-  out[1].pair.gear1 = spur(4.5e-3, 16, 0.1817, 0.014);
-  out[1].pair.gear2 = spur(4.5e-3, 24, 0.1715, 0.014);
-  out[1].pair.centre_distance = 0.0915;
-  out[1].pair.youngs_modulus1 = out[1].pair.youngs_modulus2 = 206e9;
-  out[1].torque = 302;
-  out[2].name = "ROSS 62/62 m 2";
-  out[2].pair.gear1 = out[2].pair.gear2 = spur(2e-3, 62, 0, 0.02);
-  out[2].pair.youngs_modulus1 = out[2].pair.youngs_modulus2 = 206e9;
-  out[2].fe.gear1.rim_radius = out[2].fe.gear2.rim_radius = 0.0175;
-  out[2].torque = 200;
-  return out;
-}
-
 void set_density(FePairOptions& o, double scale) { o.gear1.density.scale = o.gear2.density.scale = scale; }
 void set_sector(FePairOptions& o, int teeth, CutFaces cuts) {
   o.gear1.sector_teeth = o.gear2.sector_teeth = teeth;
@@ -158,8 +121,8 @@ PairNumbers pair_numbers(const PairCase& c, const FePairOptions& o) {
   const auto t0 = std::chrono::steady_clock::now();
   const FePairModel m(c.pair, 64, o);
   PairNumbers n;
-  const double F = m.force(c.torque);
-  n.mean = fe_mean_stiffness(m.ste(c.torque), F);
+  const double F = m.force(c.torque());
+  n.mean = fe_mean_stiffness(m.ste(c.torque()), F);
   n.single = m.single_pair_stiffness(m.path().AC, F);
   n.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   n.nodes1 = m.gear1().mesh().node_count();
@@ -265,7 +228,7 @@ TEST(FePair, PhaseInterpolationEqualsLoadingEveryPhaseAwayFromTheTips) {
   const FePairModel interpolated(c.pair, 64, o);
   o.knots_per_base_pitch = 0;
   const FePairModel direct(c.pair, 64, o);
-  const auto a = interpolated.ste(c.torque), b = direct.ste(c.torque);
+  const auto a = interpolated.ste(c.torque()), b = direct.ste(c.torque());
   const PathOfContact& path = direct.path();
   // Roll-length margin: w + one knot spacing (pb / 16) along the path.
   const double margin = c.pair.gear1.module * o.gear1.load_width * 2 + path.base_pitch / 16;
@@ -351,11 +314,11 @@ TEST(DISABLED_FeToothContactStudy, SectorSize) {
 TEST(DISABLED_FeToothContactStudy, PairsBesideFastModels) {
   for (const PairCase& c : issue_pairs()) {
     const FePairModel m(c.pair, 64, c.fe);
-    const double F = m.force(c.torque);
-    const auto ste = m.ste(c.torque);
+    const double F = m.force(c.torque());
+    const auto ste = m.ste(c.torque());
     double lo = 1e300, hi = -1e300;
     for (const auto& p : ste) lo = std::min(lo, p.ste), hi = std::max(hi, p.ste);
-    std::cout << c.name << " T1 " << c.torque << " N m, F = T1/rb1 " << F << " N: mean " << fe_mean_stiffness(ste, F) / 1e6
+    std::cout << c.name << " T1 " << c.torque() << " N m, F = T1/rb1 " << F << " N: mean " << fe_mean_stiffness(ste, F) / 1e6
               << " MN/m, single pair at C " << m.single_pair_stiffness(m.path().AC, F) / 1e6 << " MN/m, STE mean "
               << 0.5 * (lo + hi) * 1e6 << " um, p-p " << (hi - lo) * 1e6 << " um, nodes " << m.gear1().mesh().node_count()
               << " / " << m.gear2().mesh().node_count() << ", bore " << m.gear1().bore_radius() * 1e3 << " / "
