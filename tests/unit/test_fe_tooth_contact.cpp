@@ -250,6 +250,27 @@ TEST(FePair, PhaseInterpolationEqualsLoadingEveryPhaseAwayFromTheTips) {
   EXPECT_LE(worst_inner, 4e-4);
 }
 
+// New reliefs on a built model = a model built with them (the separations are the only
+// change); and a relief sized far above the deflection unloads the entering pair.
+TEST(FePair, ReliefsChangedWithoutRebuildingEqualAModelBuiltWithThem) {
+  PairSteModel pair;
+  pair.gear1 = pair.gear2 = thesis_gear();
+  FePairOptions o;
+  o.gear1.sector_teeth = o.gear2.sector_teeth = 5;
+  FePairModel reused(pair, 16, o);
+  pair.relief1 = pair.relief2 = tip_relief(pair.gear1, 20e-6, ReliefStart::roll_angle_deg, 24.0, ReliefShape::linear);
+  reused.set_reliefs(pair.relief1, pair.relief2);
+  const FePairModel built(pair, 16, o);
+  const auto a = reused.ste(300), b = built.ste(300);
+  int unloaded = 0;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    EXPECT_EQ(a[q].ste, b[q].ste);
+    EXPECT_EQ(a[q].loaded, b[q].loaded);
+    unloaded += a[q].loaded < int(built.phases()[q].pairs.size());
+  }
+  EXPECT_GT(unloaded, 0);
+}
+
 TEST(FeToothContact, RefusesPointsOffTheFlankAndTooSmallSectors) {
   const GearGeometry g = thesis_gear();
   FeGearOptions o;

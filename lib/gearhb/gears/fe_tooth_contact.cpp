@@ -611,6 +611,17 @@ std::vector<FeStePoint> FePairModel::ste(double torque) const {
   return out;
 }
 
+void FePairModel::set_reliefs(const TipRelief& relief1, const TipRelief& relief2) {
+  pair_.relief1 = relief1;
+  pair_.relief2 = relief2;
+  const double rb1 = pair_.gear1.base_radius();
+  for (FePhase& p : phases_)
+    for (PairContact& c : p.pairs) {   // as mesh_phases computes it
+      const double T1P = std::sqrt(std::max(0.0, c.r1 * c.r1 - rb1 * rb1));
+      c.separation = tip_relief_at(relief1, T1P) + tip_relief_at(relief2, path_.T1T2 - T1P);
+    }
+}
+
 double FePairModel::single_pair_stiffness(double s, double F) const {
   const ContactRadii r = contact_radii(pair_.gear1, pair_.gear2, path_, s);
   PairContact c;

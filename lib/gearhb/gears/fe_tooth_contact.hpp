@@ -186,6 +186,9 @@ class FePairModel {
   std::vector<FeStePoint> ste(double torque) const;
   // The contact problem at one phase for tooth force F [N] (section 3).
   FeStePoint solve_phase(const FePhase& phase, double force) const;
+  // New tip reliefs without rebuilding the FE models (the FE geometry has none, section
+  // 1): only the separations g_i of the phases change.
+  void set_reliefs(const TipRelief& relief1, const TipRelief& relief2);
   // One pair alone at s from A (no neighbour loaded): its stiffness F / X at tooth force F.
   double single_pair_stiffness(double s, double force) const;
 
