@@ -209,6 +209,14 @@ TEST(FePair, SinglePairZoneIsTheSeriesOfBothGears) {
     EXPECT_NEAR(ste[q].ste, F * C, 1e-9 * F * C);
   }
   EXPECT_GT(single, 0);
+  // The same points as PairStePoint: without relief every geometric pair is loaded, so
+  // the loaded contact ratio is the geometric one.
+  const auto points = m.pair_ste(300);
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    EXPECT_EQ(points[q].ste, ste[q].ste);
+    EXPECT_EQ(points[q].loaded, int(points[q].mesh.pairs.size()));
+  }
+  EXPECT_NEAR(loaded_contact_ratio(points, m.path()), m.path().contact_ratio, 1e-12);
 }
 
 // The phase interpolation of the compliances (16 knots per cycle) against loading every

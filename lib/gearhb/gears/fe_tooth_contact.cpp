@@ -611,6 +611,22 @@ std::vector<FeStePoint> FePairModel::ste(double torque) const {
   return out;
 }
 
+std::vector<PairStePoint> FePairModel::pair_ste(double torque) const {
+  std::vector<PairStePoint> out;
+  for (const FePhase& p : phases_) {
+    const FeStePoint q = solve_phase(p, force(torque));
+    PairStePoint o;
+    o.mesh.phase = p.phase;
+    o.mesh.pairs = p.pairs;
+    for (std::size_t k = 0; k < p.pairs.size(); ++k) o.mesh.pairs[k].force = q.force(Eigen::Index(k));
+    o.loaded = q.loaded;
+    o.approach = o.ste = q.ste;
+    o.hertz = 0;
+    out.push_back(o);
+  }
+  return out;
+}
+
 void FePairModel::set_reliefs(const TipRelief& relief1, const TipRelief& relief2) {
   pair_.relief1 = relief1;
   pair_.relief2 = relief2;

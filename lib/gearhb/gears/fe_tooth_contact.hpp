@@ -184,6 +184,10 @@ class FePairModel {
 
   double force(double torque) const;   // T1 / rb1 [N]
   std::vector<FeStePoint> ste(double torque) const;
+  // The same as ste_continuous.hpp's PairStePoint (what gearhb_gear's tables, Harris map
+  // and dynamics take): forces in mesh.pairs, approach = ste = X, hertz = 0 (the contact
+  // compliance is inside X).
+  std::vector<PairStePoint> pair_ste(double torque) const;
   // The contact problem at one phase for tooth force F [N] (section 3).
   FeStePoint solve_phase(const FePhase& phase, double force) const;
   // New tip reliefs without rebuilding the FE models (the FE geometry has none, section
