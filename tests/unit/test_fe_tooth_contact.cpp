@@ -1,0 +1,376 @@
+// Tooth contact by finite elements (issue 33 §2-3): the coupled load sharing
+// (coupled_load_sharing.hpp) against load_sharing.hpp and closed forms, and the FE
+// influence coefficients (fe_tooth_contact.hpp) against their own physics (Maxwell-Betti,
+// the resolved Hertz width). Convergence studies: DISABLED_ tests, results in
+// reference/fe_tooth_contact.md.
+#include <chrono>
+#include <cmath>
+#include <iostream>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/gears/coupled_load_sharing.hpp"
+#include "gearhb/gears/fe_tooth_contact.hpp"
+#include "gearhb/gears/load_sharing.hpp"
+#include "fe_pair_examples.hpp"
+
+using namespace gearhb;
+using fe_pair_examples::issue_pairs;
+using fe_pair_examples::PairCase;
+
+// C diagonal: the coupled solver must be load_sharing.hpp's elastic active set (a second
+// method: sorted gaps and closed forms there, enumeration of KKT sets here).
+TEST(CoupledLoadSharing, DiagonalEqualsUncoupledShareLoad) {
+  std::mt19937 rng(33);
+  std::uniform_real_distribution<double> k(1e8, 6e8), g(0.0, 12e-6), F(50.0, 2e4);
+  for (int trial = 0; trial < 300; ++trial) {
+    const int n = 1 + trial % 3;
+    std::vector<ContactPair> pairs(n);
+    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(n, n);
+    Eigen::VectorXd gap(n);
+    for (int i = 0; i < n; ++i) {
+      pairs[i] = {k(rng), trial % 5 == 0 ? 0.0 : g(rng)};
+      C(i, i) = 1.0 / pairs[i].stiffness;
+      gap(i) = pairs[i].separation;
+    }
+    const double force = F(rng);
+    const LoadShare a = share_load(pairs, force, HertzCount::none, TwoPairHertz::equal_split, 0.02);
+    const CoupledShare b = share_load_coupled(C, gap, force);
+    EXPECT_EQ(a.loaded, b.loaded);
+    EXPECT_NEAR(b.approach, a.approach, 1e-12 * a.approach);
+    for (int i = 0; i < n; ++i) EXPECT_NEAR(b.force(i), a.force[i], 1e-10 * force);
+  }
+}
+
+// Two coupled contacts, no gaps, both loaded: a f1 + c f2 = c f1 + b f2 = X, f1 + f2 = F
+// give f1 = F (b - c) / (a + b - 2c), X = (ab - c^2) F / (a + b - 2c). With a large gap on
+// the second one it stays open: f = (F, 0), X = a F.
+TEST(CoupledLoadSharing, TwoContactsClosedForms) {
+  const double a = 4e-9, b = 6e-9, c = 1.5e-9, F = 3000;
+  Eigen::MatrixXd C(2, 2);
+  C << a, c, c, b;
+  const CoupledShare s = share_load_coupled(C, Eigen::Vector2d(0, 0), F);
+  EXPECT_EQ(s.loaded, 2);
+  EXPECT_NEAR(s.force(0), F * (b - c) / (a + b - 2 * c), 1e-9 * F);
+  EXPECT_NEAR(s.approach, (a * b - c * c) * F / (a + b - 2 * c), 1e-12 * a * F);
+  const CoupledShare t = share_load_coupled(C, Eigen::Vector2d(0, 1e-3), F);
+  EXPECT_EQ(t.loaded, 1);
+  EXPECT_EQ(t.force(1), 0.0);
+  EXPECT_NEAR(t.approach, a * F, 1e-12 * a * F);
+  // The coupling can lift a contact off without any gap: the unconstrained f1 = F (b - c) /
+  // (a + b - 2c) is negative when c > b; then f = (0, F), X = b F.
+  Eigen::MatrixXd D(2, 2);
+  D << 6e-9, 4e-9, 4e-9, 3e-9;   // positive definite, c > b
+  const CoupledShare u = share_load_coupled(D, Eigen::Vector2d(0, 0), F);
+  EXPECT_EQ(u.loaded, 1);
+  EXPECT_EQ(u.force(0), 0.0);
+  EXPECT_NEAR(u.approach, 3e-9 * F, 1e-12 * 3e-9 * F);
+}
+
+// Random coupled SPD problems: the KKT conditions checked here, independently.
+TEST(CoupledLoadSharing, KktConditionsOnRandomCoupledProblems) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  for (int trial = 0; trial < 200; ++trial) {
+    const int n = 1 + trial % 4;
+    Eigen::MatrixXd A(n, n);
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < n; ++j) A(i, j) = u(rng);
+    const Eigen::MatrixXd C = 1e-9 * (A * A.transpose() + 0.1 * Eigen::MatrixXd::Identity(n, n));
+    Eigen::VectorXd g(n);
+    for (int i = 0; i < n; ++i) g(i) = 5e-6 * u(rng);
+    const double F = 100 + 5000 * u(rng);
+    const CoupledShare s = share_load_coupled(C, g, F);
+    const Eigen::VectorXd w = C * s.force + g - Eigen::VectorXd::Constant(n, s.approach);
+    EXPECT_NEAR(s.force.sum(), F, 1e-10 * F);
+    for (int i = 0; i < n; ++i) {
+      EXPECT_GE(s.force(i), 0.0);
+      EXPECT_GE(w(i), -1e-12 * s.approach);
+      EXPECT_LE(std::abs(s.force(i) * w(i)), 1e-10 * F * s.approach);
+    }
+  }
+}
+
+namespace {
+
+// The thesis gear (thesis_pair.json: z 50, m 3 mm, b 20 mm, 20 deg, E 207 GPa, nu 0.3).
+GearGeometry thesis_gear() {
+  GearGeometry g;
+  g.module = 3e-3;
+  g.teeth = 50;
+  g.addendum = 3e-3;
+  g.dedendum = 3.75e-3;
+  g.face_width = 0.02;
+  return g;
+}
+
+void set_density(FePairOptions& o, double scale) { o.gear1.density.scale = o.gear2.density.scale = scale; }
+void set_sector(FePairOptions& o, int teeth, CutFaces cuts) {
+  o.gear1.sector_teeth = o.gear2.sector_teeth = teeth;
+  o.gear1.cut_faces = o.gear2.cut_faces = cuts;
+}
+
+// Mean mesh stiffness over 64 phases and the single-pair stiffness at the pitch point,
+// both at the case's torque [N/m].
+struct PairNumbers {
+  double mean = 0, single = 0, seconds = 0;
+  int nodes1 = 0, nodes2 = 0;
+};
+PairNumbers pair_numbers(const PairCase& c, const FePairOptions& o) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const FePairModel m(c.pair, 64, o);
+  PairNumbers n;
+  const double F = m.force(c.torque());
+  n.mean = fe_mean_stiffness(m.ste(c.torque()), F);
+  n.single = m.single_pair_stiffness(m.path().AC, F);
+  n.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  n.nodes1 = m.gear1().mesh().node_count();
+  n.nodes2 = m.gear2().mesh().node_count();
+  return n;
+}
+
+// Richardson extrapolation from three values at sizes h, h / r, h / r^2: observed order
+// p = ln((f1 - f2) / (f2 - f3)) / ln r, limit f3 + (f3 - f2) / (r^p - 1).
+struct Richardson {
+  double order = 0, limit = 0;
+};
+Richardson richardson(double f1, double f2, double f3, double r) {
+  Richardson out;
+  out.order = std::log((f1 - f2) / (f2 - f3)) / std::log(r);
+  out.limit = f3 + (f3 - f2) / (std::pow(r, out.order) - 1);
+  return out;
+}
+
+}  // namespace
+
+// The split of section 2 (fe_tooth_contact.hpp): the compliance at the reference width w
+// plus the half-plane term 2 (1 - nu^2) / (pi E b) ln(w / a) must give what the FE gives
+// with the load spread over a itself on a mesh resolving a (h = a / 4). Thesis gear,
+// pitch point, a = w / 5 (the term is then 18 % of the tooth's compliance). A 3-tooth
+// sector: the check is local (the sector changes both sides alike).
+TEST(FeToothContact, HertzWidthTermMatchesResolvedWidth) {
+  const GearGeometry g = thesis_gear();
+  const double xi_c = g.base_radius() * std::tan(g.pressure_angle_rad());
+  FeGearOptions o;
+  o.sector_teeth = 3;
+  o.loaded_teeth = 1;
+  const FeGearModel reference(g, 207e9, 0.3, o);
+  o.load_width = 0.02;
+  o.density.contact_size = 0.005;
+  const FeGearModel resolved(g, 207e9, 0.3, o);
+  const double a = resolved.load_half_width();
+  const double split = reference.compliance({{0, xi_c}})(0, 0) + reference.width_correction(a);
+  const double fe = resolved.compliance({{0, xi_c}})(0, 0);
+  const double term = reference.width_correction(a);
+  EXPECT_NEAR(split, fe, 0.02 * term);
+}
+
+// Maxwell-Betti: C_ij = C_ji up to the spread of the load over w (read at a point).
+// Whole thesis gear: the same point on two neighbouring loaded teeth has the same
+// compliance (rotational symmetry; both teeth meshed alike).
+TEST(FeToothContact, ReciprocityAndRotationalSymmetryOfTheWholeGear) {
+  const GearGeometry g = thesis_gear();
+  const double xi_c = g.base_radius() * std::tan(g.pressure_angle_rad()), pb = g.base_pitch();
+  const FeGearModel m(g, 207e9, 0.3);
+  const Eigen::MatrixXd C = m.raw_compliance({{0, xi_c - 0.5 * pb}, {1, xi_c + 0.5 * pb}, {0, xi_c}, {1, xi_c}});
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < i; ++j) EXPECT_NEAR(C(i, j), C(j, i), 2e-3 * std::abs(C(i, j)));
+  EXPECT_NEAR(C(2, 2), C(3, 3), 1e-3 * C(2, 2));
+  // Neighbours deflect each other through the body, in the same sense.
+  EXPECT_GT(C(0, 1), 0.0);
+}
+
+// The pair: identical gears share one model; in the single-pair zone the STE is the two
+// gears' compliances in series with the contact term, F (C1 + C2 + local(F)).
+TEST(FePair, SinglePairZoneIsTheSeriesOfBothGears) {
+  PairSteModel pair;
+  pair.gear1 = pair.gear2 = thesis_gear();
+  FePairOptions o;
+  o.gear1.sector_teeth = o.gear2.sector_teeth = 5;
+  const FePairModel m(pair, 16, o);
+  EXPECT_EQ(&m.gear1(), &m.gear2());
+  const double F = m.force(300);
+  EXPECT_DOUBLE_EQ(F, 300 / pair.gear1.base_radius());
+  const auto ste = m.ste(300);
+  int single = 0;
+  for (std::size_t q = 0; q < ste.size(); ++q) {
+    const FePhase& p = m.phases()[q];
+    EXPECT_NEAR(ste[q].force.sum(), F, 1e-9 * F);
+    if (p.pairs.size() != 1) continue;
+    ++single;
+    const double rb = pair.gear1.base_radius();
+    const double xi1 = std::sqrt(p.pairs[0].r1 * p.pairs[0].r1 - rb * rb);
+    const double xi2 = std::sqrt(p.pairs[0].r2 * p.pairs[0].r2 - rb * rb);
+    const double estar = 1 / (2 * (1 - 0.09) / 207e9);
+    const double a = std::sqrt(4 * F * (xi1 * xi2 / (xi1 + xi2)) / (M_PI * 0.02 * estar));
+    const double C = m.gear1().compliance({{0, xi1}})(0, 0) + m.gear1().compliance({{0, xi2}})(0, 0) +
+                     2 * m.gear1().width_correction(a);
+    EXPECT_NEAR(ste[q].ste, F * C, 1e-9 * F * C);
+  }
+  EXPECT_GT(single, 0);
+  // The same points as PairStePoint: without relief every geometric pair is loaded, so
+  // the loaded contact ratio is the geometric one.
+  const auto points = m.pair_ste(300);
+  for (std::size_t q = 0; q < points.size(); ++q) {
+    EXPECT_EQ(points[q].ste, ste[q].ste);
+    EXPECT_EQ(points[q].loaded, int(points[q].mesh.pairs.size()));
+  }
+  EXPECT_NEAR(loaded_contact_ratio(points, m.path()), m.path().contact_ratio, 1e-12);
+}
+
+// The phase interpolation of the compliances (16 knots per cycle) against loading every
+// one of 64 phases itself (FZG C: two different gears; 5-tooth sectors for speed, the
+// interpolation does not depend on them). Where every contact point lies more than w + one
+// knot spacing from both tips the compliances are smooth in the phase and the STE must
+// agree to within the default mesh's own discretisation error (4e-4: the mesh study in
+// reference/fe_tooth_contact.md; the directly loaded values carry that mesh ripple as the
+// load moves across elements); nearer a tip the unit load is cut off by the tip corner
+// (a kink), so there the difference is not bounded here (fe_tooth_contact.hpp,
+// knots_per_base_pitch).
+TEST(FePair, PhaseInterpolationEqualsLoadingEveryPhaseAwayFromTheTips) {
+  const PairCase c = issue_pairs()[1];
+  FePairOptions o = c.fe;
+  set_sector(o, 5, CutFaces::fixed);
+  o.knots_per_base_pitch = 16;
+  const FePairModel interpolated(c.pair, 64, o);
+  o.knots_per_base_pitch = 0;
+  const FePairModel direct(c.pair, 64, o);
+  const auto a = interpolated.ste(c.torque()), b = direct.ste(c.torque());
+  const PathOfContact& path = direct.path();
+  // Roll-length margin: w + one knot spacing (pb / 16) along the path.
+  const double margin = c.pair.gear1.module * o.gear1.load_width * 2 + path.base_pitch / 16;
+  const double tip1 = std::sqrt(std::pow(c.pair.gear1.tip_radius(), 2) - std::pow(c.pair.gear1.base_radius(), 2));
+  const double tip2 = std::sqrt(std::pow(c.pair.gear2.tip_radius(), 2) - std::pow(c.pair.gear2.base_radius(), 2));
+  double worst_inner = 0;
+  int inner = 0;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    bool near_tip = false;
+    for (const PairContact& p : direct.phases()[q].pairs) {
+      const double xi1 = path.T1A + p.s, xi2 = path.T1T2 - xi1;
+      near_tip = near_tip || tip1 - xi1 < margin || tip2 - xi2 < margin;
+    }
+    if (near_tip) continue;
+    ++inner;
+    worst_inner = std::max(worst_inner, std::abs(a[q].ste / b[q].ste - 1));
+  }
+  EXPECT_GT(inner, 32);
+  EXPECT_LE(worst_inner, 4e-4);
+}
+
+// New reliefs on a built model = a model built with them (the separations are the only
+// change); and a relief sized far above the deflection unloads the entering pair.
+TEST(FePair, ReliefsChangedWithoutRebuildingEqualAModelBuiltWithThem) {
+  PairSteModel pair;
+  pair.gear1 = pair.gear2 = thesis_gear();
+  FePairOptions o;
+  o.gear1.sector_teeth = o.gear2.sector_teeth = 5;
+  FePairModel reused(pair, 16, o);
+  pair.relief1 = pair.relief2 = tip_relief(pair.gear1, 20e-6, ReliefStart::roll_angle_deg, 24.0, ReliefShape::linear);
+  reused.set_reliefs(pair.relief1, pair.relief2);
+  const FePairModel built(pair, 16, o);
+  const auto a = reused.ste(300), b = built.ste(300);
+  int unloaded = 0;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    EXPECT_EQ(a[q].ste, b[q].ste);
+    EXPECT_EQ(a[q].loaded, b[q].loaded);
+    unloaded += a[q].loaded < int(built.phases()[q].pairs.size());
+  }
+  EXPECT_GT(unloaded, 0);
+}
+
+TEST(FeToothContact, RefusesPointsOffTheFlankAndTooSmallSectors) {
+  const GearGeometry g = thesis_gear();
+  FeGearOptions o;
+  o.sector_teeth = 1;
+  o.loaded_teeth = 2;
+  EXPECT_THROW(FeGearModel(g, 207e9, 0.3, o), std::invalid_argument);
+  o.loaded_teeth = 1;
+  const FeGearModel m(g, 207e9, 0.3, o);
+  EXPECT_THROW(m.compliance({{0, m.tip_roll() + 1e-4}}), std::invalid_argument);
+  EXPECT_THROW(m.compliance({{1, m.tip_roll() - 1e-3}}), std::invalid_argument);
+}
+
+// Mesh convergence of the mean mesh stiffness and the pitch-point single-pair stiffness:
+// element sizes times sqrt 2, 1 (default), 1/sqrt 2, 1/2; Richardson from the three
+// finest; the default's error against the extrapolated value (target <= 1 %).
+TEST(DISABLED_FeToothContactStudy, MeshConvergence) {
+  const std::vector<double> scales{std::sqrt(2.0), 1.0, 1 / std::sqrt(2.0), 0.5};
+  for (const PairCase& c : issue_pairs()) {
+    std::vector<PairNumbers> n;
+    for (double s : scales) {
+      FePairOptions o = c.fe;
+      set_density(o, s);
+      o.gear1.max_nodes = o.gear2.max_nodes = 1e7;   // the size-field estimate is far above the real count
+      n.push_back(pair_numbers(c, o));
+      std::cout << c.name << " scale " << s << " nodes " << n.back().nodes1 << " / " << n.back().nodes2
+                << " mean " << n.back().mean / 1e6 << " MN/m single " << n.back().single / 1e6 << " MN/m ("
+                << n.back().seconds << " s)\n";
+    }
+    const Richardson rm = richardson(n[1].mean, n[2].mean, n[3].mean, std::sqrt(2.0));
+    const Richardson rs = richardson(n[1].single, n[2].single, n[3].single, std::sqrt(2.0));
+    const double em = std::abs(n[1].mean - rm.limit) / rm.limit, es = std::abs(n[1].single - rs.limit) / rs.limit;
+    std::cout << c.name << " mean: limit " << rm.limit / 1e6 << " order " << rm.order << " default error " << 100 * em
+              << " %; single: limit " << rs.limit / 1e6 << " order " << rs.order << " default error " << 100 * es
+              << " %\n";
+    EXPECT_LE(em, 0.01);
+    EXPECT_LE(es, 0.01);
+  }
+}
+
+// Sector size: 3, 5, 7 teeth (cut faces fixed and free) and the whole gear, default mesh.
+TEST(DISABLED_FeToothContactStudy, SectorSize) {
+  for (const PairCase& c : issue_pairs()) {
+    FePairOptions whole = c.fe;
+    set_sector(whole, 0, CutFaces::fixed);
+    const PairNumbers w = pair_numbers(c, whole);
+    std::cout << c.name << " whole gear: nodes " << w.nodes1 << " / " << w.nodes2 << " mean " << w.mean / 1e6
+              << " single " << w.single / 1e6 << " MN/m (" << w.seconds << " s)\n";
+    for (CutFaces cuts : {CutFaces::fixed, CutFaces::free})
+      for (int teeth : {3, 5, 7}) {
+        FePairOptions o = c.fe;
+        set_sector(o, teeth, cuts);
+        const PairNumbers n = pair_numbers(c, o);
+        std::cout << c.name << " sector " << teeth << (cuts == CutFaces::fixed ? " fixed" : " free") << ": mean "
+                  << n.mean / 1e6 << " (" << 100 * (n.mean / w.mean - 1) << " %) single " << n.single / 1e6 << " ("
+                  << 100 * (n.single / w.single - 1) << " %)\n";
+      }
+  }
+}
+
+// The three pairs at their files' largest torque beside the issue's table (beam /
+// potential energy / ISO c_gamma_alpha b, measured by gearhb_gear), default FE options.
+TEST(DISABLED_FeToothContactStudy, PairsBesideFastModels) {
+  for (const PairCase& c : issue_pairs()) {
+    const FePairModel m(c.pair, 64, c.fe);
+    const double F = m.force(c.torque());
+    const auto ste = m.ste(c.torque());
+    double lo = 1e300, hi = -1e300;
+    for (const auto& p : ste) lo = std::min(lo, p.ste), hi = std::max(hi, p.ste);
+    std::cout << c.name << " T1 " << c.torque() << " N m, F = T1/rb1 " << F << " N: mean " << fe_mean_stiffness(ste, F) / 1e6
+              << " MN/m, single pair at C " << m.single_pair_stiffness(m.path().AC, F) / 1e6 << " MN/m, STE mean "
+              << 0.5 * (lo + hi) * 1e6 << " um, p-p " << (hi - lo) * 1e6 << " um, nodes " << m.gear1().mesh().node_count()
+              << " / " << m.gear2().mesh().node_count() << ", bore " << m.gear1().bore_radius() * 1e3 << " / "
+              << m.gear2().bore_radius() * 1e3 << " mm\n";
+  }
+}
+
+// The bodies' torsion between bore and root circle (all teeth loaded equally at the pitch
+// point; rotation of the root arcs), beside the annulus r_i..r_f in torsion,
+// phi / T = (1 / (4 pi G b)) (1 / r_i^2 - 1 / r_f^2) (Timoshenko & Goodier §33).
+TEST(DISABLED_FeToothContactStudy, BodyTorsion) {
+  for (const PairCase& c : issue_pairs())
+    for (int k : {1, 2}) {
+      const GearGeometry& g = k == 1 ? c.pair.gear1 : c.pair.gear2;
+      const double E = k == 1 ? c.pair.youngs_modulus1 : c.pair.youngs_modulus2;
+      const FeGearOptions& o = k == 1 ? c.fe.gear1 : c.fe.gear2;
+      const FeGearModel m(g, E, 0.3, o);
+      const double fe = m.body_torsion_compliance();
+      const double ri = m.bore_radius(), rf = g.root_radius(), G = E / 2.6;
+      const double annulus = (1 / ri / ri - 1 / rf / rf) / (4 * M_PI * G * g.face_width);
+      const double rb = g.base_radius();
+      std::cout << c.name << " gear " << k << ": bore " << ri * 1e3 << " mm, rf " << rf * 1e3 << " mm, torsion "
+                << fe << " rad/(N m) (annulus " << annulus << "), along the line of action rb^2 c = "
+                << rb * rb * fe * 1e9 << " um/kN = 1 / " << 1 / (rb * rb * fe) / 1e6 << " MN/m\n";
+    }
+}
