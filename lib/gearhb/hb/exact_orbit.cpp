@@ -30,6 +30,47 @@ std::array<std::pair<double, double>, 8> unit_rule() {
   return r;
 }
 
+// The most sub-pieces of one piece (the rule is then no longer exact; a piece needs more only
+// for a fast mode that the damping does not remove).
+constexpr int kMaxSubPieces = 1000;
+
+// A mode with Re lambda s below this has decayed under the rounding of the state a time s into
+// a piece: its part of z is at most cond(V) |z| e^{Re lambda s}, cond(V) <= 1e4 for a
+// diagonalised propagator (floquet.hpp), and ln(2.2e-16 / 1e4) = -45.2.
+constexpr double kModeGone = -45.2;
+
+// The longest sub-piece starting a time `a` into a piece with modes `lambda` (the eigenvalues
+// of a diagonalised propagator). The 8-point rule's error on e^{lambda s} over [a, a + h']
+// scales as |e^{lambda a}| (|lambda| h')^16 (the Gauss-Legendre remainder holds the 16th
+// derivative, lambda^16 e^{lambda s}); keeping it at most that of h' |lambda| = 1 at a = 0
+// (the rule's exact case) allows h' = e^{-Re lambda a / 16} / |lambda|: a damped mode lets the
+// sub-pieces grow as it decays, and a mode gone (kModeGone) no longer limits them.
+double sub_piece(const Eigen::VectorXcd& lambda, double a) {
+  double h = INFINITY;
+  for (Eigen::Index j = 0; j < lambda.size(); ++j) {
+    const double re = lambda[j].real(), size = std::abs(lambda[j]);
+    if (re * a > kModeGone && size > 0.0) h = std::min(h, std::exp(-re * a / 16.0) / size);
+  }
+  return h;
+}
+
+// The starts (offsets in [0, h), 0 first) of the sub-pieces of a piece of length h whose
+// propagator is diagonalised, each as long as sub_piece allows. A heavily damped mode
+// (Rayleigh beta = 1 s on a gear's supports: lambda = -beta omega_n^2 ~ -1e9/s) costs the ~17
+// sub-pieces in which it decays, not h |lambda| ~ 1e5 of them. If more than kMaxSubPieces are
+// needed (a fast mode that does not decay), kMaxSubPieces equal ones.
+std::vector<double> sub_piece_starts(const Eigen::VectorXcd& lambda, double h) {
+  std::vector<double> starts{0.0};
+  for (double a = 0.0; int(starts.size()) < kMaxSubPieces;) {
+    a += sub_piece(lambda, a);
+    if (!(a < h)) return starts;
+    starts.push_back(a);
+  }
+  starts.clear();
+  for (int j = 0; j < kMaxSubPieces; ++j) starts.push_back(h * j / kMaxSubPieces);
+  return starts;
+}
+
 }  // namespace
 
 ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, const Eigen::VectorXd& x0,
@@ -42,8 +83,9 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
   Eigen::VectorXd xT, vT;
   flow_.follow(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, segments);
   // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them: for a
-  // diagonalised propagator all nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0);
-  // for a Pade propagator the maps exp(A_S x_j h), kept per (S, h) (the uniform steps share them).
+  // diagonalised propagator sub-pieces that grow as its damped modes decay (sub_piece_starts)
+  // and all nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0); for a Pade propagator
+  // uniform sub-pieces and the maps exp(A_S x_j h), kept per (S, h) (the uniform steps share them).
   const auto rule = unit_rule();
   std::map<std::pair<unsigned, double>, Eigen::MatrixXd> step_maps;
   auto step_of = [&](unsigned S, double h) -> const Eigen::MatrixXd& {
@@ -52,11 +94,18 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
     return it->second;
   };
   for (const auto& sg : segments) {
-    const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega))), 1, 1000);
+    if (flow_.spectral(sg.state, omega)) {
+      const std::vector<double> s = sub_piece_starts(flow_.eigenvalues(sg.state, omega), sg.h);
+      for (std::size_t j = 0; j < s.size(); ++j) {
+        const double end = j + 1 < s.size() ? s[j + 1] : sg.h;
+        pieces_.push_back({sg.t0 + s[j], end - s[j], sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega, s[j], sg.z0)});
+      }
+      continue;
+    }
+    const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega))), 1, kMaxSubPieces);
     Eigen::VectorXd z = sg.z0;
     for (int j = 0; j < m; ++j) {
-      if (j > 0) z = flow_.spectral(sg.state, omega) ? flow_.advance(sg.state, omega, sg.h * j / m, sg.z0)
-                                                     : Eigen::VectorXd(step_of(sg.state, sg.h / m) * z);
+      if (j > 0) z = step_of(sg.state, sg.h / m) * z;
       pieces_.push_back({sg.t0 + sg.h * j / m, sg.h / m, sg.state, z});
     }
   }

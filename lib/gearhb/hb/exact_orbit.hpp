@@ -10,7 +10,8 @@
 //   x_mean, x_rms_ac, x_h1  integrals over the period by Gauss-Legendre quadrature
 //                           (8 points) on every piece, cut into sub-pieces with
 //                           h x rate <= 1 (the pieces are analytic: the rule is exact
-//                           to rounding, ~1e-16 relative);
+//                           to rounding, ~1e-16 relative), the bound relaxed as a damped
+//                           mode decays within the piece (exact_orbit.cpp sub_piece);
 //   x_max, x_min            the largest and smallest of y at every sub-piece end
 //                           (including the contact switches) and at every zero of y'
 //                           bracketed on the quadrature nodes, refined by safeguarded

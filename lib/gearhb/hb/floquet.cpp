@@ -104,6 +104,7 @@ class PiecewiseLinearFlow::Propagator {
 
   const Eigen::MatrixXd& generator() const { return A_; }
   double rate() const { return spectral_ ? lambda_.cwiseAbs().maxCoeff() : B_.cwiseAbs().colwise().sum().maxCoeff(); }
+  const Eigen::VectorXcd& eigenvalues() const { return lambda_; }   // empty unless spectral
   // The first `rows` rows of exp(A s_j) z for every s_j (columns)
   Eigen::MatrixXd apply_all(const Eigen::VectorXd& s, const Eigen::VectorXd& z, int rows) const {
     Eigen::MatrixXd out(rows, s.size());
@@ -217,6 +218,10 @@ const Eigen::MatrixXd& PiecewiseLinearFlow::generator_matrix(unsigned state, dou
 }
 
 double PiecewiseLinearFlow::rate(unsigned state, double omega) const { return propagator(state, omega).rate(); }
+
+Eigen::VectorXcd PiecewiseLinearFlow::eigenvalues(unsigned state, double omega) const {
+  return propagator(state, omega).eigenvalues();
+}
 
 int PiecewiseLinearFlow::spectral_states() const {
   int k = 0;

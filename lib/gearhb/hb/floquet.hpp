@@ -114,6 +114,9 @@ class PiecewiseLinearFlow {
   // The fastest rate of state `state`: max |lambda| of A_state (spectral), else the
   // 1-norm of the balanced generator; h x rate bounds the exponent of a step h.
   double rate(unsigned state, double omega) const;
+  // The eigenvalues lambda of A_state where its propagator is diagonalised (spectral), else
+  // empty (a Pade propagator has no modes to tell apart).
+  Eigen::VectorXcd eigenvalues(unsigned state, double omega) const;
   // Penetration u_i = g_i + n_i' x of contact i at augmented state z.
   double penetration(std::size_t i, const Eigen::VectorXd& z) const { return rows_[i].dot(z); }
   std::size_t contacts() const { return rows_.size(); }
