@@ -4,7 +4,9 @@
 //   M x'' + C x' + K x + sum_i n_i max(kc_i (g_i(omega t) + n_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t),
 //
 // with GSL's adaptive embedded Runge-Kutta Prince-Dormand 8(9) driver
-// (gsl_odeiv2_step_rk8pd). It is the independent check of harmonic balance:
+// (gsl_odeiv2_step_rk8pd), the contact switches located as events (each step keeps the
+// contact state of its start; time_integration.cpp Driver). It is the independent check of
+// harmonic balance:
 // integrate from a given state, period after period, until the state at the
 // start of a period repeats (a periodic steady state), then sample that last
 // period. Also computes the monodromy matrix (state-transition matrix over one
