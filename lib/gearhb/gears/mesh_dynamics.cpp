@@ -211,9 +211,9 @@ MeshCurveSummary mesh_curve_summary(const HarmonicBalance& hb, const FrequencyCu
   return s;
 }
 
-std::vector<MeshTimeComparison> mesh_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                                            const MeshCurveSummary& s, double F0,
-                                                            const Eigen::VectorXd& q, int points) {
+std::vector<MeshTimeComparison> mesh_time_integration_check(
+    const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s, double F0, const Eigen::VectorXd& q,
+    int points, const std::function<void(std::size_t point, int period, double mismatch)>& progress) {
   const auto& P = c.branch.points;
   std::vector<double> special;
   for (const auto& f : c.branch.folds) special.push_back(f.omega);
@@ -250,6 +250,7 @@ std::vector<MeshTimeComparison> mesh_time_integration_check(const HarmonicBalanc
     TimeIntegrationOptions opt;
     opt.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
     opt.samples_per_period = 4096;
+    if (progress) opt.progress = [&progress, i](int period, double mismatch) { progress(i, period, mismatch); };
     Eigen::VectorXd x0, v0;
     hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
     const SteadyState st = ti.steady_state(x0, v0, P[i].omega, opt);

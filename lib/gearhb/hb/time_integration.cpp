@@ -274,6 +274,7 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
     for (int i = 0; i < 2 * n; ++i) mis = std::max(mis, std::fabs(y[i] - start[i]) / opt.x_scale);
     ss.periods = p;
     ss.mismatch = mis;
+    if (opt.progress) opt.progress(p, mis);
     if (mis < opt.periodicity_tol) {
       ss.converged = true;
       break;

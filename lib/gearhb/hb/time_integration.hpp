@@ -17,6 +17,7 @@
 // (x, dx/dtheta = v/omega): both halves are displacements, so the tolerances
 // (abs_tol x x_scale) suit any time unit, and a stiff gear model (omega ~ 1e4
 // rad/s) needs no rescaling by its caller. Inputs and outputs stay in (x, v).
+#include <functional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -36,6 +37,9 @@ struct TimeIntegrationOptions {
   int max_periods = 20000;
   double periodicity_tol = 1e-9;            // max |x(T) - x(0)|, |v(T) - v(0)|/omega over x_scale
   int samples_per_period = 512;
+  // Called after every period steady_state integrates (e.g. to show progress; the numerics
+  // never print): the periods so far and the last period's mismatch.
+  std::function<void(int period, double mismatch)> progress;
 };
 
 struct SteadyState {
