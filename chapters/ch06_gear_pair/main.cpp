@@ -304,7 +304,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
     const FrequencyCurve c = timed_sweep(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label);
     const GearPairParameters g = gear(cs.mesh);
     const VectorXd T2 = gear_pair_T2(g);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, T2));
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, T2, table_progress(run, c, cs.label)));
     run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
     const ContactHistory h = contact_history(hb, c.branch, T2);
     const VectorXd F0 = gear_pair_static_torque(g, cs.load.Fi);
@@ -422,7 +422,7 @@ void GearPairChapter::own_case(Run& run) const {
   const HarmonicBalance hb = model(Mesh::kc, own_, sol_.H);
   const FrequencyCurve c = timed_sweep(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own");
   const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
-  run.write("frc.csv", frequency_response_table(hb, c, T2));
+  run.write("frc.csv", frequency_response_table(hb, c, T2, table_progress(run, c, "own")));
   run.write("bifurcations.csv", bifurcation_table(c));
   const ContactHistory h = contact_history(hb, c.branch, T2);
   run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");   // 0: natural continuation stopped at a fold

@@ -20,6 +20,7 @@
 #include <tuple>
 #include <vector>
 
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/app/model_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
@@ -132,7 +133,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   o.omega_min = std::min(model_.omega_from, model_.omega_to);
   o.omega_max = std::max(model_.omega_from, model_.omega_to);
   o.continuation.ds_max = model_.ds_max;
-  o.continuation.progress = run.progress_of(model_.name);
+  report_sweep_progress(run, o, model_.name);
   o.direction = model_.omega_from > model_.omega_to ? SweepDirection::down : SweepDirection::up;
   const FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
   // The lowest frequency of the curve where a contact first closes (if any does).
@@ -141,7 +142,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.say(model_.name + ": " + c.branch.summary() +
           (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
   if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
-  run.write("frc.csv", dof_response_table(hb, c, model_.output));
+  run.write("frc.csv", dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name)));
   run.write("bifurcations.csv", bifurcation_table(c));
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   const ResponseEvaluator ev(hb, model_.output);

@@ -144,6 +144,7 @@ class GearPairFromFile {
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
+  std::string torque_label(std::size_t i) const;   // "T1 = 100 N m": names torque i's curve in progress lines
 };
 
 GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
@@ -432,6 +433,12 @@ BearingSupport GearPairFromFile::bearings() const {
   return b;
 }
 
+std::string GearPairFromFile::torque_label(std::size_t i) const {
+  char label[48];
+  std::snprintf(label, sizeof label, "T1 = %g N m", file_.torques[i]);
+  return label;
+}
+
 // The mesh at torque i and its frequency curve over the speed range.
 GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, const std::vector<MeshPhase>& phases) const {
   const GearDynamicsInput& d = file_.dynamics;
@@ -445,9 +452,7 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   o.omega_max = 2.0 * M_PI * d.f_mesh_to;
   o.direction = d.direction;
   o.continuation.ds_max = 0.05;
-  char label[48];
-  std::snprintf(label, sizeof label, "T1 = %g N m", T);
-  r.curve = timed_sweep(run, hb, o, label);
+  r.curve = timed_sweep(run, hb, o, torque_label(i));
   r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
   return r;
 }
@@ -467,7 +472,8 @@ void GearPairFromFile::response_tables(Run& run, std::size_t i, const HarmonicBa
                           m[k].force_max, m[k].force_min, m[k].dynamic_factor, std::string(to_string(m[k].drive)),
                           std::string(to_string(m[k].back))};
                 },
-                [&](std::size_t k) { return std::string(to_string(m[k].contact)); }));
+                [&](std::size_t k) { return std::string(to_string(m[k].contact)); },
+                table_progress(run, r.curve, torque_label(i))));
   run.write("bifurcations_" + n + ".csv", bifurcation_table(r.curve));
 }
 
@@ -505,9 +511,16 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
 // HB against GSL time integration of the same model at stable points (mesh_time_integration_check).
 void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
   const std::string n = std::to_string(i + 1);
+  const auto& P = r.curve.branch.points;
+  auto progress = [&](std::size_t k, int period, double mismatch) {
+    char what[160];
+    std::snprintf(what, sizeof what, "%s: time integration, period %d, mismatch %.3g", torque_label(i).c_str(), period,
+                  mismatch);
+    run.progress(what, long(k), P[k].omega, P[k].ds);
+  };
   const auto rows = run.timed("time integration T" + n, [&] {
     return mesh_time_integration_check(hb, r.curve, r.summary, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
-                                       file_.dynamics.time_check_points);
+                                       file_.dynamics.time_check_points, progress);
   });
   Table t({"f_mesh_hz", "contact", "dte_rms_um_hb", "dte_rms_um_ti", "dynamic_factor_hb", "dynamic_factor_ti",
            "rel_diff", "periods"});

@@ -12,6 +12,7 @@
 
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
+#include "gearhb/app/tables.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {
@@ -33,10 +34,26 @@ bool measures(const Case& c, Measure m) {
   return std::find(c.measures.begin(), c.measures.end(), m) != c.measures.end();
 }
 
+// A sweep's progress on stderr (Run::progress): its continuation as `label`, the steps after
+// it as "<label>: stability", "<label>: bifurcations", "<label>: narrow bands".
+inline void report_sweep_progress(Run& run, SweepOptions& o, const std::string& label) {
+  o.continuation.progress = run.progress_of(label);
+  o.step_progress = [&run, label](const std::string& step, const ContinuationProgress& p) {
+    run.progress(label + ": " + step, p.point, p.omega, p.ds);
+  };
+}
+
+// The progress of a curve's tables on stderr (Run::progress) as "<label>: tables".
+inline RowProgress table_progress(Run& run, const FrequencyCurve& c, const std::string& label) {
+  return [&run, &c, label](std::size_t i) {
+    run.progress(label + ": tables", long(i), c.branch.points[i].omega, c.branch.points[i].ds);
+  };
+}
+
 // One frequency sweep, its wall time recorded in timings.csv as "sweep <label>",
 // its progress on stderr and its summary said on stdout. Throws if incomplete.
 inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, SweepOptions o, const std::string& label) {
-  o.continuation.progress = run.progress_of(label);
+  report_sweep_progress(run, o, label);
   FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;

@@ -60,7 +60,8 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
 
 }  // namespace
 
-Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output) {
+Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
+                         const RowProgress& progress) {
   const int n = hb.dofs();
   std::vector<std::string> columns = common_columns();
   std::vector<ResponseEvaluator> dof;
@@ -77,6 +78,7 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
   const ResponseEvaluator ev(hb, output);
   Table t(columns);
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
+    if (progress) progress(p);
     const ExactPoint e = exact_point(hb, c, p, qs);
     std::vector<Table::Cell> row = common_row(ev, c, p, e, "");
     for (int i = 0; i < n; ++i) {
@@ -94,19 +96,22 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
   return t;
 }
 
-Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q) {
-  return frequency_response_table(hb, c, q, {}, {});
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
+                               const RowProgress& progress) {
+  return frequency_response_table(hb, c, q, {}, {}, {}, progress);
 }
 
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
-                               const std::function<std::string(std::size_t)>& contact_label) {
+                               const std::function<std::string(std::size_t)>& contact_label,
+                               const RowProgress& progress) {
   ResponseEvaluator ev(hb, q);
   std::vector<std::string> columns = common_columns();
   columns.insert(columns.end(), extra.begin(), extra.end());
   Table t(columns);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
+    if (progress) progress(i);
     std::vector<Table::Cell> row = common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "");
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);

@@ -29,21 +29,27 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
 //   of the exact orbit, exact_orbit.hpp), exact (ok | not_converged | inconsistent |
 //   unavailable: ExactStatus);
 // cells are empty where a value does not exist (no Floquet stability; no corrected
-// orbit for a time-varying stiffness; exact != ok).
-Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q);
+// orbit for a time-varying stiffness; exact != ok). Each row follows its point's exact
+// orbit: `progress` (if given) is called before each row with its point (e.g. to show
+// progress, RowProgress).
+using RowProgress = std::function<void(std::size_t point)>;
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
+                               const RowProgress& progress = {});
 // The same with a program's own columns after the common ones: `extra` names them and
 // `extra_row(i)` gives point i's cells; `contact_label(i)`, if given, is point i's `contact`
 // in the program's vocabulary (e.g. a gear mesh's full | drive_loss | back_impact | ...).
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
-                               const std::function<std::string(std::size_t)>& contact_label = {});
+                               const std::function<std::string(std::size_t)>& contact_label = {},
+                               const RowProgress& progress = {});
 // The frequency response of a model file (gearhb_frc): the common columns for the output
 // coordinate, then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n, then
 // q<i>_max_exact, q<i>_min_exact, q<i>_h1_exact, then contact_<j> for every contact j =
 // 1..P: its own state over the period (open, full, intermittent; `contact` is the summary
 // over all of them).
-Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output);
+Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
+                         const RowProgress& progress = {});
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),

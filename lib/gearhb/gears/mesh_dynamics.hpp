@@ -44,6 +44,7 @@
 // dynamic factor K_v = max |N| / F0 (the largest tooth load on either flank over the static
 // one); the state of each flank and the contact class full | drive_loss | back_impact |
 // drive_loss+back_impact.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -146,12 +147,15 @@ struct MeshTimeComparison {
   int periods = 0;
 };
 // Up to `points` stable points at least 0.5 % (in omega) from every fold and bifurcation,
-// spread over the branch, at most a third of them each with a back impact and with a drive
-// loss only (where the curve has them), the rest in full contact; a category that falls
-// short is filled from the others. Throws std::runtime_error naming the frequency if an
-// integration does not become periodic.
-std::vector<MeshTimeComparison> mesh_time_integration_check(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                                            const MeshCurveSummary& s, double F0,
-                                                            const Eigen::VectorXd& q, int points = 8);
+// whose orbit the Floquet shooting corrected (an exact period-1 orbit next to the HB point:
+// where the correction failed there is none for the integration to settle on), spread over
+// the branch, at most a third of them each with a back impact and with a drive loss only
+// (where the curve has them), the rest in full contact; a category that falls short is
+// filled from the others. `progress` (if given) is called after every integrated period
+// with the branch point, the periods so far and the mismatch. Throws std::runtime_error
+// naming the frequency if an integration does not become periodic.
+std::vector<MeshTimeComparison> mesh_time_integration_check(
+    const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s, double F0, const Eigen::VectorXd& q,
+    int points = 8, const std::function<void(std::size_t point, int period, double mismatch)>& progress = {});
 
 }  // namespace gearhb

@@ -162,12 +162,15 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
 // The same correction for any model, on GSL's rk8pd period map with its variational
 // equations (TimeIntegrator::period_map, relative tolerance 1e-12, absolute 1e-13 x_scale):
 // the path of a time-varying contact stiffness, where no exact flow exists. The vector
-// field is continuous in x, so the contact switches need no saltation; rk8pd's step
-// control resolves the kinks. orbit_error: the largest |x_HB - x| over opt.steps (or
-// max(64, 2(2H+1))) uniform samples. Costs one integration of 2n + 4n^2 equations per
-// Newton step: about 12 ms a point for n = 1 with contact switches (the parametric
-// clearance oscillator of gearhb_frc: its 494-point sweep went from 1.7 s with the uncorrected
-// variational multipliers to 7.9 s), against 0.1-0.3 ms for the exact flow.
+// field is continuous in x, so the contact switches need no saltation; the integration
+// locates them as events (time_integration.cpp Driver), so no step straddles a kink.
+// orbit_error: the largest |x_HB - x| over opt.steps (or max(64, 2(2H+1))) uniform samples.
+// Costs one integration of 2n + 4n^2 equations per Newton step: about 3 ms a point for n = 1
+// with contact switches (the parametric clearance oscillator of gearhb_frc: its 494-point
+// sweep takes 2.5 s, 1.7 s with the uncorrected variational multipliers), against 0.1-0.3 ms
+// for the exact flow. The steps follow the fastest closed-contact mode, so the cost of a
+// period grows with its periods per forcing period, omega_c / omega (the same oscillator
+// with a contact normal of 2047, omega_c = 2047 rad/s: about 1 s a period map at omega = 0.3).
 FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                          double x_scale, const FloquetOptions& opt = {});
 

@@ -62,6 +62,13 @@ namespace {
 // they are about to split on the real axis).
 bool is_real(std::complex<double> m) { return std::fabs(m.imag()) <= 1e-12 * std::max(1.0, std::abs(m)); }
 
+// Reports point i of the curve to opt.step_progress as being in `step`; at omega (a trial
+// point on the chord before it), if given.
+void report(const SweepOptions& opt, const char* step, const FrequencyCurve& c, std::size_t i, double omega = NAN) {
+  const BranchPoint& p = c.branch.points[i];
+  if (opt.step_progress) opt.step_progress(step, {int(i), std::isnan(omega) ? p.omega : omega, p.ds});
+}
+
 PointFloquet point_floquet(const FloquetResult& r) {
   PointFloquet p;
   p.modulus = r.modulus;
@@ -201,19 +208,25 @@ namespace {
 // crossings are located on either side of it as the loop above does. A band whose peak
 // stays below |mu| 0.75 at both neighbours, or that a smooth |mu| does not announce,
 // is not found; the cost is 12-40 corrected Floquet points per searched interval.
-void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, const FloquetOptions& fo,
+void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, const SweepOptions& opt,
                       double corrector_tolerance) {
+  const FloquetOptions& fo = opt.floquet;
   const auto& P = c.branch.points;
   const auto& F = c.floquet;
   auto near_real = [](const PointFloquet& f) {
     const double a = std::fabs(f.angle);
     return f.modulus > 0.75 && (a < 0.15 * M_PI || a > 0.85 * M_PI);
   };
+  std::size_t i = 0;   // the interval searched: (i - 1, i)
+  auto floquet_at = [&](const Eigen::VectorXd& X, double omega) {
+    report(opt, "narrow bands", c, i, omega);
+    return floquet_of_hb_orbit(hb, X, omega, xs, fo);
+  };
   auto probe = [&](const Eigen::VectorXd& X, double omega) {
-    const FloquetResult r = floquet_of_hb_orbit(hb, X, omega, xs, fo);
+    const FloquetResult r = floquet_at(X, omega);
     return StateProbe{outside(point_floquet(r)), std::log(r.modulus)};
   };
-  for (std::size_t i = 1; i < P.size(); ++i) {
+  for (i = 1; i < P.size(); ++i) {
     if (outside(F[i - 1]) != 0 || outside(F[i]) != 0) continue;
     if (!near_real(F[i - 1]) && !near_real(F[i])) continue;
     bool near_fold = false;   // a +1 multiplier of a fold of the branch is not a band
@@ -224,19 +237,19 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
       double lo = 0.0, hi = 1.0;
       BranchPoint p1 = point_on_chord(hb, P[i - 1], P[i], c.scaling, hi - g, corrector_tolerance);
       BranchPoint p2 = point_on_chord(hb, P[i - 1], P[i], c.scaling, lo + g, corrector_tolerance);
-      double m1 = floquet_of_hb_orbit(hb, p1.X, p1.omega, xs, fo).modulus;
-      double m2 = floquet_of_hb_orbit(hb, p2.X, p2.omega, xs, fo).modulus;
+      double m1 = floquet_at(p1.X, p1.omega).modulus;
+      double m2 = floquet_at(p2.X, p2.omega).modulus;
       for (int k = 0; k < 10 && m1 < 1.0 && m2 < 1.0; ++k) {
         if (m1 > m2) {
           hi = lo + g * (hi - lo);
           p2 = p1, m2 = m1;
           p1 = point_on_chord(hb, P[i - 1], P[i], c.scaling, hi - g * (hi - lo), corrector_tolerance);
-          m1 = floquet_of_hb_orbit(hb, p1.X, p1.omega, xs, fo).modulus;
+          m1 = floquet_at(p1.X, p1.omega).modulus;
         } else {
           lo = hi - g * (hi - lo);
           p1 = p2, m1 = m2;
           p2 = point_on_chord(hb, P[i - 1], P[i], c.scaling, lo + g * (hi - lo), corrector_tolerance);
-          m2 = floquet_of_hb_orbit(hb, p2.X, p2.omega, xs, fo).modulus;
+          m2 = floquet_at(p2.X, p2.omega).modulus;
         }
       }
       if (std::max(m1, m2) < 1.0) continue;
@@ -246,7 +259,7 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
         Bifurcation bf;
         bf.after_point = int(i) - 1;
         bf.omega = at.omega;
-        bf.multiplier = floquet_of_hb_orbit(hb, at.X, at.omega, xs, fo).critical;
+        bf.multiplier = floquet_at(at.X, at.omega).critical;
         bf.type = crossing_type(bf.multiplier);
         if (bf.type == BifurcationType::fold) bf.type = BifurcationType::branch_point;   // +1 with no fold of the branch
         bf.smooth = std::fabs(std::abs(bf.multiplier) - 1.0) <= 1e-2;
@@ -353,7 +366,9 @@ bool trace_branch(const HarmonicBalance& hb, const SweepOptions& opt, const Cont
 std::vector<FloquetResult> floquet_of_branch(const HarmonicBalance& hb, const SweepOptions& opt, FrequencyCurve& c) {
   std::vector<FloquetResult> fr;
   fr.reserve(c.branch.points.size());
-  for (const auto& p : c.branch.points) {
+  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
+    const BranchPoint& p = c.branch.points[i];
+    report(opt, "stability", c, i);
     fr.push_back(floquet_of_hb_orbit(hb, p.X, p.omega, c.scaling.x[0], opt.floquet));
     c.floquet.push_back(point_floquet(fr.back()));
     c.stable.push_back(fr.back().stable);
@@ -372,9 +387,11 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
   const double xs = c.scaling.x[0];
   for (std::size_t i = 1; i < P.size(); ++i) {
     if (outside(c.floquet[i - 1]) == outside(c.floquet[i])) continue;
+    report(opt, "bifurcations", c, i);
     // The probe: the count outside, and log |mu| of the crossing multiplier (zero on the circle).
     const PointFloquet &fa = c.floquet[i - 1], &fb = c.floquet[i];
-    auto state = [&hb, &opt, xs, &fa, &fb](const Eigen::VectorXd& X, double omega) {
+    auto state = [&hb, &opt, xs, &fa, &fb, &c, i](const Eigen::VectorXd& X, double omega) {
+      report(opt, "bifurcations", c, i, omega);
       const FloquetResult r = floquet_of_hb_orbit(hb, X, omega, xs, opt.floquet);
       return StateProbe{outside(point_floquet(r)), std::log(std::abs(crossing_multiplier(r, fa, fb)))};
     };
@@ -428,7 +445,7 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   const bool parametric = std::any_of(hb.contacts().begin(), hb.contacts().end(),
                                       [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
   if (opt.narrow_bands == BandSearch::always || (opt.narrow_bands == BandSearch::parametric && parametric)) {
-    add_narrow_bands(hb, c, c.scaling.x[0], opt.floquet, co.tolerance);
+    add_narrow_bands(hb, c, c.scaling.x[0], opt, co.tolerance);
     std::stable_sort(c.bifurcations.begin(), c.bifurcations.end(),
                      [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; });
   }

@@ -66,6 +66,12 @@ struct SweepOptions {
   BandSearch narrow_bands = BandSearch::parametric;   // Floquet and locate_bifurcations only
   FloquetOptions floquet;
   ContinuationOptions continuation;          // omega_start / omega_end are overwritten
+  // Called before every Floquet computation of the steps after the continuation
+  // (continuation.progress reports the continuation itself; e.g. to show progress, the
+  // numerics never print), with the step's name and the point: "stability" (the point's
+  // multipliers), "bifurcations" (a trial on the chord from the point before, at the trial's
+  // omega, locating a crossing), "narrow bands" (the same, searching for a band).
+  std::function<void(const std::string& step, const ContinuationProgress& point)> step_progress;
 };
 
 enum class BifurcationType { fold, branch_point, period_doubling, neimark_sacker };

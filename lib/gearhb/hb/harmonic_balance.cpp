@@ -335,18 +335,32 @@ std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd&
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, true, &G);
   const int n = n_, m = 2 * H_ + 1, P = int(contacts_.size());
-  auto dense = [this, omega, G]() { return assemble_jacobian(omega, G); };
+  auto dense = [this, omega, G]() { return assemble_jacobian(omega, G); };   // G as it is now (a copy)
   if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdw, s);   // nothing to condense
+  auto singular = [](const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
+    const Eigen::VectorXd d = lu.matrixLU().diagonal().cwiseAbs();
+    return !(d.minCoeff() > 1e-13 * d.maxCoeff());
+  };
   std::vector<Eigen::MatrixXd> blocks;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> factors;
   for (int k = 0; k <= H_; ++k) {
     blocks.push_back(harmonic_block(k, omega));
-    // L singular (a free rigid-body mode at k = 0, an undamped resonance of the open
-    // system at k omega): the dense system only. Near-singular blocks are caught by
-    // the condensed solve's residual check.
     factors.emplace_back(blocks.back());
-    const Eigen::VectorXd d = factors.back().matrixLU().diagonal().cwiseAbs();
-    if (!(d.minCoeff() > 1e-13 * d.maxCoeff())) return std::make_unique<DenseLinearization>(dense(), dRdw, s);
+    if (k == 0 && singular(factors.back())) {
+      // K singular: a free rigid-body mode that the contacts hold (the transmission error of
+      // a gear pair on bearings has no stiffness but the mesh). J = L + U Gc U' equals
+      // (L + U D U') + U (Gc - D) U' for any D; D = each contact's mean stiffness on the static
+      // coefficient moves sum_i kc_i n_i n_i' from G_i(0, 0) into the static block, exactly.
+      for (int i = 0; i < P; ++i) {
+        blocks[0] += kc_mean_[std::size_t(i)] * contacts_[std::size_t(i)].normal * contacts_[std::size_t(i)].normal.transpose();
+        G[std::size_t(i)](0, 0) -= kc_mean_[std::size_t(i)];
+      }
+      factors.back().compute(blocks[0]);
+    }
+    // L still singular (a free mode no contact holds, an undamped resonance of the open
+    // system at k omega): the dense system only. Near-singular blocks are caught by the
+    // condensed solve's residual check.
+    if (singular(factors.back())) return std::make_unique<DenseLinearization>(dense(), dRdw, s);
   }
   Eigen::MatrixXd normals(n, P);
   for (int i = 0; i < P; ++i) normals.col(i) = contacts_[i].normal;

@@ -81,7 +81,8 @@ class HarmonicBalance : public ParametricProblem {
   // i.e. n > P) the bordered systems are solved by condensation on the contact
   // coordinates (harmonic_balance.cpp, CondensedLinearization): an LU of size
   // P (2H+1) + 1 instead of n (2H+1) + 1, checked by its residual, with the dense
-  // LU as the fallback.
+  // LU as the fallback. A singular K (a free mode the contacts hold) takes the contacts'
+  // mean stiffness into its static block (and out of their product matrices) first.
   std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
                                            Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const override;
 

@@ -26,13 +26,33 @@ struct OdeContext {
   bool variational;
   Eigen::MatrixXd Minv;
   Eigen::VectorXd r = Eigen::VectorXd();   // work buffer of the right-hand side (no allocation per call)
+  unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
 };
+
+// Penetration u_k = g_k(theta) + n_k' x of contact k at phase theta (x: the first n entries of y).
+double penetration(const UnilateralContact& ct, double theta, const double* y, int n) {
+  return gap_at(ct, theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y, n));
+}
+
+// The contacts whose penetration at (theta, y) disagrees with the state `closed` (u < 0 for
+// a closed one, u > 0 for an open one; u = 0 agrees with both): bit k set.
+unsigned disagreeing(const OdeContext& c, unsigned closed, double theta, const double* y) {
+  unsigned wrong = 0;
+  const auto& contacts = c.hb->contacts();
+  for (std::size_t k = 0; k < contacts.size(); ++k) {
+    const double u = penetration(contacts[k], theta, y, c.n);
+    if ((closed >> k & 1u) ? u < 0.0 : u > 0.0) wrong |= 1u << k;
+  }
+  return wrong;
+}
 
 // The integration runs in the forcing phase theta = omega t, not in t: the state is
 // y = [x (n), x_theta (n)] with x_theta = dx/dtheta = v / omega, so both halves are
 // displacements and one absolute tolerance fits both, whatever the time unit of the
 // model (a gear mesh at 1e4 rad/s and a unit oscillator alike):
 //   dx/dtheta = x_theta,   dx_theta/dtheta = a(t = theta/omega, x, omega x_theta) / omega^2.
+// The contacts act in the state c->closed (a closed contact pushes with kc (g + n'x), an open
+// one not at all): smooth between the switches, which Driver locates.
 // With variational equations Phi (2n x 2n, column-major) follows dPhi/dtheta = A_theta Phi,
 // A_theta = [0 I; -Minv Kt / omega^2, -Minv C / omega]; it is the monodromy matrix in
 // (x, x_theta), similar to the one in (x, v) by D = diag(I, omega I).
@@ -45,18 +65,19 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   // into the work buffer (no allocation per call), divided by omega^2.
   const auto& sys = c->hb->system();
   const auto& f = c->hb->excitation();
+  const auto& contacts = c->hb->contacts();
   c->r.resize(n);
   c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
   c->r.noalias() -= omega * (sys.C * x_theta);
   c->r.noalias() -= sys.K * x;
-  for (const auto& ct : c->hb->contacts())
-    c->r -= contact_force(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
+  for (std::size_t k = 0; k < contacts.size(); ++k)
+    if (c->closed >> k & 1u) c->r -= stiffness_at(contacts[k], theta) * penetration(contacts[k], theta, y, n) * contacts[k].normal;
   std::copy(y + n, y + 2 * n, dydt);
   Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
   if (c->variational) {
     Eigen::MatrixXd Kt = sys.K;
-    for (const auto& ct : c->hb->contacts())
-      Kt += contact_stiffness(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal * ct.normal.transpose();
+    for (std::size_t k = 0; k < contacts.size(); ++k)
+      if (c->closed >> k & 1u) Kt += stiffness_at(contacts[k], theta) * contacts[k].normal * contacts[k].normal.transpose();
     Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -c->Minv * Kt / (omega * omega);
@@ -68,23 +89,147 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   return GSL_SUCCESS;
 }
 
-struct Driver {
-  gsl_odeiv2_system sys;
-  gsl_odeiv2_driver* d;
-  Driver(OdeContext& ctx, std::size_t dim, double h0, double abs_tol, double rel_tol,
-         OdeStepper stepper = OdeStepper::rk8pd) {
-    sys = {rhs, nullptr, dim, &ctx};
-    const gsl_odeiv2_step_type* type = stepper == OdeStepper::rkf45 ? gsl_odeiv2_step_rkf45 : gsl_odeiv2_step_rk8pd;
-    d = gsl_odeiv2_driver_alloc_y_new(&sys, type, h0, abs_tol, rel_tol);
+// The root of g in (lo, hi] (g(lo), g(hi) of opposite signs, g(lo) may be 0) by regula falsi
+// with the Illinois modification, to hi - lo <= tol: returns the end on hi's side.
+template <class G>
+double illinois(const G& g, double lo, double g_lo, double hi, double g_hi, double tol) {
+  int kept = 0;   // which end the last two iterates replaced: -1 hi, +1 lo
+  for (int it = 0; it < 100 && hi - lo > tol; ++it) {
+    double x = hi - g_hi * (hi - lo) / (g_hi - g_lo);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double gx = g(x);
+    if ((gx > 0.0) == (g_hi > 0.0) && gx != 0.0) {
+      hi = x, g_hi = gx;
+      if (kept == -1) g_lo *= 0.5;
+      kept = -1;
+    } else {
+      lo = x, g_lo = gx;
+      if (kept == 1) g_hi *= 0.5;
+      kept = 1;
+    }
   }
-  ~Driver() { gsl_odeiv2_driver_free(d); }
+  return hi;
+}
+
+// GSL's adaptive stepper with the contact switches located. The force max(kc u, 0) has a kink
+// where u = 0 (and the variational equations a jump in Kt): a step across it has a large error
+// estimate whatever its length, so the step control shrinks the step until the state cannot
+// move by a rounding (the orbit of the parametric clearance oscillator with a contact normal
+// 30 sat at u = 0 for minutes at steps of 3e-13 rad). So the right-hand side keeps the contact
+// state of the step's start (smooth within a step), and after each accepted step every contact
+// is checked: with f = +u for a closed contact, -u for an open one (f >= 0: the state agrees),
+// a switch lies in the step where f < 0 at its end, or where f falls at its start and rises at
+// its end with f < 0 at the minimum between (a touch, or a separation, shorter than the step).
+// The switch is located by regula falsi (Illinois) on the length of one step of the same
+// stepper from the step's start (the state fixed, so as accurate as the accepted step); the
+// integration lands just past the first one, the contact state changes and the integration
+// goes on from there. The vector field is continuous at a switch (kc u = 0), so the state and
+// Phi need no jump.
+class Driver {
+ public:
+  Driver(const OdeContext& ctx, std::size_t dim, double h0, double abs_tol, double rel_tol,
+         OdeStepper stepper = OdeStepper::rk8pd)
+      : ctx_(ctx), y0_(dim), y_trial_(dim), y_err_(dim) {
+    sys_ = {rhs, nullptr, dim, &ctx_};
+    const gsl_odeiv2_step_type* type = stepper == OdeStepper::rkf45 ? gsl_odeiv2_step_rkf45 : gsl_odeiv2_step_rk8pd;
+    d_ = gsl_odeiv2_driver_alloc_y_new(&sys_, type, h0, abs_tol, rel_tol);
+    for (const auto& ct : ctx_.hb->contacts()) gap_slopes_.push_back(derivative(ct.gap_harmonics));
+  }
+  ~Driver() { gsl_odeiv2_driver_free(d_); }
+  Driver(const Driver&) = delete;
+  Driver& operator=(const Driver&) = delete;
+
   // Advance the phase theta to theta1.
   void advance(double& theta, double theta1, double* y, double omega) {
-    const int status = gsl_odeiv2_driver_apply(d, &theta, theta1, y);
+    if (!started_) {   // the contact state of the initial state (u > 0: closed)
+      ctx_.closed = disagreeing(ctx_, 0u, theta, y);
+      started_ = true;
+    }
+    while (theta < theta1) {
+      const double t0 = theta;
+      std::copy(y, y + y0_.size(), y0_.begin());
+      check(gsl_odeiv2_evolve_apply(d_->e, d_->c, d_->s, &sys_, &theta, theta1, &d_->h, y), theta, omega);
+      const double h = theta - t0, tau = first_switch(t0, h, y, omega);
+      if (!(tau < h)) continue;
+      theta = t0 + tau;
+      ctx_.closed ^= disagreeing(ctx_, ctx_.closed, theta, y);
+      gsl_odeiv2_evolve_reset(d_->e);
+      gsl_odeiv2_step_reset(d_->s);
+    }
+  }
+
+ private:
+  OdeContext ctx_;
+  gsl_odeiv2_system sys_;
+  gsl_odeiv2_driver* d_ = nullptr;
+  bool started_ = false;
+  std::vector<double> y0_, y_trial_, y_err_;   // the step's start, a trial step, its error estimate
+  std::vector<Eigen::VectorXd> gap_slopes_;     // dg_k/dtheta of every contact (series coefficients)
+
+  static Eigen::VectorXd derivative(const Eigen::VectorXd& c) {   // of a series [a0, a1, b1, ...]
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(c.size());
+    for (Eigen::Index k = 1; 2 * k < c.size(); ++k) d[2 * k - 1] = double(k) * c[2 * k], d[2 * k] = -double(k) * c[2 * k - 1];
+    return d;
+  }
+  void check(int status, double theta, double omega) const {
     if (status != GSL_SUCCESS)
-      throw std::runtime_error("time integration (GSL " + std::string(gsl_odeiv2_step_name(d->s)) + ") failed at omega = " + std::to_string(omega) +
-                               ", period " + std::to_string(int(theta / (2.0 * M_PI)) + 1) + ": " +
-                               gsl_strerror(status));
+      throw std::runtime_error("time integration (GSL " + std::string(gsl_odeiv2_step_name(d_->s)) +
+                               ") failed at omega = " + std::to_string(omega) + ", period " +
+                               std::to_string(int(theta / (2.0 * M_PI)) + 1) + ": " + gsl_strerror(status));
+  }
+  // f_k (>= 0: contact k's penetration agrees with its state) and df_k/dtheta at (theta, y).
+  double agreement(std::size_t k, double theta, const double* y) const {
+    const double u = penetration(ctx_.hb->contacts()[k], theta, y, ctx_.n);
+    return (ctx_.closed >> k & 1u) ? u : -u;
+  }
+  double agreement_slope(std::size_t k, double theta, const double* y) const {
+    const auto& ct = ctx_.hb->contacts()[k];
+    const double du = trig_series(gap_slopes_[k], theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y + ctx_.n, ctx_.n));
+    return (ctx_.closed >> k & 1u) ? du : -du;
+  }
+  // One step of length tau from the step's start (t0, y0_) into y_trial_, the contact state unchanged.
+  const double* trial(double t0, double tau, double omega) {
+    std::copy(y0_.begin(), y0_.end(), y_trial_.begin());
+    gsl_odeiv2_step_reset(d_->s);
+    check(gsl_odeiv2_step_apply(d_->s, t0, tau, y_trial_.data(), y_err_.data(), nullptr, nullptr, &sys_), t0, omega);
+    return y_trial_.data();
+  }
+  // Where contact k is first seen to disagree in the step (0, h] (y: its end): h if f_k < 0
+  // there; else the minimum of f_k inside, if f_k falls at the start, rises at the end and is
+  // < 0 there; else NaN. f_end receives f_k at the returned offset.
+  double disagreement_end(std::size_t k, double t0, double h, const double* y, double omega, double& f_end) {
+    f_end = agreement(k, t0 + h, y);
+    if (f_end < 0.0) return h;
+    const double s0 = agreement_slope(k, t0, y0_.data()), s1 = agreement_slope(k, t0 + h, y);
+    if (!(s0 < 0.0 && s1 > 0.0)) return NAN;
+    const double m = illinois([&](double tau) { return agreement_slope(k, t0 + tau, trial(t0, tau, omega)); }, 0.0, s0,
+                              h, s1, 1e-12 * h);
+    f_end = agreement(k, t0 + m, trial(t0, m, omega));
+    return f_end < 0.0 ? m : NAN;
+  }
+  // The first switch in the accepted step (t0, t0 + h] (y: its end): the earliest over the
+  // contacts, each located in (0, end] (f_k >= 0 at 0, < 0 at end). If there is one, leaves y
+  // just past it and returns its offset from t0; else returns h.
+  double first_switch(double t0, double h, double* y, double omega) {
+    double first = h;
+    bool found = false;
+    for (std::size_t k = 0; k < ctx_.hb->contacts().size(); ++k) {
+      double f_end = 0.0, end = disagreement_end(k, t0, h, y, omega, f_end);
+      if (std::isnan(end)) continue;
+      if (found && end > first) {   // after an earlier contact's switch: already past its own there?
+        f_end = agreement(k, t0 + first, trial(t0, first, omega));
+        if (!(f_end < 0.0)) continue;
+        end = first;
+      }
+      const double f0 = std::max(agreement(k, t0, y0_.data()), 0.0);
+      first = illinois([&](double tau) { return agreement(k, t0 + tau, trial(t0, tau, omega)); }, 0.0, f0, end, f_end,
+                       1e-12 * h);
+      found = true;
+    }
+    if (!found) return h;
+    trial(t0, first, omega);
+    std::copy(y_trial_.begin(), y_trial_.end(), y);
+    return first;
   }
 };
 
@@ -129,6 +274,7 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
     for (int i = 0; i < 2 * n; ++i) mis = std::max(mis, std::fabs(y[i] - start[i]) / opt.x_scale);
     ss.periods = p;
     ss.mismatch = mis;
+    if (opt.progress) opt.progress(p, mis);
     if (mis < opt.periodicity_tol) {
       ss.converged = true;
       break;

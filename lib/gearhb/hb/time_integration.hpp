@@ -4,7 +4,9 @@
 //   M x'' + C x' + K x + sum_i n_i max(kc_i (g_i(omega t) + n_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t),
 //
 // with GSL's adaptive embedded Runge-Kutta Prince-Dormand 8(9) driver
-// (gsl_odeiv2_step_rk8pd). It is the independent check of harmonic balance:
+// (gsl_odeiv2_step_rk8pd), the contact switches located as events (each step keeps the
+// contact state of its start; time_integration.cpp Driver). It is the independent check of
+// harmonic balance:
 // integrate from a given state, period after period, until the state at the
 // start of a period repeats (a periodic steady state), then sample that last
 // period. Also computes the monodromy matrix (state-transition matrix over one
@@ -15,6 +17,7 @@
 // (x, dx/dtheta = v/omega): both halves are displacements, so the tolerances
 // (abs_tol x x_scale) suit any time unit, and a stiff gear model (omega ~ 1e4
 // rad/s) needs no rescaling by its caller. Inputs and outputs stay in (x, v).
+#include <functional>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -34,6 +37,9 @@ struct TimeIntegrationOptions {
   int max_periods = 20000;
   double periodicity_tol = 1e-9;            // max |x(T) - x(0)|, |v(T) - v(0)|/omega over x_scale
   int samples_per_period = 512;
+  // Called after every period steady_state integrates (e.g. to show progress; the numerics
+  // never print): the periods so far and the last period's mismatch.
+  std::function<void(int period, double mismatch)> progress;
 };
 
 struct SteadyState {
