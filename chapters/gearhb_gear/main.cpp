@@ -13,8 +13,9 @@
 // peak-to-peak against torque with and without the file's relief), and ISO 6336-1
 // method B's c'_th, c' and c_gamma_alpha for the same pair (and, with a speed range, its
 // dynamic factor K_v over the range, beside the computed one). model.method chooses the
-// tooth model of the pair stiffness: the beams (default) or the potential-energy
-// method (potential_energy.hpp through mesh_phases' PairStiffnessFn seam).
+// tooth model of the pair stiffness (loaded_pair.hpp): the beams (default), the
+// potential-energy method, or tooth contact by finite elements on the generated tooth
+// form (fe_tooth_contact.hpp), built once and reused for every torque.
 //
 // With `speed` and `dynamics` in the file, the pair over its speed range
 // (mesh_dynamics.hpp; README "The pair over its speed range"): per torque, the mesh
@@ -28,7 +29,7 @@
 // Or the six-DOF model (bearings, mesh along the line of action), from the same file.
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
-// written), geometry, transmission_error, iso6336, harris_map, dynamics (response,
+// written), geometry, tooth_model, transmission_error, iso6336, harris_map, dynamics (response,
 // response_tables, response_key_numbers, spectrum_and_history,
 // time_integration_check per torque), iso_dynamic_factor, draw.
 //
@@ -36,6 +37,7 @@
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c.json --set torques.0=150 --out /tmp/fzg
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair_light_load.json --out /tmp/rattle
+//   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c_fe.json --out /tmp/fzg_fe
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
@@ -49,6 +51,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/loaded_pair.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/gears/potential_energy.hpp"
@@ -117,12 +120,11 @@ class GearPairFromFile {
   Study& study_;
   bool plot_ = true;
   GearFile file_;
+  std::unique_ptr<LoadedPair> loaded_;   // the tooth model of model.method, built once
 
-  // The pair stiffness of model.method: empty for the beams (mesh_phases' own), the
-  // potential-energy pair stiffness otherwise (its linear Hertz inside; model.hertz none).
-  PairStiffnessFn stiffness() const;
   void read_gear();
   void geometry(Run& run) const;
+  void tooth_model(Run& run);
   void transmission_error(Run& run) const;
   void iso6336(Run& run) const;
   void harris_map(Run& run) const;
@@ -137,7 +139,7 @@ class GearPairFromFile {
     MeshCurveSummary summary;
   };
   BearingSupport bearings() const;
-  Response response(Run& run, std::size_t i, const std::vector<MeshPhase>& phases) const;
+  Response response(Run& run, std::size_t i) const;
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
@@ -154,6 +156,7 @@ GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
 void GearPairFromFile::run(Run& run) {
   run.write_text("params.json", file_.resolved.dump(2) + "\n");
   geometry(run);
+  tooth_model(run);
   transmission_error(run);
   iso6336(run);
   harris_map(run);
@@ -166,11 +169,6 @@ void GearPairFromFile::read_gear() {
   file_ = read_gear_file(study_.positional(), study_.parameters().unregistered());
 }
 
-PairStiffnessFn GearPairFromFile::stiffness() const {
-  if (file_.method == ToothModel::beam) return {};
-  const PeGear g1 = file_.pe[0], g2 = file_.pe[1];
-  return [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
-}
 
 // Step 2: the involute geometry of the pair; path_of_contact.csv, key numbers.
 void GearPairFromFile::geometry(Run& run) const {
@@ -202,6 +200,7 @@ void GearPairFromFile::geometry(Run& run) const {
   }
   key.add("undercut", undercut, "-");
   key.add("method_potential_energy", file_.method == ToothModel::potential_energy ? 1 : 0, "-");
+  key.add("method_fe", file_.method == ToothModel::fe ? 1 : 0, "-");
   if (file_.method == ToothModel::potential_energy) {
     // Sainsot's fillet fit holds for 1.4 <= h_f = rf / r_int <= 7, 0.01 <= theta_f <= 0.12 rad.
     for (int i = 0; i < 2; ++i) {
@@ -227,25 +226,56 @@ void GearPairFromFile::geometry(Run& run) const {
     t.add_row({std::string(name), T1P, T1P - p.T1A, r.r1, r.r2});
   }
   run.write("path_of_contact.csv", t);
-  run.say(file_.name + (file_.method == ToothModel::beam ? " [beam model]" : " [potential-energy method]") + ": a = " + std::to_string(p.mesh.centre_distance * 1e3) + " mm, alpha_w = " +
+  const char* method[] = {" [beam model]", " [potential-energy method]", " [finite elements]"};
+  run.say(file_.name + method[int(file_.method)] + ": a = " + std::to_string(p.mesh.centre_distance * 1e3) + " mm, alpha_w = " +
           std::to_string(p.mesh.pressure_angle * 180 / M_PI) + " deg, eps_alpha = " + std::to_string(p.contact_ratio));
 }
 
-// Step 3: STE(theta), k(theta) and the load shares per torque; the spectrum.
+// Step 3: the tooth model of model.method, built once (the FE: both gears meshed and
+// factored, the influence coefficients of every phase); for the FE its mesh and the
+// torsional compliance of each gear body between bore and teeth (inside its STE: a dynamic
+// model with its own shafts and bodies must not count it twice).
+void GearPairFromFile::tooth_model(Run& run) {
+  const PairSteModel& m = file_.pair;
+  if (file_.method == ToothModel::fe) {
+    loaded_ = run.timed("fe_model", [&] { return fe_loaded_pair(m, file_.phases, file_.fe); });
+  } else {
+    PairStiffnessFn k;
+    if (file_.method == ToothModel::potential_energy) {
+      const PeGear g1 = file_.pe[0], g2 = file_.pe[1];
+      k = [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
+    }
+    loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k); });
+  }
+  const FePairModel* fe = loaded_->fe_model();
+  if (!fe) return;
+  KeyNumbers& key = run.key_numbers();
+  const FeGearModel* g[2] = {&fe->gear1(), &fe->gear2()};
+  for (int i = 0; i < 2; ++i) {
+    const std::string n = std::to_string(i + 1);
+    const double c = run.timed("fe_body_torsion_" + n, [&] { return g[i]->body_torsion_compliance(); });
+    const double rb = g[i]->gear().base_radius();
+    key.add("fe_nodes_" + n, double(g[i]->mesh().nodes.size()), "-");
+    key.add("fe_bore_radius_" + n + "_m", g[i]->bore_radius(), "m");
+    key.add("fe_body_torsion_compliance_" + n + "_rad_per_Nm", c, "rad/(N m)");
+    key.add("fe_body_stiffness_" + n + "_N_per_m", 1.0 / (c * rb * rb), "N/m");
+  }
+}
+
+// Step 4: STE(theta), k(theta) and the load shares per torque; the spectrum.
 void GearPairFromFile::transmission_error(Run& run) const {
   const PairSteModel& m = file_.pair;
-  const std::vector<MeshPhase> phases = run.timed("mesh_phases", [&] { return mesh_phases(m, file_.phases, stiffness()); });
   std::size_t pairs = 0;
-  for (const auto& ph : phases) pairs = std::max(pairs, ph.pairs.size());
-  const int H = std::min(kMaxOrders, (int(phases.size()) - 2) / 2);
+  for (const auto& ph : loaded_->ste(file_.torques.front())) pairs = std::max(pairs, ph.mesh.pairs.size());
+  const int H = std::min(kMaxOrders, (file_.phases - 2) / 2);
   std::vector<std::string> spectrum_columns{"order"};
   std::vector<Eigen::VectorXd> spectra;
   KeyNumbers& key = run.key_numbers();
   const PathOfContact path = m.path();
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
-    const double T = file_.torques[i], F = m.force(T);
+    const double T = file_.torques[i], F = loaded_->force(T);
     const std::string n = std::to_string(i + 1);
-    const std::vector<PairStePoint> c = run.timed("ste_" + n, [&] { return pair_ste(m, phases, T); });
+    const std::vector<PairStePoint> c = run.timed("ste_" + n, [&] { return loaded_->ste(T); });
     run.write("ste_" + n + ".csv", ste_table(c, pairs, F));
     std::vector<double> ste;
     for (const auto& p : c) ste.push_back(p.ste);
@@ -257,7 +287,7 @@ void GearPairFromFile::transmission_error(Run& run) const {
     key.add("ste_mean_um_" + n, mean * 1e6, "um");
     key.add("mesh_stiffness_mean_N_per_m_" + n, mean_stiffness(ste, F), "N/m");
     key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c, path), "-");
-    key.add("single_pair_deflection_um_" + n, single_pair_ste(m, path.AC, T, stiffness()) * 1e6, "um");
+    key.add("single_pair_deflection_um_" + n, loaded_->single_pair_ste(path.AC, T) * 1e6, "um");
     spectrum_columns.push_back("amplitude_um_" + n);
     spectra.push_back(periodic_fourier(ste, H));
     char line[160];
@@ -269,7 +299,7 @@ void GearPairFromFile::transmission_error(Run& run) const {
   run.write("spectrum.csv", spectrum_table(spectrum_columns, spectra, H));
 }
 
-// Step 4: ISO 6336-1 method B for the same pair, at the file's largest torque.
+// Step 5: ISO 6336-1 method B for the same pair, at the file's largest torque.
 void GearPairFromFile::iso6336(Run& run) const {
   const PairSteModel& m = file_.pair;
   const double T = *std::max_element(file_.torques.begin(), file_.torques.end());
@@ -287,23 +317,19 @@ void GearPairFromFile::iso6336(Run& run) const {
   key.add("iso6336_line_load_N_per_mm", line_load, "N/mm");
 }
 
-// Step 5: the Harris map, STE peak-to-peak against torque with and without the relief.
+// Step 6: the Harris map, STE peak-to-peak against torque with and without the relief
+// (the same tooth model: the reliefs are separations of its contact problem).
 void GearPairFromFile::harris_map(Run& run) const {
-  PairSteModel plain = file_.pair;
-  plain.relief1.amount = plain.relief2.amount = 0.0;
-  const PairStiffnessFn k = stiffness();
-  const auto relieved = run.timed("harris_phases", [&] { return mesh_phases(file_.pair, file_.phases, k); });
-  const auto unmodified = mesh_phases(plain, file_.phases, k);
   Table t({"torque_Nm", "ste_ptp_um", "ste_ptp_um_unmodified", "loaded_contact_ratio"});
   double best = 1e300, at = 0.0;
   for (int j = 0; j < file_.harris_points; ++j) {
     const double T = file_.harris_from + (file_.harris_to - file_.harris_from) * j / (file_.harris_points - 1);
-    const auto c = pair_ste(file_.pair, relieved, T);
+    const auto c = loaded_->ste(T);
     std::vector<double> v;
     for (const auto& p : c) v.push_back(p.ste);
     const double ptp = peak_to_peak(v);
     v.clear();
-    for (const auto& p : pair_ste(plain, unmodified, T)) v.push_back(p.ste);
+    for (const auto& p : loaded_->ste(T, false)) v.push_back(p.ste);
     t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, loaded_contact_ratio(c, file_.pair.path())});
     if (ptp < best) best = ptp, at = T;
   }
@@ -312,18 +338,17 @@ void GearPairFromFile::harris_map(Run& run) const {
   run.key_numbers().add("harris_min_ptp_um", best * 1e6, "um");
 }
 
-// Step 6: the response over the speed range for every torque, both flanks, with Floquet
+// Step 7: the response over the speed range for every torque, both flanks, with Floquet
 // stability and bifurcations (frc_<i>.csv, bifurcations_<i>.csv), GSL time integration at
 // stable points (check_time_integration_<i>.csv), the closed-contact modes (modes.csv).
 void GearPairFromFile::dynamics(Run& run) const {
-  const std::vector<MeshPhase> phases = mesh_phases(file_.pair, file_.phases, stiffness());
   const GearDynamicsInput& d = file_.dynamics;
   Table modes({"torque_index", "torque_Nm", "mode", "f_hz", "speed_rpm_mesh_order_1"});
   Table spectrum({"torque_index", "f_mesh_hz", "order", "amplitude_um"});
   Table history({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
   double history_kv = 0.0;
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
-    const Response r = response(run, i, phases);
+    const Response r = response(run, i);
     const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
     response_tables(run, i, hb, r);
     response_key_numbers(run, i, r);
@@ -338,7 +363,7 @@ void GearPairFromFile::dynamics(Run& run) const {
   if (history.rows() > 0) run.write("time_history.csv", history);
 }
 
-// Step 7: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
+// Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
 // dotted curves of response.png), with ISO 1328-1 grade dynamics.iso_quality_grade.
 void GearPairFromFile::iso_dynamic_factor(Run& run) const {
   constexpr int kSpeeds = 801;
@@ -440,11 +465,11 @@ std::string GearPairFromFile::torque_label(std::size_t i) const {
 }
 
 // The mesh at torque i and its frequency curve over the speed range.
-GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, const std::vector<MeshPhase>& phases) const {
+GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i) const {
   const GearDynamicsInput& d = file_.dynamics;
   const double T = file_.torques[i];
   Response r;
-  r.mesh = gear_pair_mesh(file_.pair, pair_ste(file_.pair, phases, T), T, file_.gear[0].inertia, file_.gear[1].inertia,
+  r.mesh = gear_pair_mesh(file_.pair, loaded_->ste(T), T, file_.gear[0].inertia, file_.gear[1].inertia,
                           d.zeta, d.back_flank ? file_.backlash : INFINITY);
   const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
   SweepOptions o;
@@ -541,7 +566,7 @@ void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const Har
   key.add("time_integration_rel_diff_max_" + n, worst, "-");
 }
 
-// Step 8: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
+// Step 9: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
 void GearPairFromFile::draw(Run& run) const {
   // The script reads the key numbers too: the frame writes them once the steps are
   // done, so write them into the staging folder now (the frame rewrites the same).

@@ -12,6 +12,7 @@ plus the published values (FZG type C, ISO/TR 6336-30 Ex. 01, the thesis) record
 beside ours as "published_value" / "thesis_value" with the reason for any gap.
 """
 import json
+import math
 import pathlib
 import subprocess
 
@@ -264,5 +265,46 @@ write("ross_pair", "ross_pair.json", ["--set", "plot=0"], n)
 # --- the potential-energy method (model.method = potential_energy) ---------------------------------
 for name in ("thesis_pair_pe", "thesis_pair_relief_pe", "ross_pair_pe", "fzg_c_pe"):
     write(name, name + ".json", ["--set", "plot=0"], pe_numbers(name, [1, 2, 3]))
+
+# --- tooth contact by finite elements (model.method = fe) -------------------------------------------
+# Checked against the FE's own mesh convergence (an independent check of the discretisation, not a
+# stored output): the Richardson limits of reference/fe_tooth_contact.md section 1
+# (DISABLED_FeToothContactStudy.MeshConvergence: element sizes times 1, 1/sqrt 2, 1/2, 64 phases, the
+# files' largest torque), and for ROSS's deep web the body torsion against the annulus r_i..r_f in
+# torsion, (1/r_i^2 - 1/r_f^2) / (4 pi G b), G = E / (2 (1 + nu)): a closed form.
+FE_LIMITS = {  # mean and single-pair stiffness [N/m] at torque 3, Richardson limits
+    "thesis_pair_fe": ("thesis_pair", 545.634e6, 375.923e6),
+    "fzg_c_fe": ("fzg_c", 277.257e6, 227.074e6),
+    "ross_pair_fe": ("ross_pair", 285.603e6, 230.604e6)}
+FE_SOURCE = ("reference/fe_tooth_contact.md section 1: Richardson limit of the FE at element sizes times 1, "
+             "1/sqrt 2, 1/2 (DISABLED_FeToothContactStudy.MeshConvergence), largest torque, 64 phases")
+FE_WHY = ("the default mesh's discretisation error: measured 0.02-0.05 % against the limit (observed orders "
+          "2.8-3.9); 0.5 % is the bound the default mesh is held to (issue 33 asks for 1 %)")
+for name, (geo_name, k_mean, k_single) in FE_LIMITS.items():
+    f = json.load(open(HERE.parents[1] / "chapters" / "gearhb_gear" / "examples" / (name + ".json")))
+    F = f["torques"][2] / GEO[geo_name]["base_radius_1_m"]
+    n = {"method_fe": entry("method_fe", 1.0, "the file's model.method", {"abs": 0}, "a flag"),
+         "mesh_stiffness_mean_N_per_m_3": entry("mesh_stiffness_mean_N_per_m_3", k_mean, FE_SOURCE, {"rel": 5e-3},
+                                                FE_WHY),
+         "single_pair_deflection_um_3": entry("single_pair_deflection_um_3", F / k_single * 1e6,
+                                              FE_SOURCE + "; F = T1 / rb1 / k_single", {"rel": 5e-3}, FE_WHY)}
+    for i in (1, 2, 3):
+        k = "loaded_contact_ratio_%d" % i
+        n[k] = loaded_ratio_entry(k, None, CLOSED, geo_name)
+    if name == "ross_pair_fe":
+        g = f["gears"][0]
+        G = g["E"] / (2 * (1 + g["nu"]))
+        rf = GEO[geo_name]["root_radius_1_m"]
+        c = (1 / g["rim_radius"] ** 2 - 1 / rf ** 2) / (4 * math.pi * G * g["b"])
+        for j in (1, 2):
+            k = "fe_body_torsion_compliance_%d_rad_per_Nm" % j
+            n[k] = entry(k, c, "the annulus r_i..r_f in torsion, (1/r_i^2 - 1/r_f^2) / (4 pi G b): closed form",
+                         {"rel": 1e-2}, "the annulus leaves out the teeth, which stiffen only the outer edge; with "
+                         "r_i / r_f = 0.29 the compliance sits at the bore (measured 0.16 %); for the thesis and "
+                         "FZG rims (r_i / r_f 0.57-0.87) the teeth matter (3-7 %), so only ROSS is checked so",
+                         unit="rad/(N m)")
+    if "speed" in f:
+        n.update(dynamics_numbers([1, 2, 3]))
+    write(name, name + ".json", ["--set", "plot=0"], n)
 
 print("wrote", sorted(p.name for p in OUT.glob("*.json")))

@@ -4,6 +4,7 @@
 // the resolved Hertz width). Convergence studies: DISABLED_ tests, results in
 // reference/fe_tooth_contact.md.
 #include <chrono>
+#include <cstdio>
 #include <cmath>
 #include <iostream>
 #include <random>
@@ -12,6 +13,7 @@
 
 #include "gearhb/gears/coupled_load_sharing.hpp"
 #include "gearhb/gears/fe_tooth_contact.hpp"
+#include "gearhb/gears/loaded_pair.hpp"
 #include "gearhb/gears/load_sharing.hpp"
 #include "fe_pair_examples.hpp"
 
@@ -277,6 +279,52 @@ TEST(FePair, ReliefsChangedWithoutRebuildingEqualAModelBuiltWithThem) {
     unloaded += a[q].loaded < int(built.phases()[q].pairs.size());
   }
   EXPECT_GT(unloaded, 0);
+}
+
+// The Harris map's curve without relief (LoadedPair::ste(T, false)) must be the model of
+// the same pair built without its reliefs, for the FE (separations zeroed in the reused
+// model) and for the beams (a second set of phases); force conventions as the models'.
+TEST(LoadedPair, WithoutReliefsEqualsThePairBuiltWithoutThem) {
+  PairSteModel pair;
+  pair.gear1 = pair.gear2 = thesis_gear();
+  pair.tooth_force = ToothForce::over_base_radius;
+  PairSteModel relieved = pair;
+  relieved.relief1 = relieved.relief2 = tip_relief(pair.gear1, 20e-6, ReliefStart::roll_angle_deg, 24.0, ReliefShape::linear);
+  FePairOptions o;
+  o.gear1.sector_teeth = o.gear2.sector_teeth = 5;
+  const auto fe = fe_loaded_pair(relieved, 16, o);
+  const FePairModel plain_fe(pair, 16, o);
+  const auto beams = phase_loaded_pair(relieved, 16);
+  const auto plain_beams = pair_ste(pair, mesh_phases(pair, 16), 300);
+  const auto a = fe->ste(300, false), r = fe->ste(300), b = plain_fe.pair_ste(300), c = beams->ste(300, false);
+  ASSERT_EQ(a.size(), b.size());
+  double changed = 0;
+  for (std::size_t q = 0; q < a.size(); ++q) {
+    EXPECT_EQ(a[q].ste, b[q].ste);
+    EXPECT_EQ(c[q].ste, plain_beams[q].ste);
+    changed = std::max(changed, std::fabs(r[q].ste - a[q].ste));
+  }
+  EXPECT_GT(changed, 1e-6);   // the relief matters here: the test could fail
+  EXPECT_EQ(fe->force(300), 300 / pair.gear1.base_radius());
+  PairSteModel pitch = relieved;
+  pitch.tooth_force = ToothForce::over_pitch_radius;
+  EXPECT_THROW(fe_loaded_pair(pitch, 16, o), std::invalid_argument);
+}
+
+// The memory guard's estimate (fe_gear_node_estimate) must bound the mesh Gmsh makes, so
+// that a mesh it lets through fits; how far above it lies is printed (the guard's cost:
+// meshes refused that would have fitted).
+TEST(FeToothContact, NodeEstimateBoundsTheMesh) {
+  GearGeometry fzg = thesis_gear();
+  fzg.module = 4.5e-3, fzg.teeth = 16, fzg.profile_shift = 0.1817, fzg.addendum = 4.5e-3, fzg.dedendum = 5.625e-3;
+  for (const GearGeometry& g : {thesis_gear(), fzg}) {
+    const FeGearOptions o;
+    const double estimate = fe_gear_node_estimate(g, o);
+    const FeGearModel m(g, 207e9, 0.3, o);
+    EXPECT_GE(estimate, double(m.mesh().node_count())) << "z = " << g.teeth;
+    std::printf("z = %d: estimated %.0f nodes, meshed %d (ratio %.2f)\n", g.teeth, estimate, m.mesh().node_count(),
+                estimate / m.mesh().node_count());
+  }
 }
 
 TEST(FeToothContact, RefusesPointsOffTheFlankAndTooSmallSectors) {

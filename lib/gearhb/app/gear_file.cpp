@@ -91,6 +91,50 @@ void check_potential_energy(GearFile& f, const std::string& path, const PathOfCo
   }
 }
 
+// Method fe: the FE model of each gear (fe_tooth_contact.hpp) down to the file's rim radius
+// (0: max(rf - 3 m, 0.5 rf)), graded by `model.fe_mesh` (element sizes in units of m, the
+// defaults the converged ones of reference/fe_tooth_contact.md, and `scale` multiplying
+// all); the mesh is refused here, before it is built, where its estimated size exceeds
+// kFeMaxNodes (fe_gear_node_estimate).
+constexpr double kFeMaxNodes = 2e6;
+
+void read_fe_model(GearFile& f, const json& model, const std::string& path) {
+  const Reader r{path};
+  const json mesh = model.value("fe_mesh", json::object());
+  if (!mesh.is_object()) fail_key(path, "model.fe_mesh", "must be an object");
+  only_keys(mesh, path, "model.fe_mesh", {"contact_size", "tooth_size", "far_tooth_size", "body_size", "scale"});
+  FeMeshDensity d;
+  d.contact_size = r.optional(mesh, "model.fe_mesh", "contact_size", d.contact_size, 0.005, 0.1, "[0.005, 0.1] (units of m)");
+  d.tooth_size = r.optional(mesh, "model.fe_mesh", "tooth_size", d.tooth_size, 0.02, 0.5, "[0.02, 0.5] (units of m)");
+  d.far_tooth_size = r.optional(mesh, "model.fe_mesh", "far_tooth_size", d.far_tooth_size, 0.02, 0.25, "[0.02, 0.25] (units of m)");
+  d.body_size = r.optional(mesh, "model.fe_mesh", "body_size", d.body_size, 0.05, 3.0, "[0.05, 3] (units of m)");
+  d.scale = r.optional(mesh, "model.fe_mesh", "scale", d.scale, 0.25, 4.0, "[0.25, 4]");
+  const GearGeometry* geo[2] = {&f.pair.gear1, &f.pair.gear2};
+  FeGearOptions* o[2] = {&f.fe.gear1, &f.fe.gear2};
+  for (int i = 0; i < 2; ++i) {
+    const std::string prefix = "gears." + std::to_string(i);
+    const double rf = geo[i]->root_radius(), m = geo[i]->module;
+    o[i]->density = d;
+    o[i]->root_radius_coefficient = f.root_radius_coefficient;
+    o[i]->rim_radius = f.gear[i].rim_radius;
+    o[i]->max_nodes = kFeMaxNodes;
+    if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < rf - m))
+      fail_key(path, prefix + ".rim_radius", "must be below rf - m = " + mm(rf - m) + " for method fe (a rim of a module at least)");
+    double nodes = 0.0;
+    try {
+      nodes = fe_gear_node_estimate(*geo[i], *o[i]);
+    } catch (const std::invalid_argument& e) {
+      fail_key(path, "model.fe_mesh", std::string("gives no mesh for gear ") + std::to_string(i + 1) + ": " + e.what());
+    }
+    if (!(nodes <= kFeMaxNodes))
+      fail_key(path, "model.fe_mesh", "gives gear " + std::to_string(i + 1) + " an estimated " + std::to_string(long(nodes)) +
+                                          " nodes, above the limit of " + std::to_string(long(kFeMaxNodes)) +
+                                          ": coarsen it (larger sizes or scale)");
+  }
+  f.fe.poisson_ratio1 = f.gear[0].poisson_ratio;
+  f.fe.poisson_ratio2 = f.gear[1].poisson_ratio;
+}
+
 // `speed` and `dynamics`: the response over the speed range (absent `speed`: none).
 void read_dynamics(GearFile& f, const json& j, const std::string& path) {
   const Reader r{path};
@@ -240,8 +284,9 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   // --- the reading of the beam model ------------------------------------------------
   const json model = j.value("model", json::object());
   only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
-                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force"});
-  f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy"}, 0));
+                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh"});
+  f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy", "fe"}, 0));
+  if (model.contains("fe_mesh") && f.method != ToothModel::fe) fail_key(path, "model.fe_mesh", "needs method fe");
   f.phases = model.contains("phases") ? json_whole(model["phases"], path, "model.phases", 16, 4096) : 64;
   f.pair.positions_per_base_pitch =
       model.contains("positions_per_base_pitch")
@@ -253,14 +298,19 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 64]");
   f.pair.thickness_at = ThicknessAt(r.choice(model, "model", "thickness_at", {"root_node", "midpoint", "tip_node"}, 0));
   f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"},
-                                      f.method == ToothModel::potential_energy ? 0 : 2));
-  // The PE pair stiffness holds its own (linear, Yang & Sun) Hertz: a Palmgren term on top
-  // would count the contact twice.
-  if (f.method == ToothModel::potential_energy && f.pair.hertz != HertzCount::none)
-    fail_key(path, "model.hertz", "must be none with method potential_energy (its linear Hertz is inside the pair stiffness)");
+                                      f.method == ToothModel::beam ? 2 : 0));
+  // The PE pair stiffness holds its own (linear, Yang & Sun) Hertz, the FE its resolved
+  // contact: a Palmgren term on top would count the contact twice.
+  if (f.method != ToothModel::beam && f.pair.hertz != HertzCount::none)
+    fail_key(path, "model.hertz", std::string("must be none with method ") +
+                                      (f.method == ToothModel::fe ? "fe (the contact is inside the FE compliance)"
+                                                                  : "potential_energy (its linear Hertz is inside the pair stiffness)"));
   f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 0));
   f.pair.pair_stiffness = PairStiffness(r.choice(model, "model", "pair_stiffness", {"fused", "cantilevers"}, 0));
-  f.pair.tooth_force = ToothForce(r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, 0));
+  f.pair.tooth_force = ToothForce(
+      r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, f.method == ToothModel::fe ? 1 : 0));
+  if (f.method == ToothModel::fe && f.pair.tooth_force != ToothForce::over_base_radius)
+    fail_key(path, "model.tooth_force", "must be base_radius with method fe (its force acts along the line of action)");
 
   const json harris = j.value("harris", json::object());
   only_keys(harris, path, "harris", {"from", "to", "points"});
@@ -288,6 +338,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
                                                         ") at this centre distance: the teeth would interpenetrate");
   }
   if (f.method == ToothModel::potential_energy) check_potential_energy(f, path, p);
+  if (f.method == ToothModel::fe) read_fe_model(f, model, path);
   const int ne = f.pair.elements();
   if (ne < 2 || ne > 64) fail_key(path, "model.tooth_elements", "8 eps_alpha gives " + std::to_string(ne) + " elements: give 2..64");
   const int P = f.pair.positions_per_base_pitch;
@@ -322,11 +373,12 @@ std::string gear_file_help() {
          "  gears[i].z                   teeth (whole, 5..1000); i = 0 driver, 1 driven\n"
          "  gears[i].x                   profile shift coefficient (default 0, in [-1, 2])\n"
          "  gears[i].b                   face width [m]\n"
-         "  gears[i].E, gears[i].nu      Young's modulus [Pa], Poisson's ratio (nu recorded only: the\n"
-         "                               Palmgren Hertz law is for steel)\n"
+         "  gears[i].E, gears[i].nu      Young's modulus [Pa], Poisson's ratio (nu used by method fe; recorded\n"
+         "                               only by beam and potential_energy: their Hertz laws are for steel)\n"
          "  gears[i].inertia             polar moment of inertia [kg m^2] (recorded, for the dynamics)\n"
          "  gears[i].rim_radius          rim/bore radius [m] (beam: recorded, the tooth root is clamped;\n"
-         "                               potential_energy: required, the fillet foundation's bore)\n"
+         "                               potential_energy: required, the fillet foundation's bore; fe: the\n"
+         "                               fixed bore, below rf - m, 0 = max(rf - 3 m, 0.5 rf))\n"
          "  gears[i].tip_relief.amount   Ca [m] at the tip circle (0: none)\n"
          "  gears[i].tip_relief.start    exactly one of {roll_angle_deg: xi [deg]}, {diameter: d [m]},\n"
          "                               {length: L [m] along the path of contact, measured from the tip}\n"
@@ -336,6 +388,15 @@ std::string gear_file_help() {
          "                               gears[i].rim_radius, which it needs; linear Hertz inside the pair stiffness,\n"
          "                               so model.hertz must be none, its default then; tooth_elements, thickness_at,\n"
          "                               pair_stiffness and pair_hertz do not apply; no node reading)\n"
+         "                               | fe (tooth contact by plane-strain finite elements on the generated tooth\n"
+         "                               form, each gear whole and fixed at gears[i].rim_radius, 0: max(rf - 3 m,\n"
+         "                               0.5 rf); contact inside, so model.hertz none and model.tooth_force base_radius,\n"
+         "                               their defaults then; about 2-5 s per pair to build; reference/fe_tooth_contact.md)\n"
+         "  model.fe_mesh.contact_size   element size along the loaded flanks (units of m, default 0.025), and\n"
+         "  model.fe_mesh.tooth_size     ... on the loaded teeth and their neighbours (default 0.1),\n"
+         "  model.fe_mesh.far_tooth_size ... on the other teeth (default 0.25), body_size in the body (default 1);\n"
+         "  model.fe_mesh.scale          all sizes times scale (default 1; the defaults are within 0.05 % of the\n"
+         "                               extrapolated mean stiffness). A mesh estimated above 2e6 nodes is refused\n"
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"

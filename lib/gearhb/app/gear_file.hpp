@@ -23,8 +23,8 @@
 //                                              "diameter" [m], "length" [m] along the path
 //                                              from the tip; shape linear | parabolic
 //       }, {...} ],
-//     "model": {...},                          method beam | potential_energy, and the reading
-//                                              of the beam model (gear_file_help)
+//     "model": {...},                          method beam | potential_energy | fe, the reading
+//                                              of the beam model, the FE mesh (gear_file_help)
 //     "harris": {"from": 50, "to": 500, "points": 19}   torques of the Harris map [N m]
 //     "speed": {"unit": "mesh_hz", "from": 300, "to": 5000},
 //                                              optional: the speed range of the dynamics, in mesh
@@ -45,6 +45,7 @@
 #include <nlohmann/json.hpp>
 
 #include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/fe_tooth_contact.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
@@ -77,15 +78,17 @@ struct GearDynamicsInput {
   int iso_quality_grade = 5;       // ISO 1328-1 grade for ISO 6336-1's K_v
 };
 
-// The tooth model of the pair stiffness (`model.method`): chapter 7's beams (the
-// thesis) or the potential-energy method (potential_energy.hpp, through the
-// PairStiffnessFn seam of mesh_phases; its linear Hertz is inside the pair stiffness).
-enum class ToothModel : int { beam = 0, potential_energy = 1 };
+// The tooth model of the pair stiffness (`model.method`; loaded_pair.hpp): chapter 7's
+// beams (the thesis), the potential-energy method (potential_energy.hpp, through the
+// PairStiffnessFn seam of mesh_phases; its linear Hertz is inside the pair stiffness), or
+// tooth contact by finite elements (fe_tooth_contact.hpp; contact inside, force T1 / rb1).
+enum class ToothModel : int { beam = 0, potential_energy = 1, fe = 2 };
 
 struct GearFile {
   std::string name;
   ToothModel method = ToothModel::beam;
   PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
+  FePairOptions fe;                // the FE models of both gears (method fe: model.fe_mesh, rim_radius)
   PairSteModel pair;               // geometry, materials, reliefs, the model's reading
   GearFileGear gear[2];
   double dedendum_coefficient = 1.25, root_radius_coefficient = 0.38;   // hf*, rho_f*

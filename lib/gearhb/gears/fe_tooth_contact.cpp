@@ -205,10 +205,27 @@ struct FeGearModel::Impl {
     return -normal(p).dot(v);
   }
 
+  void set_up(const GearGeometry& g, const FeGearOptions& o);
+  fe::MeshSpec mesh_spec();
   void build_mesh();
 };
 
+void FeGearModel::Impl::set_up(const GearGeometry& g, const FeGearOptions& o) {
+  gear = g;
+  options = o;
+  w = o.load_width * g.module;
+  rb = g.base_radius();
+  const double alpha = g.pressure_angle_rad();
+  theta_b = (pi / 2 + 2 * g.profile_shift * std::tan(alpha)) / g.teeth + involute(alpha);
+}
+
 void FeGearModel::Impl::build_mesh() {
+  mesh = fe::mesh_with_gmsh(mesh_spec());
+  for (std::size_t e = 0; e < mesh.edges.size(); ++e) edges_of_tag[mesh.edge_tags[e]].push_back(int(e));
+}
+
+// The geometry and the graded sizes of the gear's mesh (section 1), with the runs' tags.
+fe::MeshSpec FeGearModel::Impl::mesh_spec() {
   const double m = gear.module, rf = gear.root_radius();
   ToothFormOptions fo;
   fo.root_radius_coefficient = options.root_radius_coefficient;
@@ -282,25 +299,25 @@ void FeGearModel::Impl::build_mesh() {
   }
   spec.refinements = {contact, near};
   if (!far.points.empty()) spec.refinements.push_back(far);
-  mesh = fe::mesh_with_gmsh(spec);
-  for (std::size_t e = 0; e < mesh.edges.size(); ++e) edges_of_tag[mesh.edge_tags[e]].push_back(int(e));
+  return spec;
+}
+
+double fe_gear_node_estimate(const GearGeometry& gear, const FeGearOptions& options) {
+  FeGearModel::Impl s;
+  s.set_up(gear, options);
+  return fe::estimate_node_count(s.mesh_spec());
 }
 
 FeGearModel::FeGearModel(const GearGeometry& gear, double youngs_modulus, double poisson_ratio,
                          const FeGearOptions& options)
     : impl_(std::make_unique<Impl>()) {
   Impl& s = *impl_;
-  s.gear = gear;
+  s.set_up(gear, options);
   s.E = youngs_modulus;
   s.nu = poisson_ratio;
-  s.options = options;
   s.material.youngs_modulus = youngs_modulus;
   s.material.poisson_ratio = poisson_ratio;
   s.material.thickness = gear.face_width;
-  s.w = options.load_width * gear.module;
-  s.rb = gear.base_radius();
-  const double alpha = gear.pressure_angle_rad();
-  s.theta_b = (pi / 2 + 2 * gear.profile_shift * std::tan(alpha)) / gear.teeth + involute(alpha);
   s.build_mesh();
   fe::Constraints fix;
   fe::fix_tagged(s.mesh, bore_tag, 0, 0.0, fix);
@@ -611,9 +628,12 @@ std::vector<FeStePoint> FePairModel::ste(double torque) const {
   return out;
 }
 
-std::vector<PairStePoint> FePairModel::pair_ste(double torque) const {
+std::vector<PairStePoint> FePairModel::pair_ste(double torque, bool reliefs) const {
   std::vector<PairStePoint> out;
-  for (const FePhase& p : phases_) {
+  for (const FePhase& phase : phases_) {
+    FePhase p = phase;
+    if (!reliefs)
+      for (PairContact& c : p.pairs) c.separation = 0.0;   // the separations are the reliefs only
     const FeStePoint q = solve_phase(p, force(torque));
     PairStePoint o;
     o.mesh.phase = p.phase;

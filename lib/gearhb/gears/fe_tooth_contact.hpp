@@ -108,6 +108,7 @@ struct FlankPoint {
 
 class FeGearModel {
  public:
+  struct Impl;
   // Meshes, assembles and factors. Throws std::invalid_argument for a sector too small
   // for the loaded teeth (n < K), a bore radius not below rf - m, a mesh above max_nodes.
   FeGearModel(const GearGeometry& gear, double youngs_modulus, double poisson_ratio,
@@ -143,9 +144,14 @@ class FeGearModel {
   const FeGearOptions& options() const;
 
  private:
-  struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The P2 node count FeGearModel(gear, ..., options) would mesh, estimated from the size
+// field before Gmsh runs (fe::estimate_node_count: an upper bound, up to about 17x high for
+// the strongly graded gear meshes; reference/fe_tooth_contact.md). Throws
+// std::invalid_argument where the constructor would (a bore not below rf - m).
+double fe_gear_node_estimate(const GearGeometry& gear, const FeGearOptions& options);
 
 struct FePairOptions {
   FeGearOptions gear1, gear2;
@@ -186,8 +192,9 @@ class FePairModel {
   std::vector<FeStePoint> ste(double torque) const;
   // The same as ste_continuous.hpp's PairStePoint (what gearhb_gear's tables, Harris map
   // and dynamics take): forces in mesh.pairs, approach = ste = X, hertz = 0 (the contact
-  // compliance is inside X).
-  std::vector<PairStePoint> pair_ste(double torque) const;
+  // compliance is inside X). reliefs false: the same pair without its tip reliefs (every
+  // separation 0; the Harris map's unmodified curve).
+  std::vector<PairStePoint> pair_ste(double torque, bool reliefs = true) const;
   // The contact problem at one phase for tooth force F [N] (section 3).
   FeStePoint solve_phase(const FePhase& phase, double force) const;
   // New tip reliefs without rebuilding the FE models (the FE geometry has none, section
