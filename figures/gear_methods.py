@@ -25,7 +25,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from style import COMPARISON_COLOURS, read_csv, save  # noqa: E402
 
 # Methods, not torques: comparison colours (style.py), never a torque colour.
-BEAM, PE = COMPARISON_COLOURS[0], COMPARISON_COLOURS[1]
+BEAM, PE, FE = COMPARISON_COLOURS[0], COMPARISON_COLOURS[1], COMPARISON_COLOURS[3]
 
 GEARS = [("thesis_pair", "thesis gear z 50/50, m 3 mm",
           "beam: thesis readings (Palmgren per tooth, fused pairs)"),
@@ -66,22 +66,24 @@ def table(root):
 def methods_figure(root, fig_dir):
     fig, axes = plt.subplots(2, 3, figsize=(12.5, 7.2), sharex=True)
     for col, (name, label, beam_reading) in enumerate(GEARS):
-        b, p = run(root, name), run(root, name + "_pe")
+        b, p, f = run(root, name), run(root, name + "_pe"), run(root, name + "_fe")
         ax_k, ax_e = axes[0][col], axes[1][col]
-        for r, style, what in ((b, "-", "beam model"), (p, "--", "potential energy")):
+        for r, style, colour, what in ((f, "-", FE, "finite elements"), (b, "-", BEAM, "beam model"),
+                                       (p, "--", PE, "potential energy")):
             ph = r["ste"]["phase"]
             i = r["i"]
-            ax_k.plot(ph, [v / 1e6 for v in r["ste"]["k_N_per_m"]], style, color=BEAM if r is b else PE,
+            ax_k.plot(ph, [v / 1e6 for v in r["ste"]["k_N_per_m"]], style, color=colour, lw=2.2 if r is f else 1.5,
                       label="%s: mean %.0f MN/m" % (what, r["kn"]["mesh_stiffness_mean_N_per_m_%d" % i] / 1e6))
-            ax_e.plot(ph, r["ste"]["ste_um"], style, color=BEAM if r is b else PE,
+            ax_e.plot(ph, r["ste"]["ste_um"], style, color=colour, lw=2.2 if r is f else 1.5,
                       label="%s: peak-to-peak %.2f um" % (what, r["kn"]["ste_ptp_um_%d" % i]))
         iso = b["kn"]["iso6336_c_gamma_alpha_N_per_m"] / 1e6
         ax_k.axhline(iso, color="k", ls=":", lw=1.2, label="ISO 6336-1 c_gamma_alpha b = %.0f MN/m" % iso)
         out_of_fit = [str(j) for j in (1, 2) if p["kn"].get("pe_fillet_in_range_%d" % j, 1) == 0]
-        ax_k.set_title("%s, T1 = %g N m\n%s\nPE: bore radius %s mm%s%s" % (
+        ax_k.set_title("%s, T1 = %g N m\n%s\nPE: bore radius %s mm%s; FE: bores %s mm%s" % (
             label, b["T"], beam_reading,
             " / ".join("%g" % (g["rim_radius"] * 1e3) for g in p["params"]["gears"]),
-            "" if name == "ross_pair" else " (assumed, not in the source)",
+            "" if name == "ross_pair" else " (assumed)",
+            " / ".join("%.2f" % (f["kn"]["fe_bore_radius_%d_m" % j] * 1e3) for j in (1, 2)),
             "\nPE: Sainsot's fillet fit extrapolated on gear %s" % " and ".join(out_of_fit) if out_of_fit else ""),
             fontsize=8)
         ax_k.set_ylim(bottom=0)
@@ -92,8 +94,9 @@ def methods_figure(root, fig_dir):
         ax_e.set_xlim(0, 1)
     axes[0][0].set_ylabel("mesh stiffness k = F / STE [MN/m]")
     axes[1][0].set_ylabel("static transmission error STE [um]")
-    fig.suptitle("Two tooth models of one pair, no tip relief, at the largest torque of each file: beam model "
-                 "(solid) against potential-energy method (dashed)", fontsize=10)
+    fig.suptitle("Three tooth models, no tip relief, largest torque of each file: finite elements (thick), beam, "
+                 "potential energy (dashed);\neach as its example file has it (force convention, readings, bores): "
+                 "figures/tooth_model_chart.py compares them like for like", fontsize=10)
     fig.tight_layout()
     out = fig_dir / "gear_methods.png"
     save(fig, out)

@@ -8,8 +8,10 @@ Figures land in build/figures/figNN_*.png, named after the thesis figure number.
 Then, if build/bin/gearhb_gear exists, every gear-pair example of
 chapters/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
 draws its own figures there) and its figures are copied to
-build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the beam /
-potential-energy comparison from those folders (build/figures/gear_methods*.png) and
+build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the FE / beam /
+potential-energy comparison from those folders (build/figures/gear_methods*.png),
+figures/tooth_model_chart.py the tooth models' error against cost
+(build/figures/gear_tooth_models.png, build/data/gearhb_gear/tooth_models/tooth_models.csv) and
 figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png);
 build/figures/index.html (figures/report.py)
 links them all.
@@ -78,6 +80,11 @@ def main():
         # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
         import gear_methods
         for png in gear_methods.draw(build / "data" / "gearhb_gear", fig_dir):
+            print("[figures]   %s" % png, flush=True)
+        # Which tooth model a scene needs: error against cost (figures/tooth_model_chart.py; about
+        # a minute: FE runs at five mesh sizes per pair).
+        import tooth_model_chart
+        for png in tooth_model_chart.draw(gear, build / "data" / "gearhb_gear" / "tooth_models", fig_dir):
             print("[figures]   %s" % png, flush=True)
         # One DOF against six (figures/gear_models.py) from the dynamics examples.
         import gear_models

@@ -19,6 +19,7 @@ CTest checks it on the quick run) is shown, never compared with the full run: a 
 never shows a failure that is not one. Last, the thesis figures that cannot be computed.
 Static HTML, no JavaScript; a figure opens full size when clicked.
 """
+import csv
 import html
 import json
 import math
@@ -265,6 +266,63 @@ def figure_index(all_figs):
     return out
 
 
+METHOD_NAMES = {"beam": "beam", "pe": "potential energy", "fe": "finite elements"}
+CHART_NAMES = {"beam": "beam, consistent reading", "beam_thesis": "beam, thesis reading", "pe": "potential energy",
+               "fe": "FE, default sizes", "iso": "ISO 6336-1"}
+
+
+def largest_torque_stiffness(run_dir):
+    """(T1, mean k) at the run's largest torque, or None."""
+    try:
+        params = json.load(open(run_dir / "params.json"))
+        kn = json.load(open(run_dir / "key_numbers.json"))
+        i = max(range(len(params["torques"])), key=lambda j: params["torques"][j]) + 1
+        return params["torques"][i - 1], kn["mesh_stiffness_mean_N_per_m_%d" % i]["value"], kn
+    except (OSError, KeyError, ValueError, TypeError):
+        return None
+
+
+def tooth_model_section(run_dir):
+    """Which tooth model to trust: the run's mean stiffness at its largest torque beside ISO and the
+    other methods' runs of the same pair (the sibling example files <pair>, <pair>_pe, <pair>_fe),
+    and the verdict of the tooth-model chart (figures/tooth_model_chart.py, tooth_models.csv)."""
+    me = largest_torque_stiffness(run_dir)
+    if not me:
+        return []
+    pair = re.sub(r"_(pe|fe)$", "", run_dir.name)
+    out = ["<h2>Which tooth model to trust</h2><table><tr><th>run</th><th>method</th><th>T1 [N m]</th>"
+           "<th>mean k [MN/m]</th><th>against this run</th></tr>"]
+    for suffix, method in (("", "beam"), ("_pe", "pe"), ("_fe", "fe")):
+        other = largest_torque_stiffness(run_dir.parent / (pair + suffix))
+        if other:
+            out.append("<tr><td>%s%s</td><td>%s</td><td class='num'>%g</td><td class='num'>%.1f</td>"
+                       "<td class='num'>%+.1f %%</td></tr>" % (
+                           html.escape(pair + suffix), " (this run)" if pair + suffix == run_dir.name else "",
+                           METHOD_NAMES[method], other[0], other[1] / 1e6, 100 * (other[1] / me[1] - 1)))
+    iso = me[2].get("iso6336_c_gamma_alpha_N_per_m", {}).get("value")
+    if iso:
+        out.append("<tr><td>ISO 6336-1 method B</td><td>c_gamma_alpha b</td><td class='num'>%g</td>"
+                   "<td class='num'>%.1f</td><td class='num'>%+.1f %%</td></tr>"
+                   % (me[0], iso / 1e6, 100 * (iso / me[1] - 1)))
+    out.append("</table>")
+    chart = run_dir.parent / "tooth_models" / "tooth_models.csv"
+    rows = list(csv.DictReader(open(chart))) if chart.exists() else []
+    mine = {r["model"]: float(r["k_error"]) for r in rows if r["pair"] == pair}
+    if mine:
+        verdict = ("Verdict (gear_tooth_models.png, this pair, same force and bores for every model): trust the "
+                   "finite elements (%+.2f %% from their converged limit); " % (100 * mine["fe"]) +
+                   ", ".join("%s %+.0f %%" % (CHART_NAMES[m], 100 * mine[m]) for m in ("pe", "beam", "beam_thesis", "iso")))
+    elif rows:
+        fast = [abs(float(r["k_error"])) for r in rows if r["model"] in ("pe", "beam", "beam_thesis")]
+        verdict = ("Verdict (gear_tooth_models.png, three other pairs): the finite elements are within 0.5 %% of "
+                   "their converged limit, the fast models %.0f-%.0f %% off in mean stiffness: quote the FE's."
+                   % (100 * min(fast), 100 * max(fast)))
+    else:
+        verdict = "No tooth-model chart in this build (make figures draws it)."
+    out.append("<p>%s</p>" % html.escape(verdict))
+    return out
+
+
 def gear_run_page(build, run_dir, fig_dir):
     """A page per gear-pair run of make figures (build/data/gearhb_gear/<example>/): its
     figures, its key numbers against reference/gear_examples/<example>.json (the published
@@ -290,6 +348,7 @@ def gear_run_page(build, run_dir, fig_dir):
                    .replace("<th>thesis against ours</th>", "<th>published against ours</th>"))
         out += rows
         out.append("</table>")
+    out += tooth_model_section(run_dir)
     ours = json.load(open(run_dir / "key_numbers.json")) if (run_dir / "key_numbers.json").exists() else {}
     rest = [(k, v) for k, v in ours.items() if k not in checked]
     if rest:

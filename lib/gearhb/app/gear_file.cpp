@@ -285,7 +285,11 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   const json model = j.value("model", json::object());
   only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
                                    "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh"});
-  f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy", "fe"}, 0));
+  // Defaults (issue 33 §4, figures/tooth_model_chart.py): the method the tooth-model chart
+  // recommends (fe: the fast models are 3-170 % off the converged FE in mean stiffness, 20-80 %
+  // in STE peak-to-peak) and the physically consistent readings; the thesis files write the
+  // thesis' readings out.
+  f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy", "fe"}, 2));
   if (model.contains("fe_mesh") && f.method != ToothModel::fe) fail_key(path, "model.fe_mesh", "needs method fe");
   f.phases = model.contains("phases") ? json_whole(model["phases"], path, "model.phases", 16, 4096) : 64;
   f.pair.positions_per_base_pitch =
@@ -298,17 +302,16 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   if (f.pair.tooth_elements == 1) fail_key(path, "model.tooth_elements", "must be 0 (8 eps_alpha) or in [2, 64]");
   f.pair.thickness_at = ThicknessAt(r.choice(model, "model", "thickness_at", {"root_node", "midpoint", "tip_node"}, 0));
   f.pair.hertz = HertzCount(r.choice(model, "model", "hertz", {"none", "per_contact", "per_tooth"},
-                                      f.method == ToothModel::beam ? 2 : 0));
+                                      f.method == ToothModel::beam ? 1 : 0));
   // The PE pair stiffness holds its own (linear, Yang & Sun) Hertz, the FE its resolved
   // contact: a Palmgren term on top would count the contact twice.
   if (f.method != ToothModel::beam && f.pair.hertz != HertzCount::none)
     fail_key(path, "model.hertz", std::string("must be none with method ") +
                                       (f.method == ToothModel::fe ? "fe (the contact is inside the FE compliance)"
                                                                   : "potential_energy (its linear Hertz is inside the pair stiffness)"));
-  f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 0));
-  f.pair.pair_stiffness = PairStiffness(r.choice(model, "model", "pair_stiffness", {"fused", "cantilevers"}, 0));
-  f.pair.tooth_force = ToothForce(
-      r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, f.method == ToothModel::fe ? 1 : 0));
+  f.pair.pair_hertz = TwoPairHertz(r.choice(model, "model", "pair_hertz", {"equal_split", "fe_split_mean", "consistent"}, 2));
+  f.pair.pair_stiffness = PairStiffness(r.choice(model, "model", "pair_stiffness", {"fused", "cantilevers"}, 1));
+  f.pair.tooth_force = ToothForce(r.choice(model, "model", "tooth_force", {"pitch_radius", "base_radius"}, 1));
   if (f.method == ToothModel::fe && f.pair.tooth_force != ToothForce::over_base_radius)
     fail_key(path, "model.tooth_force", "must be base_radius with method fe (its force acts along the line of action)");
 
@@ -383,15 +386,17 @@ std::string gear_file_help() {
          "  gears[i].tip_relief.start    exactly one of {roll_angle_deg: xi [deg]}, {diameter: d [m]},\n"
          "                               {length: L [m] along the path of contact, measured from the tip}\n"
          "  gears[i].tip_relief.shape    linear (default) | parabolic\n"
-         "  model.method                 beam (default: thesis ch. 7's beams) | potential_energy (bending, shear,\n"
+         "  model.method                 fe (default) | beam (thesis ch. 7's beams) | potential_energy (bending, shear,\n"
          "                               compression of the involute tooth, Sainsot's fillet foundation clamped at\n"
          "                               gears[i].rim_radius, which it needs; linear Hertz inside the pair stiffness,\n"
          "                               so model.hertz must be none, its default then; tooth_elements, thickness_at,\n"
          "                               pair_stiffness and pair_hertz do not apply; no node reading)\n"
          "                               | fe (tooth contact by plane-strain finite elements on the generated tooth\n"
          "                               form, each gear whole and fixed at gears[i].rim_radius, 0: max(rf - 3 m,\n"
-         "                               0.5 rf); contact inside, so model.hertz none and model.tooth_force base_radius,\n"
-         "                               their defaults then; about 2-5 s per pair to build; reference/fe_tooth_contact.md)\n"
+         "                               0.5 rf); contact inside, so model.hertz none, its default then; about 2-5 s\n"
+         "                               per pair to build; reference/fe_tooth_contact.md). The default because the\n"
+         "                               tooth-model chart (figures/tooth_model_chart.py) finds the fast models 3-170 %\n"
+         "                               off the converged FE in mean stiffness; the thesis files say method beam\n"
          "  model.fe_mesh.contact_size   element size along the loaded flanks (units of m, default 0.025), and\n"
          "  model.fe_mesh.tooth_size     ... on the loaded teeth and their neighbours (default 0.1),\n"
          "  model.fe_mesh.far_tooth_size ... on the other teeth (default 0.25), body_size in the body (default 1);\n"
@@ -402,12 +407,13 @@ std::string gear_file_help() {
          "                               (identical gears, no relief)\n"
          "  model.tooth_elements         beam elements per tooth (0 = floor(8 eps_alpha): 14 for the thesis)\n"
          "  model.thickness_at           root_node (default) | midpoint | tip_node: where s(r) is read per element\n"
-         "  model.hertz                  per_tooth (default, thesis) | per_contact | none (method potential_energy:\n"
-         "                               none only)\n"
-         "  model.pair_hertz             equal_split (default, thesis) | fe_split_mean | consistent (Hertz inside\n"
-         "                               the load sharing: use it with tip relief)\n"
-         "  model.pair_stiffness         fused (default, thesis section 7.2) | cantilevers\n"
-         "  model.tooth_force            pitch_radius (default, thesis: T1 / r1) | base_radius (T1 / rb1)\n"
+         "  model.hertz                  per_contact (default for beam: Palmgren once per contact) | per_tooth (thesis)\n"
+         "                               | none (the default and the only choice for potential_energy and fe)\n"
+         "  model.pair_hertz             consistent (default: Hertz inside the load sharing) | equal_split (thesis)\n"
+         "                               | fe_split_mean\n"
+         "  model.pair_stiffness         cantilevers (default) | fused (thesis section 7.2)\n"
+         "  model.tooth_force            base_radius (default: T1 / rb1 along the line of action) | pitch_radius\n"
+         "                               (thesis: T1 / r1; not with method fe)\n"
          "  harris.from, harris.to, harris.points  torques of the Harris map [N m] (default T_max/6 .. 5 T_max/3, 19)\n"
          "  speed.unit, speed.from, speed.to  the speed range of the dynamics: mesh_hz (mesh frequency\n"
          "                               f_mesh [Hz]) | rpm (of gear 1; f_mesh = z1 n1 / 60); absent: no dynamics\n"
