@@ -51,6 +51,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/iso6336_root.hpp"
 #include "gearhb/gears/loaded_pair.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/hb/response.hpp"
@@ -126,6 +127,7 @@ class GearPairFromFile {
   void geometry(Run& run) const;
   void tooth_model(Run& run);
   void transmission_error(Run& run) const;
+  void root_stress_and_contact(Run& run) const;
   void iso6336(Run& run) const;
   void harris_map(Run& run) const;
   void dynamics(Run& run) const;
@@ -158,6 +160,7 @@ void GearPairFromFile::run(Run& run) {
   geometry(run);
   tooth_model(run);
   transmission_error(run);
+  if (loaded_->fe_model()) root_stress_and_contact(run);
   iso6336(run);
   harris_map(run);
   if (file_.dynamics.present) dynamics(run), iso_dynamic_factor(run);
@@ -297,6 +300,56 @@ void GearPairFromFile::transmission_error(Run& run) const {
     run.say(line);
   }
   run.write("spectrum.csv", spectrum_table(spectrum_columns, spectra, H));
+}
+
+// Step 4b (method fe): the root stress of each gear's teeth over the path of contact
+// (root_stress_<i>.csv: the largest tensile stress on the fillet below the loaded flank,
+// where it sits) beside ISO 6336-3 method B's nominal sigma_F0 = F_t / (b m) Y_F Y_S with
+// F_t = T1 / r1 (a comparison, not a fit: ISO's critical section is where the fillet's
+// tangent makes 30 degrees with the centre line), and Hertz's contact of every loaded pair
+// for the FE's forces (contact_<i>.csv).
+void GearPairFromFile::root_stress_and_contact(Run& run) const {
+  const FePairModel& fe = *loaded_->fe_model();
+  const PairSteModel& m = file_.pair;
+  KeyNumbers& key = run.key_numbers();
+  const GearGeometry* g[2] = {&m.gear1, &m.gear2};
+  Iso6336ToothRoot iso[2];
+  for (int j = 0; j < 2; ++j) iso[j] = iso6336_tooth_root(*g[j], file_.root_radius_coefficient, *g[1 - j], m.centre_distance);
+  for (std::size_t i = 0; i < file_.torques.size(); ++i) {
+    const double T = file_.torques[i];
+    const std::string n = std::to_string(i + 1);
+    const std::vector<FeRootStressPoint> r[2] = {run.timed("root_stress_1_" + n, [&] { return fe.root_stress(T, 1); }),
+                                                 run.timed("root_stress_2_" + n, [&] { return fe.root_stress(T, 2); })};
+    Table t({"s_from_A_m", "root_stress_MPa_1", "radius_m_1", "tangent_deg_1", "root_stress_MPa_2", "radius_m_2",
+             "tangent_deg_2"});
+    for (std::size_t k = 0; k < r[0].size() && k < r[1].size(); ++k) {
+      const FilletStation& a = fe.gear1().fillet_stations()[std::size_t(r[0][k].station)];
+      const FilletStation& b = fe.gear2().fillet_stations()[std::size_t(r[1][k].station)];
+      t.add_row({r[0][k].s, r[0][k].stress / 1e6, a.radius, a.tangent_deg, r[1][k].stress / 1e6, b.radius, b.tangent_deg});
+    }
+    run.write("root_stress_" + n + ".csv", t);
+    for (int j = 0; j < 2; ++j) {
+      const std::string gj = std::to_string(j + 1) + "_" + n;
+      const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
+      const FilletStation& st = (j == 0 ? fe.gear1() : fe.gear2()).fillet_stations()[std::size_t(peak->station)];
+      const double Ft = T / m.gear1.pitch_radius();
+      key.add("fe_root_stress_max_MPa_" + gj, peak->stress / 1e6, "MPa");
+      key.add("fe_root_stress_max_s_m_" + gj, peak->s, "m");
+      key.add("fe_root_stress_max_radius_m_" + gj, st.radius, "m");
+      key.add("fe_root_stress_max_tangent_deg_" + gj, st.tangent_deg, "deg");
+      key.add("iso6336_root_stress_MPa_" + gj,
+              iso6336_nominal_root_stress(Ft, g[j]->face_width, g[j]->module, iso[j].Y_F, iso[j].Y_S) / 1e6, "MPa");
+    }
+    const std::vector<FeContactPressure> c = fe.contact_pressure(T);
+    Table p({"s_from_A_m", "force_N", "half_width_um", "peak_pressure_MPa"});
+    double p_max = 0.0;
+    for (const auto& q : c) {
+      p.add_row({q.s, q.force, q.half_width * 1e6, q.peak_pressure / 1e6});
+      p_max = std::max(p_max, q.peak_pressure);
+    }
+    run.write("contact_" + n + ".csv", p);
+    key.add("fe_contact_pressure_max_MPa_" + n, p_max / 1e6, "MPa");
+  }
 }
 
 // Step 5: ISO 6336-1 method B for the same pair, at the file's largest torque.

@@ -140,6 +140,16 @@ struct FeGearModel::Impl {
   int teeth_modelled = 0;
   double bore = 0, w = 0, theta_b = 0, rb = 0, form_roll = 0, tip_roll = 0;
   std::map<int, std::vector<int>> edges_of_tag;
+  // The fillet stations of the loaded teeth (section 4) and where each sits in its triangle.
+  std::vector<FilletStation> stations;
+  struct StationPlace {
+    int triangle = 0;
+    double xi = 0, eta = 0;
+    Vector2d tangent;
+  };
+  std::vector<StationPlace> places;
+  // sigma_tt at every station per unit load at (tooth, roll): filled by every solve.
+  mutable std::map<std::pair<int, double>, Eigen::VectorXd> station_stress;
 
   Vector2d point(const FlankPoint& p) const {
     const double psi = theta_b - p.roll / rb + 2 * pi * (first_loaded + p.tooth) / gear.teeth;
@@ -205,6 +215,8 @@ struct FeGearModel::Impl {
     return -normal(p).dot(v);
   }
 
+  void build_stations();
+  Eigen::VectorXd stress_at_stations(const Eigen::VectorXd& u) const;
   void set_up(const GearGeometry& g, const FeGearOptions& o);
   fe::MeshSpec mesh_spec();
   void build_mesh();
@@ -222,6 +234,58 @@ void FeGearModel::Impl::set_up(const GearGeometry& g, const FeGearOptions& o) {
 void FeGearModel::Impl::build_mesh() {
   mesh = fe::mesh_with_gmsh(mesh_spec());
   for (std::size_t e = 0; e < mesh.edges.size(); ++e) edges_of_tag[mesh.edge_tags[e]].push_back(int(e));
+  build_stations();
+}
+
+// Every node of the fillet edges of the loaded teeth (both sides), in order along each
+// fillet from the root to the flank, placed in the triangle that holds its edge.
+void FeGearModel::Impl::build_stations() {
+  std::map<std::pair<int, int>, int> triangle_of_side;   // sorted corner pair -> triangle
+  for (int t = 0; t < int(mesh.triangles.size()); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const int a = mesh.triangles[t][c], b = mesh.triangles[t][(c + 1) % 3];
+      triangle_of_side[{std::min(a, b), std::max(a, b)}] = t;
+    }
+  static const double local[6][2] = {{0, 0}, {1, 0}, {0, 1}, {0.5, 0}, {0.5, 0.5}, {0, 0.5}};
+  for (int k = 0; k < options.loaded_teeth; ++k) {
+    const int t = first_loaded + k;
+    const double centre = 2 * pi * t / gear.teeth;
+    const Vector2d axis(std::sin(centre), std::cos(centre));   // the tooth's centre line, outward
+    for (int cls : {fillet_right, fillet_left}) {
+      const auto it = edges_of_tag.find(tooth_tag(t, cls));
+      if (it == edges_of_tag.end()) continue;
+      for (int e : it->second) {
+        const auto& en = mesh.edges[e];
+        const int tri = triangle_of_side.at({std::min(en[0], en[1]), std::max(en[0], en[1])});
+        for (int a : {0, 2, 1}) {   // end a, middle, end b: s = -1, 0, 1
+          int i = 0;
+          while (mesh.triangles[tri][i] != en[a]) ++i;
+          const double s_edge = a == 0 ? -1.0 : a == 2 ? 0.0 : 1.0;
+          const Vector2d x = mesh.nodes[en[a]], tangent = edge_tangent(mesh, e, s_edge).normalized();
+          FilletStation st;
+          st.tooth = k;
+          st.loaded_side = cls == fillet_right;
+          st.x = x;
+          st.radius = x.norm();
+          st.tangent_deg = std::acos(std::min(1.0, std::abs(tangent.dot(axis)))) * 180 / pi;
+          stations.push_back(st);
+          places.push_back({tri, local[i][0], local[i][1], tangent});
+        }
+      }
+    }
+  }
+}
+
+Eigen::VectorXd FeGearModel::Impl::stress_at_stations(const Eigen::VectorXd& u) const {
+  Eigen::VectorXd out(long(stations.size()));
+  for (std::size_t i = 0; i < stations.size(); ++i) {
+    const StationPlace& p = places[i];
+    const Eigen::Vector4d sg = fe::element_stress(mesh, material, u, p.triangle, p.xi, p.eta);
+    Eigen::Matrix2d S;
+    S << sg(0), sg(2), sg(2), sg(1);
+    out(long(i)) = p.tangent.dot(S * p.tangent);
+  }
+  return out;
 }
 
 // The geometry and the graded sizes of the gear's mesh (section 1), with the runs' tags.
@@ -356,6 +420,10 @@ std::vector<Eigen::MatrixXd> FeGearModel::compliance(const std::vector<std::vect
     Eigen::MatrixXd f(s.mesh.dof_count(), cols);
     for (int j = 0; j < cols; ++j) f.col(j) = s.unit_load(points[first + j]);
     const Eigen::MatrixXd u = s.solver->solve(f);
+    for (int j = 0; j < cols; ++j) {
+      const FlankPoint& p = points[first + j];
+      s.station_stress.emplace(std::make_pair(p.tooth, p.roll), s.stress_at_stations(u.col(j)));
+    }
     for (auto& [key, value] : reading)
       if (key.first >= first && key.first < first + cols)
         value = s.inward_displacement(u.col(key.first - first), points[key.second], located[key.second]);
@@ -380,6 +448,19 @@ Eigen::MatrixXd FeGearModel::compliance(const std::vector<FlankPoint>& points) c
   const Eigen::MatrixXd C = raw_compliance(points);
   return 0.5 * (C + C.transpose());
 }
+
+Eigen::MatrixXd FeGearModel::fillet_stress(const std::vector<FlankPoint>& loads) const {
+  const Impl& s = *impl_;
+  std::vector<FlankPoint> missing;
+  for (const FlankPoint& p : loads)
+    if (!s.station_stress.count({p.tooth, p.roll})) missing.push_back(p);
+  if (!missing.empty()) raw_compliance(missing);   // solves them, filling the stations' stresses
+  Eigen::MatrixXd out(long(s.stations.size()), long(loads.size()));
+  for (std::size_t j = 0; j < loads.size(); ++j) out.col(long(j)) = s.station_stress.at({loads[j].tooth, loads[j].roll});
+  return out;
+}
+
+const std::vector<FilletStation>& FeGearModel::fillet_stations() const { return impl_->stations; }
 
 double FeGearModel::width_correction(double half_width) const {
   const Impl& s = *impl_;
@@ -680,6 +761,46 @@ double FePairModel::single_pair_stiffness(double s, double F) const {
                                                  k2 * std::log(gear2().load_half_width()));
   p.contact_radius = Eigen::VectorXd::Constant(1, xi1 * xi2 / (xi1 + xi2));
   return solve_phase(p, F).stiffness;
+}
+
+std::vector<FeRootStressPoint> FePairModel::root_stress(double torque, int gear) const {
+  if (gear != 1 && gear != 2) throw std::invalid_argument("FePairModel::root_stress: gear 1 or 2");
+  const FeGearModel& g = gear == 1 ? gear1() : gear2();
+  const std::vector<FilletStation>& st = g.fillet_stations();
+  std::vector<FeRootStressPoint> out;
+  for (const FePhase& p : phases_) {
+    const FeStePoint q = solve_phase(p, force(torque));
+    const std::vector<FlankPoint> points = pair_points(path_, p.phase, gear);
+    const Eigen::VectorXd sigma = g.fillet_stress(points) * q.force;
+    for (std::size_t k = 0; k < points.size(); ++k) {
+      FeRootStressPoint r;
+      r.s = (p.phase + double(k)) * path_.base_pitch;
+      r.stress = -1e300;
+      for (std::size_t i = 0; i < st.size(); ++i)
+        if (st[i].tooth == int(k) && st[i].loaded_side && sigma(long(i)) > r.stress) r.stress = sigma(long(i)), r.station = int(i);
+      out.push_back(r);
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const FeRootStressPoint& a, const FeRootStressPoint& b) { return a.s < b.s; });
+  return out;
+}
+
+std::vector<FeContactPressure> FePairModel::contact_pressure(double torque) const {
+  std::vector<FeContactPressure> out;
+  for (const FePhase& p : phases_) {
+    const FeStePoint q = solve_phase(p, force(torque));
+    for (long k = 0; k < q.force.size(); ++k) {
+      if (!(q.force(k) > 0.0)) continue;
+      FeContactPressure c;
+      c.s = p.pairs[std::size_t(k)].s;
+      c.force = q.force(k);
+      c.half_width = std::sqrt(4 * c.force * p.contact_radius(k) * estar_inverse_ / (pi * length_));
+      c.peak_pressure = 2 * c.force / (pi * c.half_width * length_);
+      out.push_back(c);
+    }
+  }
+  std::sort(out.begin(), out.end(), [](const FeContactPressure& a, const FeContactPressure& b) { return a.s < b.s; });
+  return out;
 }
 
 double fe_mean_stiffness(const std::vector<FeStePoint>& points, double force) {

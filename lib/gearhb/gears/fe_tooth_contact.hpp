@@ -106,6 +106,17 @@ struct FlankPoint {
   double roll = 0.0;
 };
 
+// A point of the root fillet of a loaded tooth where its surface stress is read
+// (section 4): every node of the fillet's boundary edges, both sides of the tooth.
+struct FilletStation {
+  int tooth = 0;               // loaded tooth k
+  bool loaded_side = true;     // the fillet below the loaded flank (in tension) or the other
+  Eigen::Vector2d x;           // position [m]
+  double radius = 0.0;         // |x| [m]
+  double tangent_deg = 0.0;    // angle between the fillet's tangent and the tooth's centre line:
+                               // ISO 6336-3's critical section is where it is 30 degrees
+};
+
 class FeGearModel {
  public:
   struct Impl;
@@ -123,6 +134,14 @@ class FeGearModel {
   Eigen::MatrixXd compliance(const std::vector<FlankPoint>& points) const;
   // The same before symmetrisation (row i: the load at point i).
   Eigen::MatrixXd raw_compliance(const std::vector<FlankPoint>& points) const;
+
+  // The tangential surface stress sigma_tt [Pa] at every fillet station (rows, in the order
+  // of fillet_stations()) for a unit load (1 N over the face width, the reference pressure
+  // of section 2) at each point (columns). Read from the displacement fields that
+  // compliance() solves anyway (cached per point); a point not solved yet is solved here.
+  // At a free surface sigma_tt is the only non-zero in-plane stress: the root stress.
+  Eigen::MatrixXd fillet_stress(const std::vector<FlankPoint>& loads) const;
+  const std::vector<FilletStation>& fillet_stations() const;
 
   // 2 (1 - nu^2) / (pi E b) ln(w / a) [m/N]: from width w to a (section 2).
   double width_correction(double half_width) const;
@@ -174,6 +193,25 @@ struct FePhase {
   Eigen::VectorXd contact_radius;   // R per pair [m]
 };
 
+// The root stress of one tooth in mesh (section 4): the largest tensile sigma_tt over the
+// fillet below its loaded flank while it carries pair k at s = (phase + k) pb from A, all
+// pairs' forces of that phase superposed (the neighbours' loads reach it through the rim).
+struct FeRootStressPoint {
+  double s = 0.0;              // contact position of the tooth's pair, from A [m]
+  double stress = 0.0;         // [Pa]
+  int station = 0;             // where (FeGearModel::fillet_stations())
+};
+
+// Hertz at each loaded pair of each phase for the forces of the FE contact problem (the
+// contact's near field is Hertz's by construction, section 2): half-width a and peak
+// pressure p0 = 2 F / (pi a L) of two cylinders of the flanks' curvature radii.
+struct FeContactPressure {
+  double s = 0.0;              // from A [m]
+  double force = 0.0;          // [N]
+  double half_width = 0.0;     // a [m]
+  double peak_pressure = 0.0;  // p0 [Pa]
+};
+
 struct FeStePoint {
   double phase = 0.0;
   Eigen::VectorXd force;       // per pair [N]
@@ -200,6 +238,10 @@ class FePairModel {
   // New tip reliefs without rebuilding the FE models (the FE geometry has none, section
   // 1): only the separations g_i of the phases change.
   void set_reliefs(const TipRelief& relief1, const TipRelief& relief2);
+  // The root stress of gear 1's (gear = 1) or gear 2's teeth over the path of contact at
+  // T1, sorted by s; and Hertz's contact of every loaded pair (sorted by s).
+  std::vector<FeRootStressPoint> root_stress(double torque, int gear) const;
+  std::vector<FeContactPressure> contact_pressure(double torque) const;
   // One pair alone at s from A (no neighbour loaded): its stiffness F / X at tooth force F.
   double single_pair_stiffness(double s, double force) const;
 
