@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
@@ -26,6 +27,8 @@ struct OdeContext {
   bool variational;
   Eigen::MatrixXd Minv;
   Eigen::VectorXd r = Eigen::VectorXd();   // work buffer of the right-hand side (no allocation per call)
+  Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd();   // work buffers of the variational equations
+  std::vector<double> kc = {};   // the closed contacts' stiffness at the call's phase (each profile evaluated once)
   unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
 };
 
@@ -70,21 +73,27 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
   c->r.noalias() -= omega * (sys.C * x_theta);
   c->r.noalias() -= sys.K * x;
+  c->kc.resize(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k)
-    if (c->closed >> k & 1u) c->r -= stiffness_at(contacts[k], theta) * penetration(contacts[k], theta, y, n) * contacts[k].normal;
+    if (c->closed >> k & 1u) {
+      c->kc[k] = stiffness_at(contacts[k], theta);
+      c->r -= c->kc[k] * penetration(contacts[k], theta, y, n) * contacts[k].normal;
+    }
   std::copy(y + n, y + 2 * n, dydt);
   Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
   if (c->variational) {
-    Eigen::MatrixXd Kt = sys.K;
+    Eigen::MatrixXd& Kt = c->Kt;
+    Kt = sys.K;
     for (std::size_t k = 0; k < contacts.size(); ++k)
-      if (c->closed >> k & 1u) Kt += stiffness_at(contacts[k], theta) * contacts[k].normal * contacts[k].normal.transpose();
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+      if (c->closed >> k & 1u) Kt += c->kc[k] * contacts[k].normal * contacts[k].normal.transpose();
+    Eigen::MatrixXd& A = c->A;
+    A.setZero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
     A.bottomLeftCorner(n, n) = -c->Minv * Kt / (omega * omega);
     A.bottomRightCorner(n, n) = -c->Minv * sys.C / omega;
     Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
-    dPhi = A * Phi;
+    dPhi.noalias() = A * Phi;
   }
   return GSL_SUCCESS;
 }
