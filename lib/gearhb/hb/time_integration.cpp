@@ -19,6 +19,21 @@ double gap_at(const UnilateralContact& c, double theta) {
   return c.gap + trig_series(c.gap_harmonics, theta);
 }
 
+// The harmonics a series [a0, a1, b1, ...] holds: the highest k with a nonzero a_k or b_k.
+// Its trailing zeros add exactly nothing, and a constant gap's series is 2H+1 zeros, which
+// the integration would otherwise evaluate at every stage of every step.
+int held_harmonics(const Eigen::VectorXd& c) {
+  int H = int(c.size() - 1) / 2;
+  while (H > 0 && c[2 * H - 1] == 0.0 && c[2 * H] == 0.0) --H;
+  return H;
+}
+
+std::vector<int> held_gap_harmonics(const HarmonicBalance& hb) {
+  std::vector<int> h;
+  for (const auto& ct : hb.contacts()) h.push_back(held_harmonics(ct.gap_harmonics));
+  return h;
+}
+
 struct OdeContext {
   const TimeIntegrator* ti;
   const HarmonicBalance* hb;
@@ -30,11 +45,14 @@ struct OdeContext {
   Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd();   // work buffers of the variational equations
   std::vector<double> kc = {};   // the closed contacts' stiffness at the call's phase (each profile evaluated once)
   unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
+  std::vector<int> gap_h = held_gap_harmonics(*hb);   // the harmonics each contact's gap holds
 };
 
 // Penetration u_k = g_k(theta) + n_k' x of contact k at phase theta (x: the first n entries of y).
-double penetration(const UnilateralContact& ct, double theta, const double* y, int n) {
-  return gap_at(ct, theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y, n));
+double penetration(const OdeContext& c, std::size_t k, double theta, const double* y) {
+  const UnilateralContact& ct = c.hb->contacts()[k];
+  return ct.gap + trig_series(ct.gap_harmonics.data(), c.gap_h[k], theta) +
+         ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y, c.n));
 }
 
 // The contacts whose penetration at (theta, y) disagrees with the state `closed` (u < 0 for
@@ -43,7 +61,7 @@ unsigned disagreeing(const OdeContext& c, unsigned closed, double theta, const d
   unsigned wrong = 0;
   const auto& contacts = c.hb->contacts();
   for (std::size_t k = 0; k < contacts.size(); ++k) {
-    const double u = penetration(contacts[k], theta, y, c.n);
+    const double u = penetration(c, k, theta, y);
     if ((closed >> k & 1u) ? u < 0.0 : u > 0.0) wrong |= 1u << k;
   }
   return wrong;
@@ -77,7 +95,7 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   for (std::size_t k = 0; k < contacts.size(); ++k)
     if (c->closed >> k & 1u) {
       c->kc[k] = stiffness_at(contacts[k], theta);
-      c->r -= c->kc[k] * penetration(contacts[k], theta, y, n) * contacts[k].normal;
+      c->r -= c->kc[k] * penetration(*c, k, theta, y) * contacts[k].normal;
     }
   std::copy(y + n, y + 2 * n, dydt);
   Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
@@ -188,12 +206,14 @@ class Driver {
   }
   // f_k (>= 0: contact k's penetration agrees with its state) and df_k/dtheta at (theta, y).
   double agreement(std::size_t k, double theta, const double* y) const {
-    const double u = penetration(ctx_.hb->contacts()[k], theta, y, ctx_.n);
+    const double u = penetration(ctx_, k, theta, y);
     return (ctx_.closed >> k & 1u) ? u : -u;
   }
   double agreement_slope(std::size_t k, double theta, const double* y) const {
     const auto& ct = ctx_.hb->contacts()[k];
-    const double du = trig_series(gap_slopes_[k], theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y + ctx_.n, ctx_.n));
+    // (the slope series holds the harmonics the gap holds)
+    const double du = trig_series(gap_slopes_[k].data(), ctx_.gap_h[k], theta) +
+                      ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y + ctx_.n, ctx_.n));
     return (ctx_.closed >> k & 1u) ? du : -du;
   }
   // One step of length tau from the step's start (t0, y0_) into y_trial_, the contact state unchanged.
