@@ -42,7 +42,8 @@ struct OdeContext {
   bool variational;
   Eigen::MatrixXd Minv;
   Eigen::VectorXd r = Eigen::VectorXd();   // work buffer of the right-hand side (no allocation per call)
-  Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd();   // work buffers of the variational equations
+  Eigen::VectorXd a = Eigen::VectorXd(), w = Eigen::VectorXd();   // work buffers: Minv r, kc_k n_k
+  Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd(), P = Eigen::MatrixXd();   // of the variational equations
   std::vector<double> kc = {};   // the closed contacts' stiffness at the call's phase (each profile evaluated once)
   unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
   std::vector<int> gap_h = held_gap_harmonics(*hb);   // the harmonics each contact's gap holds
@@ -98,17 +99,26 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
       c->r -= c->kc[k] * penetration(*c, k, theta, y) * contacts[k].normal;
     }
   std::copy(y + n, y + 2 * n, dydt);
-  Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
+  // Each product into a work buffer, then scaled: the arithmetic of the expressions
+  // Minv r / omega^2, -Minv Kt / omega^2, -Minv C / omega and (kc n) n', whose temporaries
+  // were a heap allocation each, every call.
+  c->a.noalias() = c->Minv * c->r;
+  Eigen::Map<Eigen::VectorXd>(dydt + n, n) = c->a / (omega * omega);
   if (c->variational) {
     Eigen::MatrixXd& Kt = c->Kt;
     Kt = sys.K;
     for (std::size_t k = 0; k < contacts.size(); ++k)
-      if (c->closed >> k & 1u) Kt += c->kc[k] * contacts[k].normal * contacts[k].normal.transpose();
+      if (c->closed >> k & 1u) {
+        c->w = c->kc[k] * contacts[k].normal;
+        Kt.noalias() += c->w * contacts[k].normal.transpose();
+      }
     Eigen::MatrixXd& A = c->A;
     A.setZero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -c->Minv * Kt / (omega * omega);
-    A.bottomRightCorner(n, n) = -c->Minv * sys.C / omega;
+    c->P.noalias() = -c->Minv * Kt;
+    A.bottomLeftCorner(n, n) = c->P / (omega * omega);
+    c->P.noalias() = -c->Minv * sys.C;
+    A.bottomRightCorner(n, n) = c->P / omega;
     Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
     dPhi.noalias() = A * Phi;
