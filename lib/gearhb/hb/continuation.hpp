@@ -155,7 +155,10 @@ BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, con
 // point on the chord a -> b is corrected back onto the branch in the hyperplane normal to
 // the chord. With a finite indicator of opposite signs at the bracket ends the trial is
 // the Illinois (modified regula falsi) estimate of its zero, otherwise the midpoint;
-// stops when the bracket is below `tol` (chord fraction) or |indicator| < indicator_tol.
+// stops when the bracket is below `tol` (chord fraction) or |indicator| < indicator_tol, or
+// below 1e-7 where the indicator jumps across zero by 1e-3 or more at either side (a Floquet
+// multiplier that leaps across the unit circle, as where the orbit of a stiff contact grazes:
+// more trials would only narrow where, each a shooting of seconds).
 // Returns the last trial point whose state differs from a's (b if none). Throws if a
 // corrector fails. `corrector_tolerance` is the corrector's Newton tolerance.
 BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b,

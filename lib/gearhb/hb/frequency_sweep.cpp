@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
+#include <functional>
 #include <memory>
 #include <sstream>
 #include <stdexcept>
@@ -88,6 +90,35 @@ PointFloquet point_floquet(const FloquetResult& r) {
 }
 
 int outside(const PointFloquet& p) { return p.outside_real_positive + p.outside_real_negative + p.outside_complex; }
+
+// The Floquet results of the points of one chord already computed, keyed by the exact point
+// (X, omega), so that none is computed twice: locate_state_change probes the chord's ends
+// first (their results are the branch's, from floquet_of_branch) and returns one of its trial
+// points (whose result its probe had), and each shooting of a stiff contact costs seconds.
+class FloquetMemo {
+ public:
+  FloquetMemo(const HarmonicBalance& hb, double xs, const FloquetOptions& fo) : hb_(hb), xs_(xs), fo_(fo) {}
+  void add(const BranchPoint& p, const FloquetResult& r) { seen_.push_back({p.X, p.omega, r}); }
+  // The result at (X, omega); `computing` is called before a result that is not known yet.
+  const FloquetResult& at(const Eigen::VectorXd& X, double omega, const std::function<void()>& computing = nullptr) {
+    for (const auto& e : seen_)
+      if (e.omega == omega && e.X.size() == X.size() && e.X == X) return e.r;
+    if (computing) computing();
+    seen_.push_back({X, omega, floquet_of_hb_orbit(hb_, X, omega, xs_, fo_)});
+    return seen_.back().r;
+  }
+
+ private:
+  struct Entry {
+    Eigen::VectorXd X;
+    double omega;
+    FloquetResult r;
+  };
+  const HarmonicBalance& hb_;
+  double xs_;
+  const FloquetOptions& fo_;
+  std::deque<Entry> seen_;   // references into it stay valid as it grows
+};
 
 // The kind of crossing: through +1 (fold or branch point), through -1 (period
 // doubling) or a complex pair (Neimark-Sacker). A pair near the real axis counts as
@@ -209,7 +240,7 @@ namespace {
 // stays below |mu| 0.75 at both neighbours, or that a smooth |mu| does not announce,
 // is not found; the cost is 12-40 corrected Floquet points per searched interval.
 void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, const SweepOptions& opt,
-                      double corrector_tolerance) {
+                      double corrector_tolerance, const std::vector<FloquetResult>& fr) {
   const FloquetOptions& fo = opt.floquet;
   const auto& P = c.branch.points;
   const auto& F = c.floquet;
@@ -218,12 +249,12 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
     return f.modulus > 0.75 && (a < 0.15 * M_PI || a > 0.85 * M_PI);
   };
   std::size_t i = 0;   // the interval searched: (i - 1, i)
-  auto floquet_at = [&](const Eigen::VectorXd& X, double omega) {
-    report(opt, "narrow bands", c, i, omega);
-    return floquet_of_hb_orbit(hb, X, omega, xs, fo);
+  std::unique_ptr<FloquetMemo> memo;   // the interval's points
+  auto floquet_at = [&](const Eigen::VectorXd& X, double omega) -> const FloquetResult& {
+    return memo->at(X, omega, [&] { report(opt, "narrow bands", c, i, omega); });
   };
   auto probe = [&](const Eigen::VectorXd& X, double omega) {
-    const FloquetResult r = floquet_at(X, omega);
+    const FloquetResult& r = floquet_at(X, omega);
     return StateProbe{outside(point_floquet(r)), std::log(r.modulus)};
   };
   for (i = 1; i < P.size(); ++i) {
@@ -232,6 +263,9 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
     bool near_fold = false;   // a +1 multiplier of a fold of the branch is not a band
     for (const auto& f : c.branch.folds) near_fold = near_fold || std::abs(f.after_point - int(i - 1)) <= 2;
     if (near_fold) continue;
+    memo = std::make_unique<FloquetMemo>(hb, xs, fo);
+    memo->add(P[i - 1], fr[i - 1]);
+    memo->add(P[i], fr[i]);
     try {
       const double g = 0.5 * (std::sqrt(5.0) - 1.0);
       double lo = 0.0, hi = 1.0;
@@ -390,9 +424,11 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
     report(opt, "bifurcations", c, i);
     // The probe: the count outside, and log |mu| of the crossing multiplier (zero on the circle).
     const PointFloquet &fa = c.floquet[i - 1], &fb = c.floquet[i];
-    auto state = [&hb, &opt, xs, &fa, &fb, &c, i](const Eigen::VectorXd& X, double omega) {
-      report(opt, "bifurcations", c, i, omega);
-      const FloquetResult r = floquet_of_hb_orbit(hb, X, omega, xs, opt.floquet);
+    FloquetMemo memo(hb, xs, opt.floquet);
+    memo.add(P[i - 1], fr[i - 1]);
+    memo.add(P[i], fr[i]);
+    auto state = [&memo, &opt, &fa, &fb, &c, i](const Eigen::VectorXd& X, double omega) {
+      const FloquetResult& r = memo.at(X, omega, [&] { report(opt, "bifurcations", c, i, omega); });
       return StateProbe{outside(point_floquet(r)), std::log(std::abs(crossing_multiplier(r, fa, fb)))};
     };
     Bifurcation bf;
@@ -400,7 +436,7 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
     try {
       const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, corrector_tolerance);
       bf.omega = at.omega;
-      bf.multiplier = crossing_multiplier(floquet_of_hb_orbit(hb, at.X, at.omega, xs, opt.floquet), fa, fb);
+      bf.multiplier = crossing_multiplier(memo.at(at.X, at.omega), fa, fb);
     } catch (const std::exception&) {
       // corrector failure on the chord (rare): the second point's multiplier
       bf.located = false;
@@ -445,7 +481,7 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   const bool parametric = std::any_of(hb.contacts().begin(), hb.contacts().end(),
                                       [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
   if (opt.narrow_bands == BandSearch::always || (opt.narrow_bands == BandSearch::parametric && parametric)) {
-    add_narrow_bands(hb, c, c.scaling.x[0], opt, co.tolerance);
+    add_narrow_bands(hb, c, c.scaling.x[0], opt, co.tolerance, fr);
     std::stable_sort(c.bifurcations.begin(), c.bifurcations.end(),
                      [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; });
   }

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
@@ -18,6 +19,21 @@ double gap_at(const UnilateralContact& c, double theta) {
   return c.gap + trig_series(c.gap_harmonics, theta);
 }
 
+// The harmonics a series [a0, a1, b1, ...] holds: the highest k with a nonzero a_k or b_k.
+// Its trailing zeros add exactly nothing, and a constant gap's series is 2H+1 zeros, which
+// the integration would otherwise evaluate at every stage of every step.
+int held_harmonics(const Eigen::VectorXd& c) {
+  int H = int(c.size() - 1) / 2;
+  while (H > 0 && c[2 * H - 1] == 0.0 && c[2 * H] == 0.0) --H;
+  return H;
+}
+
+std::vector<int> held_gap_harmonics(const HarmonicBalance& hb) {
+  std::vector<int> h;
+  for (const auto& ct : hb.contacts()) h.push_back(held_harmonics(ct.gap_harmonics));
+  return h;
+}
+
 struct OdeContext {
   const TimeIntegrator* ti;
   const HarmonicBalance* hb;
@@ -26,12 +42,18 @@ struct OdeContext {
   bool variational;
   Eigen::MatrixXd Minv;
   Eigen::VectorXd r = Eigen::VectorXd();   // work buffer of the right-hand side (no allocation per call)
+  Eigen::VectorXd a = Eigen::VectorXd(), w = Eigen::VectorXd();   // work buffers: Minv r, kc_k n_k
+  Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd(), P = Eigen::MatrixXd();   // of the variational equations
+  std::vector<double> kc = {};   // the closed contacts' stiffness at the call's phase (each profile evaluated once)
   unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
+  std::vector<int> gap_h = held_gap_harmonics(*hb);   // the harmonics each contact's gap holds
 };
 
 // Penetration u_k = g_k(theta) + n_k' x of contact k at phase theta (x: the first n entries of y).
-double penetration(const UnilateralContact& ct, double theta, const double* y, int n) {
-  return gap_at(ct, theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y, n));
+double penetration(const OdeContext& c, std::size_t k, double theta, const double* y) {
+  const UnilateralContact& ct = c.hb->contacts()[k];
+  return ct.gap + trig_series(ct.gap_harmonics.data(), c.gap_h[k], theta) +
+         ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y, c.n));
 }
 
 // The contacts whose penetration at (theta, y) disagrees with the state `closed` (u < 0 for
@@ -40,7 +62,7 @@ unsigned disagreeing(const OdeContext& c, unsigned closed, double theta, const d
   unsigned wrong = 0;
   const auto& contacts = c.hb->contacts();
   for (std::size_t k = 0; k < contacts.size(); ++k) {
-    const double u = penetration(contacts[k], theta, y, c.n);
+    const double u = penetration(c, k, theta, y);
     if ((closed >> k & 1u) ? u < 0.0 : u > 0.0) wrong |= 1u << k;
   }
   return wrong;
@@ -70,21 +92,36 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
   c->r.noalias() -= omega * (sys.C * x_theta);
   c->r.noalias() -= sys.K * x;
+  c->kc.resize(contacts.size());
   for (std::size_t k = 0; k < contacts.size(); ++k)
-    if (c->closed >> k & 1u) c->r -= stiffness_at(contacts[k], theta) * penetration(contacts[k], theta, y, n) * contacts[k].normal;
+    if (c->closed >> k & 1u) {
+      c->kc[k] = stiffness_at(contacts[k], theta);
+      c->r -= c->kc[k] * penetration(*c, k, theta, y) * contacts[k].normal;
+    }
   std::copy(y + n, y + 2 * n, dydt);
-  Eigen::Map<Eigen::VectorXd>(dydt + n, n).noalias() = c->Minv * c->r / (omega * omega);
+  // Each product into a work buffer, then scaled: the arithmetic of the expressions
+  // Minv r / omega^2, -Minv Kt / omega^2, -Minv C / omega and (kc n) n', whose temporaries
+  // were a heap allocation each, every call.
+  c->a.noalias() = c->Minv * c->r;
+  Eigen::Map<Eigen::VectorXd>(dydt + n, n) = c->a / (omega * omega);
   if (c->variational) {
-    Eigen::MatrixXd Kt = sys.K;
+    Eigen::MatrixXd& Kt = c->Kt;
+    Kt = sys.K;
     for (std::size_t k = 0; k < contacts.size(); ++k)
-      if (c->closed >> k & 1u) Kt += stiffness_at(contacts[k], theta) * contacts[k].normal * contacts[k].normal.transpose();
-    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+      if (c->closed >> k & 1u) {
+        c->w = c->kc[k] * contacts[k].normal;
+        Kt.noalias() += c->w * contacts[k].normal.transpose();
+      }
+    Eigen::MatrixXd& A = c->A;
+    A.setZero(2 * n, 2 * n);
     A.topRightCorner(n, n).setIdentity();
-    A.bottomLeftCorner(n, n) = -c->Minv * Kt / (omega * omega);
-    A.bottomRightCorner(n, n) = -c->Minv * sys.C / omega;
+    c->P.noalias() = -c->Minv * Kt;
+    A.bottomLeftCorner(n, n) = c->P / (omega * omega);
+    c->P.noalias() = -c->Minv * sys.C;
+    A.bottomRightCorner(n, n) = c->P / omega;
     Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
     Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
-    dPhi = A * Phi;
+    dPhi.noalias() = A * Phi;
   }
   return GSL_SUCCESS;
 }
@@ -179,12 +216,14 @@ class Driver {
   }
   // f_k (>= 0: contact k's penetration agrees with its state) and df_k/dtheta at (theta, y).
   double agreement(std::size_t k, double theta, const double* y) const {
-    const double u = penetration(ctx_.hb->contacts()[k], theta, y, ctx_.n);
+    const double u = penetration(ctx_, k, theta, y);
     return (ctx_.closed >> k & 1u) ? u : -u;
   }
   double agreement_slope(std::size_t k, double theta, const double* y) const {
     const auto& ct = ctx_.hb->contacts()[k];
-    const double du = trig_series(gap_slopes_[k], theta) + ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y + ctx_.n, ctx_.n));
+    // (the slope series holds the harmonics the gap holds)
+    const double du = trig_series(gap_slopes_[k].data(), ctx_.gap_h[k], theta) +
+                      ct.normal.dot(Eigen::Map<const Eigen::VectorXd>(y + ctx_.n, ctx_.n));
     return (ctx_.closed >> k & 1u) ? du : -du;
   }
   // One step of length tau from the step's start (t0, y0_) into y_trial_, the contact state unchanged.
