@@ -208,16 +208,27 @@ NOT_COMPUTABLE = [
 
 # The figures of a gearhb_gear run (figures/gearhb_gear.py, figures/gear_dynamics.py), one
 # page per example in the report: file name in the run folder -> what it shows.
+# The captions that speak of the relief, for a file without one (figures/report.py gear_caption).
+GEAR_CAPTIONS_NO_RELIEF = {
+    "ste.png": "Loaded static transmission error over one mesh cycle, one curve per torque. Notice the "
+               "steps where a pair enters or leaves the path (the file has no tip relief to flatten them).",
+    "harris.png": "Harris map: STE peak-to-peak against torque. The file has no tip relief, so there is one "
+                  "curve, rising with the load; a relief would bring a minimum at the load it suits.",
+}
+
 GEAR_CAPTIONS = {
     "ste.png": "Loaded static transmission error over one mesh cycle, one curve per torque. Notice the "
                "steps where a pair enters or leaves the path, and how tip relief flattens them at its design load.",
-    "stiffness.png": "Mesh stiffness k = F / (STE - g) over the mesh cycle per torque: the one-pair / two-pair "
-                     "step at eps_alpha - 1 of the cycle.",
+    "stiffness.png": "Mesh stiffness k = F / STE over the mesh cycle per torque, its mean dotted: the one-pair / "
+                     "two-pair step at eps_alpha - 1 of the cycle.",
     "shares.png": "Load share of each tooth pair along the mesh cycle (exact contact problem): where a pair "
                   "takes up and gives off its load.",
     "spectrum.png": "STE amplitude per mesh order: what the mesh excites at each multiple of the mesh frequency.",
     "harris.png": "Harris map: STE peak-to-peak against torque with the file's relief and without it. The "
                   "minimum marks the load the relief suits.",
+    "root_stress.png": "Finite elements only: the root stress of one tooth of each gear while its pair moves "
+                       "from A to E, per torque, ISO 6336-3's nominal sigma_F0 dotted. The peak sits at the outer "
+                       "point of single contact (D for the driver, B for the driven gear), where ISO loads the tooth.",
     "response.png": "DTE RMS and dynamic factor K_v over speed per torque (stable solid, unstable dashed, "
                     "bifurcations marked, ISO 6336-1 K_v dotted where computed); the rug below the axis is the "
                     "contact of each flank (drive-flank loss, back-flank impact).",

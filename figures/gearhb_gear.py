@@ -9,6 +9,8 @@ Writes into DIR (the run's own folder; gearhb_gear calls this with plot=1):
   spectrum.png  the STE amplitude per mesh order (order 0, the mean, left out);
   harris.png    the Harris map: STE peak-to-peak against torque, with and without
                 the file's tip relief, the file's torques marked;
+  root_stress.png  (method fe) the root stress of a tooth of each gear over the path of
+                contact per torque, ISO 6336-3's sigma_F0 dotted;
 and, for a file with a speed range, the dynamics figures of gear_dynamics.py
 (response.png, campbell.png, time_history.png, dte_spectrum.png).
 The mesh phase runs over one base pitch: pair 1 is the pair nearest the start of
@@ -148,6 +150,34 @@ def harris_figure(d_dir, params, kn, torques):
     save(fig, d_dir / "harris.png")
 
 
+def root_stress_figure(d_dir, params, kn, torques):
+    """Method fe: the root stress of a tooth of each gear over the path of contact (the largest
+    tension on the fillet below its loaded flank while its pair is at s), one curve per torque,
+    ISO 6336-3 method B's nominal sigma_F0 of the same torque dotted."""
+    fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.6), sharey=True)
+    path = read_csv(d_dir / "path_of_contact.csv")
+    for g, ax in ((1, axes[0]), (2, axes[1])):
+        for i, T in enumerate(torques):
+            n = "%d_%d" % (g, i + 1)
+            d = read_csv(d_dir / ("root_stress_%d.csv" % (i + 1)))
+            c = torque_colour(T, torques)
+            ax.plot([1e3 * s for s in d["s_from_A_m"]], d["root_stress_MPa_%d" % g], "-", color=c, marker=".", ms=3,
+                    label="T1 = %g N m: peak %.1f MPa" % (T, kn["fe_root_stress_max_MPa_" + n]))
+            ax.axhline(kn["iso6336_root_stress_MPa_" + n], color=c, ls=":", lw=1.2)
+        for name, s in zip(path["point"], path["s_from_A_m"]):
+            ax.axvline(1e3 * s, color="0.6", lw=0.8, ls="--")
+            ax.text(1e3 * s, 1.0, " " + name, transform=ax.get_xaxis_transform(), fontsize=8, va="top", color="0.4")
+        ax.plot([], [], ":", color="0.3", label="ISO 6336-3 method B sigma_F0 (dotted, same colour)")
+        ax.set_xlabel("contact position of the tooth's pair, s from A [mm]")
+        ax.set_title("gear %d (%s): the fillet below the loaded flank" % (g, "driver" if g == 1 else "driven"),
+                     fontsize=9)
+        ax.set_ylim(bottom=0)
+        ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1, frameon=False)
+    axes[0].set_ylabel("root stress, largest tension on the fillet [MPa]")
+    fig.suptitle("%s\nroot stress over the mesh by finite elements" % params.get("name", "gear pair"), fontsize=9)
+    save(fig, d_dir / "root_stress.png")
+
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     params, kn, torques, ste = load(d_dir)
@@ -156,6 +186,8 @@ def main():
     shares_figure(d_dir, params, kn, torques, ste)
     spectrum_figure(d_dir, params, kn, torques)
     harris_figure(d_dir, params, kn, torques)
+    if (d_dir / "root_stress_1.csv").exists():
+        root_stress_figure(d_dir, params, kn, torques)
     if (d_dir / "frc_1.csv").exists():
         gear_dynamics.draw(d_dir, params, kn, torques)
 

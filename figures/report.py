@@ -30,7 +30,7 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from captions import CHAPTERS, GEAR_CAPTIONS, NOT_COMPUTABLE  # noqa: E402
+from captions import CHAPTERS, GEAR_CAPTIONS, GEAR_CAPTIONS_NO_RELIEF, NOT_COMPUTABLE  # noqa: E402
 
 STYLE = """body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}
 h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:2em}
@@ -282,6 +282,17 @@ def largest_torque_stiffness(run_dir):
         return None
 
 
+def gear_caption(figure, params):
+    """The caption of one figure of a gear run, true for this run: the relief's sentences only
+    where the file has a relief."""
+    relieved = any(isinstance(g, dict) and isinstance(g.get("tip_relief"), dict) and
+                   (g["tip_relief"].get("amount") or 0) > 0 for g in params.get("gears", []))
+    caption = GEAR_CAPTIONS.get(figure, "")
+    if not relieved:
+        caption = GEAR_CAPTIONS_NO_RELIEF.get(figure, caption)
+    return caption
+
+
 def tooth_model_section(run_dir):
     """Which tooth model to trust: the run's mean stiffness at its largest torque beside ISO and the
     other methods' runs of the same pair (the sibling example files <pair>, <pair>_pe, <pair>_fe),
@@ -331,14 +342,17 @@ def gear_run_page(build, run_dir, fig_dir):
     stem = run_dir.name
     params = json.load(open(run_dir / "params.json")) if (run_dir / "params.json").exists() else {}
     title = params.get("name", stem) if isinstance(params.get("name"), str) else stem
-    figs = sorted(p.name for p in fig_dir.glob("gear_%s_*.png" % stem))
+    # This run's own figures only: the copies of the PNGs in its folder (a prefix match would
+    # also take gear_<stem>_pe_*.png and the other runs whose names start with this one's).
+    figs = sorted("gear_%s_%s" % (stem, p.name) for p in run_dir.glob("*.png")
+                  if (fig_dir / ("gear_%s_%s" % (stem, p.name))).exists())
     out = ["<h1>%s</h1>" % html.escape(title),
            "<p><a href='index.html'>back to the report</a>. Gear file "
            "<code>chapters/gearhb_gear/examples/%s.json</code>, run by <code>make figures</code> into "
            "<code>build/data/gearhb_gear/%s/</code> (README <code>chapters/gearhb_gear/README.md</code>).</p>"
            % (html.escape(stem), html.escape(stem))]
     prefix = "gear_%s_" % stem
-    out += [figure_html(f, "gearhb_gear", GEAR_CAPTIONS.get(f[len(prefix):], ""), is_wide(fig_dir / f)) for f in figs]
+    out += [figure_html(f, "gearhb_gear", gear_caption(f[len(prefix):], params), is_wide(fig_dir / f)) for f in figs]
     ref = HERE.parent / "reference" / "gear_examples" / (stem + ".json")
     rows = key_number_rows(ref, run_dir)
     checked = set(json.load(open(ref))["numbers"]) if ref.exists() else set()

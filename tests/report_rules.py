@@ -58,7 +58,12 @@ def fake_build(work):
     ours["an_unchecked_number"] = {"value": 1.5, "unit": "-"}
     (gear / "key_numbers.json").write_text(json.dumps(ours))
     (gear / "params.json").write_text(json.dumps({"name": "faked thesis pair"}))
-    (work / "figures" / "gear_thesis_pair_response.png").write_bytes(b"\x89PNG\r\n\x1a\n" + bytes(16))
+    # make figures' layout: the run's own PNG in its folder, copied as gear_<run>_<figure>.png; a
+    # PNG of another run whose name starts the same (thesis_pair_pe) must not reach this page.
+    png = b"\x89PNG\r\n\x1a\n" + bytes(16)
+    (gear / "response.png").write_bytes(png)
+    (work / "figures" / "gear_thesis_pair_response.png").write_bytes(png)
+    (work / "figures" / "gear_thesis_pair_pe_ste.png").write_bytes(png)
     return quick_only
 
 
@@ -117,6 +122,8 @@ def main(work):
             errors.append("gear page: a FAIL where the run equals its reference")
         if "gear_thesis_pair_response.png" not in g or report.GEAR_CAPTIONS["response.png"][:40] not in g:
             errors.append("gear page: the figure or its caption is missing")
+        if "gear_thesis_pair_pe_ste.png" in g:
+            errors.append("gear page: shows a figure of another run (gear_thesis_pair_pe_ste.png)")
         if "an_unchecked_number" not in g.split("other key numbers")[-1]:
             errors.append("gear page: the run's unchecked key numbers are not listed apart")
     captions = [c for ch in CHAPTERS for _, _, c in ch["figures"]]
