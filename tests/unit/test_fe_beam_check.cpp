@@ -24,6 +24,7 @@
 #include "gearhb/fe/p2_element.hpp"
 #include "gearhb/gears/coupled_load_sharing.hpp"
 #include "gearhb/gears/fe_tooth_contact.hpp"
+#include "gearhb/gears/hertz.hpp"
 #include "gearhb/gears/ste.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/gears/tooth_form.hpp"
@@ -315,6 +316,11 @@ TEST(FeBeamCheckStudy, DISABLED_ToothOnlyAndWholeGear) {
                 p.fe_surface * 1e9, (whole - p.fe_surface) * 1e9, 100 * (whole - p.fe_surface) / whole,
                 p.fe_centre * 1e9, p.beam * 1e9, whole / p.beam);
   }
+  // What the thesis' pair model adds to its beams: Palmgren's approach per tooth (hertz.hpp),
+  // secant per unit force at the thesis' largest tooth force T1 / rb = 300 N m / rb.
+  const double F = 300 / thesis_gear().base_radius();
+  std::printf("Palmgren approach at F = %.0f N: %.4f um/kN per contact\n", F,
+              palmgren_line_contact_approach(F, thesis_gear().face_width) / F * 1e9);
 }
 
 // ---------------------------------------------------------------------------------------
