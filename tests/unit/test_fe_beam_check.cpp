@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <stdexcept>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -228,6 +229,10 @@ ToothCheck tooth_check(double scale = 1.0) {
     p.roll = rolls[j];
     const Vector2d P = t.point(p.roll), d = -t.normal(p.roll);
     p.radius = P.norm();
+    // The load point lies on the meshed flank: the form's involute points are m / 50 apart.
+    double nearest = 1e300;
+    for (const Vector2d& q : t.form.points) nearest = std::min(nearest, (q - P).norm());
+    if (nearest > t.gear.module / 50) throw std::runtime_error("tooth_check: the load point is off the form");
     p.fe_centre = d.dot(displacement_at(t.mesh, u.col(j), Vector2d(0, P.y())));
     p.fe_surface = d.dot(displacement_at(t.mesh, u.col(j), P));
     p.beam = tooth_flexibility(beam, p.radius - t.gear.root_radius())(0, 0);
