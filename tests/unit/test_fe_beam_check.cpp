@@ -345,20 +345,24 @@ TEST(FeBeamCheckStudy, DISABLED_ToothOnlyAndWholeGear) {
 // the multiplier X is the flat's approach to the (fixed) centre.
 //
 // Closed forms (E* = E / (1 - nu^2) against a rigid flat):
-//   half-width b = sqrt(4 P R / (pi E*)), peak pressure p0 = 2 P / (pi b) (Hertz; Johnson,
-//   Contact Mechanics, 1985, §4.2 / 5.6);
+//   half-width b = sqrt(4 P R / (pi E*)), peak pressure p0 = 2 P / (pi b) (Hertz's
+//   two-dimensional contact; Johnson, Contact Mechanics, 1985, ch. 4);
 //   approach of the centre: the compression along the axis from the contact to the centre
-//   at depth d = R. The disc between two contacts is Hertz's disc (Timoshenko & Goodier
-//   §41): on the axis at depth z the stresses are the half-plane Hertz field under the
-//   bottom contact (sigma_z = -p0 b / sqrt(b^2 + z^2), sigma_x = -(p0 / b)((b^2 + 2 z^2) /
-//   sqrt(b^2 + z^2) - 2 z): Johnson eq. 4.49), plus the top contact as a point force,
-//   sigma_z = -2 P / (pi (2R - z)), plus the uniform tension P / (pi R) in both directions.
-//   Integrating eps_z = ((1 - nu^2) sigma_z - nu (1 + nu) sigma_x) / E over z = 0..R:
+//   at depth d = R. The disc between two contacts is the disc compressed along a
+//   diameter (Timoshenko & Goodier, ch. 4: two Flamant fields and a uniform tension
+//   P / (pi R)) with the bottom force spread by Hertz: on the axis at depth z the stresses
+//   are the half-plane Hertz field under the bottom contact (sigma_z = -p0 b / sqrt(b^2 +
+//   z^2), sigma_x = -(p0 / b)((b^2 + 2 z^2) / sqrt(b^2 + z^2) - 2 z): Johnson eq. 4.49),
+//   plus the top contact as a point force, sigma_z = -2 P / (pi (2R - z)), plus the
+//   uniform tension P / (pi R) in both directions. Integrating
+//   eps_z = ((1 - nu^2) sigma_z - nu (1 + nu) sigma_x) / E over z = 0..R:
 //     delta = delta_hp(R; b) + P / (pi E) [2 (1 - nu^2) ln 2 - (1 - nu^2) + nu (1 + nu)],
-//     delta_hp(d; b) = 2 P / (pi E) [(1 - nu^2) asinh(d / b) - nu (1 + nu) (d sqrt(b^2 + d^2) - d^2) / b^2]
-//   (the half-plane term, fe_tooth_contact.hpp's comment), which for b << R is Johnson's
-//   cylinder compression P (1 - nu^2) / (pi E) (2 ln(4R / b) - 1); error O((b / R)^2) from
-//   the top contact taken as a point force.
+//     delta_hp(d; b) = 2 P / (pi E) [(1 - nu^2) asinh(d / b)
+//                                    - nu (1 + nu) (d sqrt(b^2 + d^2) - d^2) / b^2]
+//   (the half-plane term, fe_tooth_contact.hpp's comment). For b << R this is the classic
+//   compression of a cylinder, P (1 - nu^2) / (pi E) (2 ln(4R / b) - 1), as Johnson's book
+//   gives it (derived here independently); error O((b / R)^2) from the top contact taken
+//   as a point force.
 struct HertzCase {
   double R = 0.01, E = 210e9, nu = 0.3;
   double b = R / 20;   // the Hertz half-width the load is chosen for
