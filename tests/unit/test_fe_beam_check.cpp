@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <stdexcept>
 #include <vector>
 
@@ -60,6 +61,22 @@ Vector2d displacement_at(const fe::P2Mesh& mesh, const Eigen::VectorXd& u, const
   Vector2d v(0, 0);
   for (int i = 0; i < 6; ++i) v += n(i) * u.segment<2>(2 * mesh.triangles[best][i]);
   return v;
+}
+
+// A unit force along -n0 (into the body) at x0 on the boundary edges with this tag: a
+// Hertzian pressure of half-width w along the boundary, p ~ sqrt(1 - t^2 / w^2), scaled to
+// a unit resultant along -n0.
+Eigen::VectorXd unit_pressure(const fe::P2Mesh& mesh, const fe::Material& material, int tag, const Vector2d& x0,
+                              const Vector2d& n0, double w) {
+  const Vector2d t0(-n0.y(), n0.x());
+  Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
+  fe::add_edge_traction(mesh, material, tag, [&](const Vector2d& x, const Vector2d& n) -> Vector2d {
+    const double t = (x - x0).dot(t0);
+    return std::abs(t) < w ? Vector2d(-std::sqrt(1 - t * t / (w * w)) * n) : Vector2d(0, 0);
+  }, f);
+  Vector2d resultant(0, 0);
+  for (int i = 0; i < mesh.node_count(); ++i) resultant += f.segment<2>(2 * i);
+  return f / resultant.dot(-n0);
 }
 
 // ---------------------------------------------------------------------------------------
@@ -126,19 +143,7 @@ struct ToothOnly {
     const double psi = theta_b - xi / rb;
     return {std::cos(psi), -std::sin(psi)};
   }
-  // A unit force along -n (into the tooth) at the point: a Hertzian pressure of half-width
-  // w along the flank, p ~ sqrt(1 - t^2 / w^2), scaled to a unit resultant along -n.
-  Eigen::VectorXd unit_load(double xi) const {
-    const Vector2d x0 = point(xi), n0 = normal(xi), t0(-n0.y(), n0.x());
-    Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
-    fe::add_edge_traction(mesh, material, 3, [&](const Vector2d& x, const Vector2d& n) -> Vector2d {
-      const double t = (x - x0).dot(t0);
-      return std::abs(t) < w ? Vector2d(-std::sqrt(1 - t * t / (w * w)) * n) : Vector2d(0, 0);
-    }, f);
-    Vector2d resultant(0, 0);
-    for (int i = 0; i < mesh.node_count(); ++i) resultant += f.segment<2>(2 * i);
-    return f / resultant.dot(-n0);
-  }
+  Eigen::VectorXd unit_load(double xi) const { return unit_pressure(mesh, material, 3, point(xi), normal(xi), w); }
   // Half the width of the meshed tooth at height y (the right outline's x there).
   double half_width(double y) const {
     std::vector<std::pair<double, double>> yx;
@@ -184,20 +189,24 @@ std::vector<double> check_rolls(const ToothForm& form) {
 // along d: v = d_x, n = d_y, m(y) = -(y_P - y) d_x),
 //     delta = int_rf^y_P [ M m / (E' I) + V v / (kappa G A) + N n / (E' A) ] dy,
 // I = b s^3 / 12, A = b s: bending, shear and axial terms.
-void timoshenko(const ToothOnly& t, double xi, ToothPoint& out) {
-  const Vector2d P = t.point(xi), d = -t.normal(xi);
-  const double E = youngs / (1 - poisson * poisson), G = youngs / (2 * (1 + poisson)), b = t.gear.face_width;
-  const double y0 = t.gear.root_radius(), y1 = P.y();
+void timoshenko(const Vector2d& P, const Vector2d& d, double y0, const std::function<double(double)>& half_width,
+                double b, ToothPoint& out) {
+  const double E = youngs / (1 - poisson * poisson), G = youngs / (2 * (1 + poisson));
+  const double y1 = P.y();
   const int n = 4000;
   out.bending = out.shear = out.axial = 0;
   for (int k = 0; k < n; ++k) {
-    const double y = y0 + (k + 0.5) * (y1 - y0) / n, dy = (y1 - y0) / n, s = 2 * t.half_width(y);
+    const double y = y0 + (k + 0.5) * (y1 - y0) / n, dy = (y1 - y0) / n, s = 2 * half_width(y);
     const double I = b * s * s * s / 12, A = b * s;
     const double M = P.x() * d.y() - (y1 - y) * d.x(), m = -(y1 - y) * d.x();
     out.bending += M * m / (E * I) * dy;
     out.shear += d.x() * d.x() / (5.0 / 6.0 * G * A) * dy;
     out.axial += d.y() * d.y() / (E * A) * dy;
   }
+}
+void timoshenko(const ToothOnly& t, double xi, ToothPoint& out) {
+  timoshenko(t.point(xi), -t.normal(xi), t.gear.root_radius(), [&t](double y) { return t.half_width(y); },
+             t.gear.face_width, out);
 }
 
 struct ToothCheck {
@@ -266,12 +275,19 @@ void print_tooth_check(const ToothCheck& c) {
 // plane stress E instead of the FE's plane strain E' (+10 %), the load taken as transverse
 // (the beam ignores the load angle: the transverse part d_x = cos(angle) and the
 // compressive radial part's counter-moment x_P d_y), the involute thickness down to the
-// root instead of the fillet's wider section, and the shear term. Beam theory itself is
-// right only to first order in (thickness / length)^2 for a beam this short (length 2-6 mm
-// for a 5-8 mm thick tooth): the next terms (the fixed cut is not a plane-section clamp:
-// Poisson contraction and warping held there; the load's St-Venant zone; the section's
-// width changing fast in the fillet) are of the order of the first correction, the shear
-// term. So the FE must lie within one shear term of the Timoshenko beam,
+// root instead of the fillet's wider section, and the shear term. Beam theory for a beam
+// this short (load heights 1.7-5.9 mm on a tooth 5-8 mm thick) is right only to its first
+// correction, the shear term; the next ones are of that order: the taper (the inclined
+// flanks make the bending stresses carry part of the transverse force, the Resal effect of
+// tapered beams; in the limit of a wedge loaded at its apex the exact field is purely
+// radial, without shear deformation of the beam kind) and above all the St-Venant zone of
+// a load concentrated on the flank within one thickness of the base and of the reading
+// point (the sections are not plane there); the fixed cut (which also holds Poisson
+// contraction and warping) matters little. The studies below measure them:
+// FeBeamCheckStudy.DISABLED_ShortRectangularCantilevers (prismatic, fixed cut, end shear:
+// within 1-5 % of Timoshenko), DISABLED_TrapezoidalTeeth (18 deg taper, end shear: 2-11 %;
+// loaded on the flank like the tooth: 18-44 % below Timoshenko, the generated tooth 15-37 %).
+// So the FE must lie within one shear term of the Timoshenko beam,
 //     |FE - Timoshenko| <= shear,
 // and chapter 7's beam within the modelling differences plus that,
 //     |FE - beam| <= |Timoshenko - beam| + shear.
@@ -290,8 +306,8 @@ TEST(FeBeamCheck, ToothOnlyAgreesWithTheBeamModelToBeamTheoryAccuracy) {
     // The surface point adds the local indentation: more compliant than the centre line.
     EXPECT_GT(p.fe_surface, p.fe_centre) << "r = " << p.radius;
   }
-  // Beam theory improves as the beam gets longer against its thickness: the FE's distance
-  // from the Timoshenko beam must shrink as the load moves up the flank.
+  // The uncertain shear term's share falls as the load moves up the flank (shear ~ a,
+  // bending ~ a^3): the FE's distance from the Timoshenko beam must shrink with it.
   for (std::size_t j = 1; j < c.points.size(); ++j)
     EXPECT_LT(std::abs(c.points[j].fe_centre / c.points[j].timoshenko() - 1),
               std::abs(c.points[j - 1].fe_centre / c.points[j - 1].timoshenko() - 1))
@@ -326,6 +342,99 @@ TEST(FeBeamCheckStudy, DISABLED_ToothOnlyAndWholeGear) {
   const double F = 300 / thesis_gear().base_radius();
   std::printf("Palmgren approach at F = %.0f N: %.4f um/kN per contact\n", F,
               palmgren_line_contact_approach(F, thesis_gear().face_width) / F * 1e9);
+}
+
+// Beam theory's own error for beams this short, without the tooth: a rectangle of depth s
+// and length L (L / s = 1/4 ... 1, the tooth's load heights over its thickness), its end
+// x = 0 fixed in both directions (a fixed cut, as the tooth's base), a unit transverse
+// force at x = L as a parabolic shear traction, plane strain, thickness b. The centre of the
+// loaded end, u_y(L, 0), against Timoshenko (kappa = 5/6) and Euler-Bernoulli:
+// L^3 / (3 E' I) + L / (kappa G A).
+TEST(FeBeamCheckStudy, DISABLED_ShortRectangularCantilevers) {
+  const double s = 6e-3, b = 0.02;
+  const fe::Material m{youngs, poisson, fe::PlaneModel::strain, b};
+  const double E = youngs / (1 - poisson * poisson), G = youngs / (2 * (1 + poisson)), I = b * s * s * s / 12, A = b * s;
+  std::printf("  L / s  FE [um/kN]  Euler-Bernoulli  Timoshenko (shear share)  FE / Timoshenko\n");
+  for (double ratio : {0.25, 0.5, 0.75, 1.0}) {
+    const double L = ratio * s;
+    const int ny = 32, nx = std::max(8, int(std::lround(ny * ratio)));
+    const fe::P2Mesh mesh = fe::rectangle_mesh(0, -s / 2, L, s, nx, ny);
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(mesh.dof_count());
+    const double c = s / 2;
+    fe::add_edge_traction(mesh, m, 2, [&](const Vector2d& x, const Vector2d&) -> Vector2d {
+      return {0.0, 3 * (c * c - x.y() * x.y()) / (4 * c * c * c) / b};   // resultant 1 N
+    }, f);
+    fe::Constraints fix;
+    fe::fix_tagged(mesh, 4, 0, 0.0, fix);
+    fe::fix_tagged(mesh, 4, 1, 0.0, fix);
+    const Eigen::VectorXd u = fe::solve_elastic(fe::assemble_stiffness(mesh, m), f, fix);
+    const double fe_tip = displacement_at(mesh, u, Vector2d(L, 0)).y();
+    const double eb = L * L * L / (3 * E * I), shear = L / (5.0 / 6.0 * G * A);
+    std::printf("  %5.2f  %10.4f  %15.4f  %10.4f (%4.1f %%)  %15.3f\n", ratio, fe_tip * 1e9, eb * 1e9,
+                (eb + shear) * 1e9, 100 * shear / (eb + shear), fe_tip / (eb + shear));
+  }
+}
+
+// The taper and the side load without the involute and the fillet: a trapezoidal "tooth"
+// of base depth 8 mm, flanks at beta = 18 deg to the axis (the thesis tooth's mean taper
+// between root and tip), height 6.75 mm (ha + hf), base chord fixed. Loaded (a) at the top
+// edge by a parabolic shear traction, transverse, unit resultant (the beam's end load), the
+// tooth cut at the load's height; (b) like the tooth, on its flank at the heights of the
+// four checks by the unit Hertzian pressure of half-width 0.3 mm along -n, the tooth whole.
+// The centre line at the load's height against the Timoshenko beam of the same shape.
+TEST(FeBeamCheckStudy, DISABLED_TrapezoidalTeeth) {
+  const double s0 = 8e-3, height = 6.75e-3, b = 0.02, tb = std::tan(18 * pi / 180), w = 0.3e-3;
+  const fe::Material m{youngs, poisson, fe::PlaneModel::strain, b};
+  const auto half = [&](double y) { return s0 / 2 - y * tb; };
+  const auto trapezoid = [&](double top, double size, const std::vector<Vector2d>& refine) {
+    fe::MeshSpec spec;
+    spec.loops = {{{fe::CurveKind::polyline, {Vector2d(-s0 / 2, 0), Vector2d(s0 / 2, 0)}, 1},
+                   {fe::CurveKind::polyline, {Vector2d(s0 / 2, 0), Vector2d(half(top), top)}, 2},
+                   {fe::CurveKind::polyline, {Vector2d(half(top), top), Vector2d(-half(top), top)}, 3},
+                   {fe::CurveKind::polyline, {Vector2d(-half(top), top), Vector2d(-s0 / 2, 0)}, 4}}};
+    spec.size = size;
+    if (!refine.empty()) {
+      fe::Refinement r;
+      r.points = refine;
+      r.size_min = w / 4, r.dist_min = w, r.dist_max = 4 * w;
+      spec.refinements = {r};
+    }
+    return fe::mesh_with_gmsh(spec);
+  };
+  const std::vector<double> heights{1.7e-3, 2.9e-3, 4.3e-3, 5.9e-3};
+  std::printf("  load height [mm]  (a) end load: FE  Timoshenko  FE/Timo   (b) flank load: FE  Timoshenko (shear share)  FE/Timo\n");
+  std::vector<Vector2d> flank_points;
+  for (double y : heights) flank_points.emplace_back(half(y), y);
+  const fe::P2Mesh whole = trapezoid(height, 0.1 * 3e-3, flank_points);
+  fe::Constraints base;
+  fe::fix_tagged(whole, 1, 0, 0.0, base);
+  fe::fix_tagged(whole, 1, 1, 0.0, base);
+  const fe::ElasticSolver solver(fe::assemble_stiffness(whole, m), base.dofs());
+  const Vector2d n(std::cos(std::atan(tb)), std::sin(std::atan(tb)));   // the right flank's outward normal
+  for (double y : heights) {
+    // (a)
+    const fe::P2Mesh cut = trapezoid(y, s0 / 40, {});
+    Eigen::VectorXd f = Eigen::VectorXd::Zero(cut.dof_count());
+    const double c1 = half(y);
+    fe::add_edge_traction(cut, m, 3, [&](const Vector2d& x, const Vector2d&) -> Vector2d {
+      return {-3 * (c1 * c1 - x.x() * x.x()) / (4 * c1 * c1 * c1) / b, 0.0};   // 1 N along -x
+    }, f);
+    fe::Constraints fix;
+    fe::fix_tagged(cut, 1, 0, 0.0, fix);
+    fe::fix_tagged(cut, 1, 1, 0.0, fix);
+    const double end_fe = -displacement_at(cut, fe::solve_elastic(fe::assemble_stiffness(cut, m), f, fix), Vector2d(0, y)).x();
+    ToothPoint end;
+    timoshenko(Vector2d(0, y), Vector2d(-1, 0), 0.0, half, b, end);
+    // (b)
+    const Vector2d P(half(y), y);
+    const Eigen::VectorXd u = solver.solve(unit_pressure(whole, m, 2, P, n, w));
+    const double flank_fe = (-n).dot(displacement_at(whole, u, Vector2d(0, y)));
+    ToothPoint side;
+    timoshenko(P, -n, 0.0, half, b, side);
+    std::printf("  %16.1f  %17.4f  %10.4f  %7.3f   %18.4f  %10.4f (%4.1f %%)  %7.3f\n", y * 1e3, end_fe * 1e9,
+                end.timoshenko() * 1e9, end_fe / end.timoshenko(), flank_fe * 1e9, side.timoshenko() * 1e9,
+                100 * side.shear / side.timoshenko(), flank_fe / side.timoshenko());
+  }
 }
 
 // ---------------------------------------------------------------------------------------
