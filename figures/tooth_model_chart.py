@@ -12,6 +12,7 @@ converged finite elements:
               the three; reference/fe_tooth_contact.md section 1 does the same study)
   fe_coarse   FE, sizes x 2        fe_medium  FE, sizes x sqrt 2        fe  FE, default sizes
   pe          potential energy, the FE's bores (Sainsot's fillet foundation clamped there)
+  pe_coupled  the same with the structural coupling of the bodies' torsion (model.pe_coupling)
   beam        chapter 7's beams in the physically consistent reading (Hertz once per contact
               and inside the sharing, cantilevers)
   beam_thesis chapter 7's beams in the thesis' reading (Palmgren per tooth, equal split, fused)
@@ -46,12 +47,14 @@ BEAM_CONSISTENT = {"method": "beam", "hertz": "per_contact", "pair_hertz": "cons
 BEAM_THESIS = {"method": "beam", "hertz": "per_tooth", "pair_hertz": "equal_split", "pair_stiffness": "fused",
                "tooth_force": "base_radius"}
 PE = {"method": "potential_energy", "hertz": "none", "tooth_force": "base_radius"}
+PE_COUPLED = dict(PE, pe_coupling="body_torsion")
 FE_SCALES = {"fe_coarse": 2.0, "fe_medium": math.sqrt(2.0), "fe": 1.0, "fe_fine": 1 / math.sqrt(2.0),
              "fe_finest": 0.5}
 # Drawn: label and colour (methods: comparison colours; the FE meshes in shades of one green).
 MODELS = {"iso": ("ISO 6336-1 c_gamma_alpha b (closed form, at 1 us)", "k"),
           "beam_thesis": ("beam, thesis reading", COMPARISON_COLOURS[2]),
           "beam": ("beam, consistent reading", COMPARISON_COLOURS[0]), "pe": ("potential energy", COMPARISON_COLOURS[1]),
+          "pe_coupled": ("potential energy + body coupling", COMPARISON_COLOURS[4]),
           "fe_coarse": ("FE, sizes x 2", "#a6dba0"), "fe_medium": ("FE, sizes x 1.41", "#5aae61"),
           "fe": ("FE, default sizes", "#1b7837")}
 TIMED = ("mesh_phases", "fe_model", "ste_1", "ste_2", "ste_3")
@@ -94,7 +97,8 @@ def measure(gear, data):
         r = {}
         for model in ("fe", "fe_coarse", "fe_medium", "fe_fine", "fe_finest"):   # "fe" first: the bores
             r[model] = run_file(gear, data, pair, model, FE_SCALES[model])
-        for model, settings in (("pe", PE), ("beam", BEAM_CONSISTENT), ("beam_thesis", BEAM_THESIS)):
+        for model, settings in (("pe", PE), ("pe_coupled", PE_COUPLED), ("beam", BEAM_CONSISTENT),
+                                ("beam_thesis", BEAM_THESIS)):
             r[model] = run_file(gear, data, pair, model, settings)
         k_true, k_order = richardson(r["fe"]["k"], r["fe_fine"]["k"], r["fe_finest"]["k"], math.sqrt(2))
         p_true, p_order = richardson(r["fe"]["ptp"], r["fe_fine"]["ptp"], r["fe_finest"]["ptp"], math.sqrt(2))

@@ -244,11 +244,14 @@ void GearPairFromFile::tooth_model(Run& run) {
     loaded_ = run.timed("fe_model", [&] { return fe_loaded_pair(m, file_.phases, file_.fe); });
   } else {
     PairStiffnessFn k;
+    double coupling = 0.0;
     if (file_.method == ToothModel::potential_energy) {
       const PeGear g1 = file_.pe[0], g2 = file_.pe[1];
       k = [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
+      if (file_.pe_coupling) coupling = pe_body_coupling(g1) + pe_body_coupling(g2);
+      run.key_numbers().add("pe_coupling_m_per_N", coupling, "m/N");
     }
-    loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k); });
+    loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k, coupling); });
   }
   const FePairModel* fe = loaded_->fe_model();
   if (!fe) return;

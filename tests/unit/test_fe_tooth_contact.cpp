@@ -16,6 +16,7 @@
 #include "gearhb/gears/fe_tooth_contact.hpp"
 #include "gearhb/gears/iso6336_root.hpp"
 #include "gearhb/gears/loaded_pair.hpp"
+#include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/load_sharing.hpp"
 #include "fe_pair_examples.hpp"
 
@@ -524,4 +525,56 @@ TEST(DISABLED_FeToothContactStudy, StructuralCoupling) {
                 "rb1^2 c1 + rb2^2 c2 = %.4g (%.1f %% of the mean C_01)\n",
                 c.name, lo, hi, sum / n, n, diag / n, body, 100 * body / (sum / n));
   }
+}
+
+// The PE's structural coupling term (pe_body_coupling, potential_energy.hpp): the annulus
+// closed form against the FE's body torsion of the same gear (ROSS z 62, bore 17.5 mm: the
+// deep web whose coupling is largest), rb^2 c along the line of action. The two differ by
+// the teeth, which stiffen only the annulus' outer edge: 0.16 % measured, 1 % bound
+// (reference/fe_tooth_contact.md §4).
+TEST(PeCoupling, BodyTorsionTermEqualsTheFeBodyOfADeepWeb) {
+  const PairCase ross = issue_pairs()[2];
+  const GearGeometry& g = ross.pair.gear1;
+  PeGear pe;
+  pe.teeth = g.teeth, pe.module = g.module, pe.face_width = g.face_width, pe.youngs_modulus = 206e9;
+  pe.bore_radius = 0.0175;
+  FeGearOptions o = ross.fe.gear1;
+  o.loaded_teeth = 2;
+  const FeGearModel fe(g, 206e9, 0.3, o);
+  const double rb = g.base_radius();
+  EXPECT_NEAR(pe_body_coupling(pe) / (rb * rb * fe.body_torsion_compliance()), 1.0, 0.01);
+  pe.bore_radius = 0;
+  EXPECT_THROW(pe_body_coupling(pe), std::invalid_argument);
+}
+
+// The coupled sharing of phase_loaded_pair (coupling kappa between the two pairs of a
+// two-pair phase, no relief) against the closed form of two springs with a common
+// compliance: X = F (c1 c2 - kappa^2) / (c1 + c2 - 2 kappa), c_i = 1 / k_i; the one-pair
+// phases unchanged.
+TEST(PeCoupling, TwoPairPhasesFollowTheClosedForm) {
+  PairSteModel pair;
+  pair.gear1 = pair.gear2 = thesis_gear();
+  pair.hertz = HertzCount::none;
+  pair.tooth_force = ToothForce::over_base_radius;
+  // kappa below every pair's own compliance (the beams': 4.3e-10 m/N at least), so both
+  // pairs stay loaded and the closed form holds.
+  const double kappa = 1e-10, T = 300, F = T / pair.gear1.base_radius();
+  const auto coupled = phase_loaded_pair(pair, 32, {}, kappa)->ste(T);
+  const auto plain = phase_loaded_pair(pair, 32)->ste(T);
+  const auto phases = mesh_phases(pair, 32);
+  int two = 0;
+  for (std::size_t q = 0; q < phases.size(); ++q) {
+    if (phases[q].pairs.size() == 1) {
+      EXPECT_NEAR(coupled[q].ste / plain[q].ste, 1.0, 1e-12);
+      continue;
+    }
+    ASSERT_EQ(phases[q].pairs.size(), 2u);
+    ASSERT_EQ(coupled[q].loaded, 2);
+    const double c1 = 1 / phases[q].pairs[0].stiffness, c2 = 1 / phases[q].pairs[1].stiffness;
+    EXPECT_NEAR(coupled[q].ste / (F * (c1 * c2 - kappa * kappa) / (c1 + c2 - 2 * kappa)), 1.0, 1e-12);
+    ++two;
+  }
+  EXPECT_GT(two, 0);
+  pair.hertz = HertzCount::per_contact;
+  EXPECT_THROW(phase_loaded_pair(pair, 32, {}, kappa), std::invalid_argument);
 }

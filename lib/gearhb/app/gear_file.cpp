@@ -284,13 +284,16 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   // --- the reading of the beam model ------------------------------------------------
   const json model = j.value("model", json::object());
   only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
-                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh"});
+                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh", "pe_coupling"});
   // Defaults (issue 33 §4, figures/tooth_model_chart.py): the method the tooth-model chart
   // recommends (fe: the fast models are 3-170 % off the converged FE in mean stiffness, 20-80 %
   // in STE peak-to-peak) and the physically consistent readings; the thesis files write the
   // thesis' readings out.
   f.method = ToothModel(r.choice(model, "model", "method", {"beam", "potential_energy", "fe"}, 2));
   if (model.contains("fe_mesh") && f.method != ToothModel::fe) fail_key(path, "model.fe_mesh", "needs method fe");
+  f.pe_coupling = r.choice(model, "model", "pe_coupling", {"none", "body_torsion"}, 0) == 1;
+  if (f.pe_coupling && f.method != ToothModel::potential_energy)
+    fail_key(path, "model.pe_coupling", "needs method potential_energy");
   f.phases = model.contains("phases") ? json_whole(model["phases"], path, "model.phases", 16, 4096) : 64;
   f.pair.positions_per_base_pitch =
       model.contains("positions_per_base_pitch")
@@ -402,6 +405,9 @@ std::string gear_file_help() {
          "  model.fe_mesh.far_tooth_size ... on the other teeth (default 0.25), body_size in the body (default 1);\n"
          "  model.fe_mesh.scale          all sizes times scale (default 1; the defaults are within 0.05 % of the\n"
          "                               extrapolated mean stiffness). A mesh estimated above 2e6 nodes is refused\n"
+         "  model.pe_coupling            none (default) | body_torsion: method potential_energy with the structural\n"
+         "                               coupling of the loaded pairs through the bodies' torsion (the annulus rim_radius..rf,\n"
+         "                               potential_energy.hpp pe_body_coupling): the rigid part of the FE's coupling\n"
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"

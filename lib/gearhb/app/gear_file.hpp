@@ -88,6 +88,7 @@ struct GearFile {
   std::string name;
   ToothModel method = ToothModel::beam;
   PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
+  bool pe_coupling = false;        // model.pe_coupling body_torsion: the bodies' structural coupling
   FePairOptions fe;                // the FE models of both gears (method fe: model.fe_mesh, rim_radius)
   PairSteModel pair;               // geometry, materials, reliefs, the model's reading
   GearFileGear gear[2];

@@ -35,8 +35,13 @@ class LoadedPair {
   virtual const FePairModel* fe_model() const { return nullptr; }
 };
 
-// beam (stiffness empty) or potential_energy (stiffness the PE pair stiffness).
-std::unique_ptr<LoadedPair> phase_loaded_pair(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness = {});
+// beam (stiffness empty) or potential_energy (stiffness the PE pair stiffness). coupling
+// > 0 [m/N]: the structural coupling of the loaded pairs (pe_body_coupling of both gears,
+// potential_energy.hpp), the same off-diagonal compliance between every two pairs of a
+// phase; the load is then shared by the coupled contact problem (coupled_load_sharing.hpp,
+// C_ii = 1 / k_i, C_ij = coupling). Needs m.hertz none (std::invalid_argument otherwise).
+std::unique_ptr<LoadedPair> phase_loaded_pair(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness = {},
+                                              double coupling = 0.0);
 // fe: builds FePairModel(m, samples, options); m.tooth_force must be base_radius (the FE's
 // force acts along the line of action: std::invalid_argument otherwise).
 std::unique_ptr<LoadedPair> fe_loaded_pair(const PairSteModel& m, int samples, const FePairOptions& options = {});

@@ -195,6 +195,16 @@ double pe_hertz_compliance(const PeGear& g1, const PeGear& g2) {
   return 2.0 / (M_PI * b) * (s1 + s2);
 }
 
+double pe_body_coupling(const PeGear& g) {
+  check_gear(g);
+  const PeToothGeometry t = pe_tooth_geometry(g);
+  if (!(g.bore_radius > 0.0 && g.bore_radius < t.rf))
+    throw std::invalid_argument("pe_body_coupling: the bore radius must lie in (0, r_f)");
+  const double G = g.youngs_modulus / (2.0 * (1.0 + g.poisson_ratio));
+  const double c = (1.0 / (g.bore_radius * g.bore_radius) - 1.0 / (t.rf * t.rf)) / (4.0 * M_PI * G * g.face_width);
+  return t.rb * t.rb * c;
+}
+
 double pe_pair_stiffness(const PeGear& g1, const PeGear& g2, double r1, double r2, bool hertz, const PeOptions& o) {
   double q = pe_tooth_compliance(g1, r1, o).total() + pe_tooth_compliance(g2, r2, o).total();
   if (hertz) q += pe_hertz_compliance(g1, g2);

@@ -141,6 +141,18 @@ struct SainsotCoefficients {
   double L = 0, M = 0, P = 0, Q = 0;
 };
 SainsotCoefficients sainsot_coefficients(double h_f, double theta_f);
+
+// The structural coupling of neighbouring loaded teeth that the bodies' torsion makes
+// (reference/fe_tooth_contact.md §9): a load on one tooth turns the rim against the bore,
+// which moves every other tooth's contact point along the line of action by rb^2 c per
+// unit force, c the torsional compliance of the annulus r_int..r_f (a closed form, checked
+// against the FE's body in §4: 0.2 % for ROSS's deep web, 3-7 % for the rim gears),
+//     c = (1 / r_int^2 - 1 / r_f^2) / (4 pi G b),   G = E / (2 (1 + nu)).
+// Sainsot's foundation holds the body's share under the loaded tooth itself, so this is an
+// off-diagonal term only [m/N]. It is the rigid part of the coupling: the FE's off-diagonal
+// is 1.8 (ROSS) to 6.7 (thesis) times larger, the rest being the rim's bending between the
+// teeth (§9). Throws std::invalid_argument without a bore (bore_radius <= 0 or >= r_f).
+double pe_body_coupling(const PeGear& g);
 bool pe_fillet_in_range(double h_f, double theta_f);
 
 // The integration kernel, for any tooth shape: the bending, shear and axial integrals
