@@ -228,7 +228,9 @@ GEAR_CAPTIONS = {
                   "minimum marks the load the relief suits.",
     "root_stress.png": "Finite elements only: the root stress of one tooth of each gear while its pair moves "
                        "from A to E, per torque, ISO 6336-3's nominal sigma_F0 dotted. The peak sits at the outer "
-                       "point of single contact (D for the driver, B for the driven gear), where ISO loads the tooth.",
+                       "point of single contact (D for the driver, B for the driven gear), where ISO loads the tooth. "
+                       "Below: the stress along both fillets there, tension under the loaded flank, compression under "
+                       "the other; its peak lies near, not at, ISO's 30-degree point.",
     "response.png": "DTE RMS and dynamic factor K_v over speed per torque (stable solid, unstable dashed, "
                     "bifurcations marked, ISO 6336-1 K_v dotted where computed); the rug below the axis is the "
                     "contact of each flank (drive-flank loss, back-flank impact).",

@@ -10,7 +10,8 @@ Writes into DIR (the run's own folder; gearhb_gear calls this with plot=1):
   harris.png    the Harris map: STE peak-to-peak against torque, with and without
                 the file's tip relief, the file's torques marked;
   root_stress.png  (method fe) the root stress of a tooth of each gear over the path of
-                contact per torque, ISO 6336-3's sigma_F0 dotted;
+                contact per torque, ISO 6336-3's sigma_F0 dotted (top), and along both
+                fillets at the peak of the largest torque, ISO's 30-degree point marked (below);
 and, for a file with a speed range, the dynamics figures of gear_dynamics.py
 (response.png, campbell.png, time_history.png, dte_spectrum.png).
 The mesh phase runs over one base pitch: pair 1 is the pair nearest the start of
@@ -154,8 +155,31 @@ def root_stress_figure(d_dir, params, kn, torques):
     """Method fe: the root stress of a tooth of each gear over the path of contact (the largest
     tension on the fillet below its loaded flank while its pair is at s), one curve per torque,
     ISO 6336-3 method B's nominal sigma_F0 of the same torque dotted."""
-    fig, axes = plt.subplots(1, 2, figsize=(11.5, 4.6), sharey=True)
+    fig, grid = plt.subplots(2, 2, figsize=(11.5, 8.6))
+    axes = grid[0]
     path = read_csv(d_dir / "path_of_contact.csv")
+    last = len(torques)
+    along = read_csv(d_dir / ("fillet_stress_%d.csv" % last))
+    for g, ax in ((1, grid[1][0]), (2, grid[1][1])):
+        for side, style in (("loaded", "-"), ("other", "--")):
+            rows = [k for k in range(len(along["gear"])) if along["gear"][k] == g and along["side"][k] == side]
+            r = [1e3 * along["radius_m"][k] for k in rows]
+            ax.plot(r, [along["stress_MPa"][k] for k in rows], style, marker=".", ms=3,
+                    color=torque_colour(torques[-1], torques),
+                    label="fillet below the %s flank" % ("loaded" if side == "loaded" else "unloaded"))
+            if side == "loaded":   # ISO's 30-degree point: where the tangent crosses 30 deg (first from the root)
+                t = [along["tangent_deg"][k] for k in rows]
+                for a in range(len(t) - 1):
+                    if (t[a] - 30) * (t[a + 1] - 30) <= 0 and t[a] != t[a + 1]:
+                        x = r[a] + (r[a + 1] - r[a]) * (30 - t[a]) / (t[a + 1] - t[a])
+                        ax.axvline(x, color="0.4", ls=":", lw=1.2, label="tangent at 30 deg (ISO 6336-3's section)")
+                        break
+        ax.axhline(0, color="0.7", lw=0.8)
+        ax.set_xlabel("radius on the fillet [mm] (root circle at the left end)")
+        ax.set_title("gear %d along its fillets, T1 = %g N m, the tooth's pair at s = %.2f mm (its peak)"
+                     % (g, torques[-1], 1e3 * kn["fe_root_stress_max_s_m_%d_%d" % (g, last)]), fontsize=9)
+        ax.legend(fontsize=7, loc="center right")   # between the tension (above) and the compression (below)
+    grid[1][0].set_ylabel("sigma_tt on the fillet surface [MPa]")
     for g, ax in ((1, axes[0]), (2, axes[1])):
         for i, T in enumerate(torques):
             n = "%d_%d" % (g, i + 1)
@@ -174,6 +198,7 @@ def root_stress_figure(d_dir, params, kn, torques):
         ax.set_ylim(bottom=0)
         ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1, frameon=False)
     axes[0].set_ylabel("root stress, largest tension on the fillet [MPa]")
+    axes[1].sharey(axes[0])
     fig.suptitle("%s\nroot stress over the mesh by finite elements" % params.get("name", "gear pair"), fontsize=9)
     save(fig, d_dir / "root_stress.png")
 

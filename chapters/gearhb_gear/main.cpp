@@ -40,8 +40,10 @@
 //   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c_fe.json --out /tmp/fzg_fe
 // ===========================================================================
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -307,7 +309,8 @@ void GearPairFromFile::transmission_error(Run& run) const {
 
 // Step 4b (method fe): the root stress of each gear's teeth over the path of contact
 // (root_stress_<i>.csv: the largest tensile stress on the fillet below the loaded flank,
-// where it sits) beside ISO 6336-3 method B's nominal sigma_F0 = F_t / (b m) Y_F Y_S with
+// where it sits; fillet_stress_<i>.csv: along both fillets at the peak) beside ISO 6336-3
+// method B's nominal sigma_F0 = F_t / (b m) Y_F Y_S with
 // F_t = T1 / r1 (a comparison, not a fit: ISO's critical section is where the fillet's
 // tangent makes 30 degrees with the centre line), and Hertz's contact of every loaded pair
 // for the FE's forces (contact_<i>.csv).
@@ -331,6 +334,24 @@ void GearPairFromFile::root_stress_and_contact(Run& run) const {
       t.add_row({r[0][k].s, r[0][k].stress / 1e6, a.radius, a.tangent_deg, r[1][k].stress / 1e6, b.radius, b.tangent_deg});
     }
     run.write("root_stress_" + n + ".csv", t);
+    // Along both fillets of each gear's tooth at the contact position of its peak.
+    Table along({"gear", "s_from_A_m", "side", "radius_m", "tangent_deg", "stress_MPa"});
+    for (int j = 0; j < 2; ++j) {
+      const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
+      const auto& stations = (j == 0 ? fe.gear1() : fe.gear2()).fillet_stations();
+      // Per side, ordered from the root up; a node shared by two fillet edges is read in both
+      // triangles: the mean of the two (their difference is the discretisation's).
+      std::map<std::pair<bool, double>, std::array<double, 3>> rows;   // (other side, radius) -> tangent, sum, count
+      for (const auto& [station, sigma] : peak->fillet) {
+        const FilletStation& st = stations[std::size_t(station)];
+        auto& row = rows[{!st.loaded_side, st.radius}];
+        row[0] = st.tangent_deg, row[1] += sigma, row[2] += 1;
+      }
+      for (const auto& [where, row] : rows)
+        along.add_row({long(j + 1), peak->s, std::string(where.first ? "other" : "loaded"), where.second, row[0],
+                       row[1] / row[2] / 1e6});
+    }
+    run.write("fillet_stress_" + n + ".csv", along);
     for (int j = 0; j < 2; ++j) {
       const std::string gj = std::to_string(j + 1) + "_" + n;
       const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
@@ -641,7 +662,8 @@ int main(int argc, char** argv) {
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
               "also frc_<i>.csv, bifurcations_<i>.csv, check_time_integration_<i>.csv, modes.csv,\n"
-              "dte_spectrum.csv, time_history.csv, iso_kv.csv.\n\n" +
+              "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
+              "fillet_stress_<i>.csv, contact_<i>.csv.\n\n" +
                   gear_file_help());
   GearPairFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

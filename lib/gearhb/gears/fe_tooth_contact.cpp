@@ -776,8 +776,11 @@ std::vector<FeRootStressPoint> FePairModel::root_stress(double torque, int gear)
       FeRootStressPoint r;
       r.s = (p.phase + double(k)) * path_.base_pitch;
       r.stress = -1e300;
-      for (std::size_t i = 0; i < st.size(); ++i)
-        if (st[i].tooth == int(k) && st[i].loaded_side && sigma(long(i)) > r.stress) r.stress = sigma(long(i)), r.station = int(i);
+      for (std::size_t i = 0; i < st.size(); ++i) {
+        if (st[i].tooth != int(k)) continue;
+        r.fillet.emplace_back(int(i), sigma(long(i)));
+        if (st[i].loaded_side && sigma(long(i)) > r.stress) r.stress = sigma(long(i)), r.station = int(i);
+      }
       out.push_back(r);
     }
   }

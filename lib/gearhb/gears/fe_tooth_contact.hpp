@@ -200,6 +200,9 @@ struct FeRootStressPoint {
   double s = 0.0;              // contact position of the tooth's pair, from A [m]
   double stress = 0.0;         // [Pa]
   int station = 0;             // where (FeGearModel::fillet_stations())
+  // sigma_tt [Pa] at every station of this tooth (both fillets), in the order of
+  // fillet_stations(): the stress along the fillet at this contact position.
+  std::vector<std::pair<int, double>> fillet;
 };
 
 // Hertz at each loaded pair of each phase for the forces of the FE contact problem (the
