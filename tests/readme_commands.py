@@ -1,0 +1,73 @@
+#!/usr/bin/env python3
+"""Every program command a README shows runs (issue 37 §3): readme_commands.py BUILD_DIR OUT_DIR README.md...
+
+A command is a line of an indented (4-space) block that starts with `build/bin/`, with its
+`\\` continuation lines; what follows a run of two or more spaces is a remark (`# ...` or
+words), not an argument. Commands with placeholders (an argument in capitals such as
+GEAR.json, MODEL.json, DIR, or a `[...]` / `chNN_name` synopsis) are usage lines and are
+skipped. Each command runs from the repository root with its `--out` replaced by a folder
+under OUT_DIR (added when it has none) and `--quiet`; it must exit 0. Prints each command
+with its exit status and time; fails listing the commands that did not exit 0.
+"""
+import pathlib
+import re
+import shlex
+import subprocess
+import sys
+import time
+
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+PLACEHOLDER = re.compile(r"^[A-Z][A-Z0-9_]*(\.json)?$|\[|NN")
+
+
+def commands(readme):
+    lines = readme.read_text().splitlines()
+    out, i = [], 0
+    while i < len(lines):
+        line = lines[i]
+        if line.startswith("    build/bin/"):
+            text = line[4:]
+            while text.rstrip().endswith("\\") and i + 1 < len(lines):
+                i += 1
+                text = text.rstrip()[:-1] + " " + lines[i].strip()
+            text = re.split(r"\s{2,}", text.strip())[0]   # a remark after two spaces
+            out.append(text)
+        i += 1
+    return out
+
+
+def runnable(words):
+    return not any(PLACEHOLDER.search(w) for w in words[1:]) and not PLACEHOLDER.search(words[0].split("/")[-1])
+
+
+def main():
+    build, out_root = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
+    failed, n = [], 0
+    for readme in sys.argv[3:]:
+        for text in commands(pathlib.Path(readme)):
+            words = shlex.split(text)
+            if not runnable(words):
+                print("skip (usage line): %s" % text)
+                continue
+            n += 1
+            exe = build / "bin" / words[0].split("/")[-1]
+            args = words[1:]
+            out = out_root / ("run_%d" % n)
+            if "--out" in args:
+                args[args.index("--out") + 1] = str(out)
+            else:
+                args += ["--out", str(out)]
+            t0 = time.monotonic()
+            p = subprocess.run([str(exe)] + args + ["--quiet"], cwd=ROOT, capture_output=True, text=True,
+                               errors="replace", timeout=600)
+            print("exit %d in %.1f s: %s" % (p.returncode, time.monotonic() - t0, text))
+            if p.returncode != 0:
+                failed.append("%s (%s): exit %d: %s" % (text, readme, p.returncode, p.stderr.strip()[-300:]))
+    for f in failed:
+        print("FAIL: " + f)
+    print("%d commands run, %d failed" % (n, len(failed)))
+    return 1 if failed or n == 0 else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
