@@ -8,6 +8,7 @@ first blank line. Every one must be valid JSON as it stands (what a user copies)
 right after the line `<!-- example file: PROGRAM -->` is also written to a file and run,
 `build/bin/PROGRAM FILE --set plot=0 --quiet --out OUT_DIR/...`: it must exit 0.
 """
+import itertools
 import json
 import pathlib
 import re
@@ -19,21 +20,17 @@ MARK = re.compile(r"^<!-- example file: (\w+) -->$")
 
 
 def blocks(readme):
-    """[(first line number, text, program or None)]"""
+    """[(first line number, text, program or None)]: runs of non-blank lines whose first is `    {`."""
     lines = readme.read_text().splitlines()
-    out, i = [], 0
-    while i < len(lines):
-        if lines[i].startswith("    {"):
-            program = None
-            m = MARK.match(lines[i - 1]) if i > 0 else None
-            if m:
-                program = m.group(1)
-            start, body = i, []
-            while i < len(lines) and lines[i].strip():
-                body.append(lines[i][4:] if lines[i].startswith("    ") else lines[i])
-                i += 1
-            out.append((start + 1, "\n".join(body), program))
-        i += 1
+    out = []
+    for blank, run in itertools.groupby(enumerate(lines), key=lambda nl: not nl[1].strip()):
+        run = list(run)
+        m = MARK.match(run[0][1])
+        if m:   # the marker line opens the run; the block follows it
+            run = run[1:]
+        if blank or not run or not run[0][1].startswith("    {"):
+            continue
+        out.append((run[0][0] + 1, "\n".join(l[4:] for _, l in run), m.group(1) if m else None))
     return out
 
 
