@@ -179,7 +179,7 @@ n["ste_max_um_3"]["note"] = ("chapter 8's continuous reading (chapters/ch08_gear
                              "thesis prints 13.77 for its 8-position reading (see thesis_pair_p8)")
 n["mesh_stiffness_mean_N_per_m_3"]["thesis_value"] = 473.2e6
 n["mesh_stiffness_mean_N_per_m_3"]["note"] = "chapter 8: 470.97 MN/m continuous, 473.29 on 8 positions (thesis 473.2)"
-n["iso6336_c_gamma_alpha"]["note"] = "times b = 20 mm: 440.2 MN/m (GEARS.md §3; reference/ch07_ste.json)"
+n["iso6336_c_gamma_alpha"]["note"] = "times b = 20 mm: 440.2 MN/m (ISO 6336-1 method B; reference/ch07_ste.json)"
 n.update(dynamics_numbers([1, 2, 3]))
 n.update(iso_kv_numbers("thesis_pair", [1, 2, 3]))
 write("thesis_pair", "thesis_pair.json", ["--set", "plot=0"], n)
@@ -229,14 +229,14 @@ published = {"centre_distance_m": 91.5e-3, "contact_ratio": 1.4625, "base_radius
              "path_of_contact_m": 19.43e-3, "base_pitch_m": 13.285e-3}
 for k, v in published.items():
     n[k]["published_value"] = v
-    n[k]["published_source"] = ("FZG type C test gear (DIN ISO 14635-1; GEARS.md §3): m 4.5 mm, z 16/24, "
+    n[k]["published_source"] = ("FZG type C test gear (DIN ISO 14635-1): m 4.5 mm, z 16/24, "
                                 "x 0.1817/0.1715, a 91.5 mm")
 n["contact_ratio"]["note"] = ("ours 1.462446 at a = 91.5 mm; the published 1.4625 is the same formula with the "
                               "published radii rounded to 1 um (1.46251), i.e. rounding in the last digit")
 n.update(iso_numbers("fzg_c"))
 for k in ("iso6336_c_prime_th", "iso6336_c_prime", "iso6336_c_gamma_alpha"):
     n[k]["note"] = ("shifted gears: needs the q' shift terms as ISO 6336-1 Table 9 pairs them (C4 x1, C5 x1/zn1, "
-                    "C6 x2, C7 x2/zn2), fixed by issue20-pe (5f4444b); before it lib/iso6336.cpp paired C4..C7 with "
+                    "C6 x2, C7 x2/zn2), fixed in commit 5f4444b; before it lib/iso6336.cpp paired C4..C7 with "
                     "the wrong variables and this check failed (c'_th 39.70)")
 n.update(ste_numbers("fzg_c", [1, 2, 3]))
 write("fzg_c", "fzg_c.json", ["--set", "plot=0"], n)
@@ -251,13 +251,13 @@ for k, v in tr.items():
     n[k]["note"] = ("not comparable to the published helical value: this file is the spur pair beta = 0 (z, not "
                     "z_n = 18.905/114.543; no cos(beta); a from the shifts, 481.15 mm, not a_w = 500 mm; "
                     "eps_alpha of the spur pair). The helical example itself is checked by tests/unit/test_iso6336.cpp "
-                    "(issue20-pe). Shifted gear: needs the q' fix of issue20-pe (5f4444b), see fzg_c.")
+                    "(tests/unit/test_iso6336.cpp). Shifted gear: needs the q' fix of commit 5f4444b, see fzg_c.")
 n.update(ste_numbers("iso_tr_6336_30_ex01", [1]))
 write("iso_tr_6336_30_ex01", "iso_tr_6336_30_ex01.json", ["--set", "plot=0"], n)
-# --- the ROSS test gear (petrobras/ross; GEARS.md), beam model, consistent reading ------------------
+# --- the ROSS test gear (petrobras/ross), beam model, consistent reading ------------------
 n = geometry_numbers("ross_pair", GEOM_KEYS)
 n["contact_ratio"]["published_value"] = 1.7897798668
-n["contact_ratio"]["published_source"] = "GEARS.md (ROSS test gear: z 62/62, m 2 mm, 20 deg, ha* 1)"
+n["contact_ratio"]["published_source"] = "ROSS (petrobras/ross) test gear documentation: z 62/62, m 2 mm, 20 deg, ha* 1"
 n.update(iso_numbers("ross_pair"))
 n.update(ste_numbers("ross_pair", [1, 2, 3]))
 write("ross_pair", "ross_pair.json", ["--set", "plot=0"], n)

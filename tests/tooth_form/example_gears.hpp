@@ -15,7 +15,7 @@ inline gearhb::GearGeometry spur(int z, double m, double x) {
   return g;
 }
 inline gearhb::GearGeometry thesis() { return spur(50, 3e-3, 0.0); }        // thesis §7.4
-inline gearhb::GearGeometry fzg16() { return spur(16, 4.5e-3, 0.1817); }    // FZG type C pinion (GEARS.md)
+inline gearhb::GearGeometry fzg16() { return spur(16, 4.5e-3, 0.1817); }    // FZG type C pinion (DIN ISO 14635-1)
 inline gearhb::GearGeometry fzg24() { return spur(24, 4.5e-3, 0.1715); }    // FZG type C wheel
 inline gearhb::GearGeometry pinion10() { return spur(10, 3e-3, 0.0); }      // undercut (z_min = 17.1)
 

@@ -1,6 +1,6 @@
 #pragma once
 // The three pairs of issue 33's table for the FE tooth-contact tests and benchmark, as in
-// chapters/gearhb_gear/examples/{thesis_pair,fzg_c,ross_pair}.json (GEARS.md §3).
+// chapters/gearhb_gear/examples/{thesis_pair,fzg_c,ross_pair}.json.
 #include <array>
 #include <vector>
 

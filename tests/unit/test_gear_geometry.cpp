@@ -133,7 +133,7 @@ TEST(Geometry, InvoluteToothModelProblemsAndAdmissibleTeeth) {
 // ---------------------------------------------------------------------------
 // Shifted gears, a pair from a drawing (issue 20).
 //
-// FZG type C test gear (GEARS.md §3; Höhn, Oster, Michaelis; DIN ISO 14635-1):
+// FZG type C test gear (Höhn, Oster, Michaelis; DIN ISO 14635-1):
 // m = 4.5 mm, z = 16 / 24, x = 0.1817 / 0.1715, alpha = 20 deg, ha* = 1, hf* = 1.25,
 // rho_f* = 0.38; published a = 91.5 mm, eps_alpha = 1.4625, rb = 33.829 / 50.743 mm,
 // ra = 41.318 / 59.272 mm, path of contact 19.43 mm, pb = 13.285 mm.

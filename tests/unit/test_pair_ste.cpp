@@ -154,7 +154,7 @@ TEST(PairSte, DifferentGearsOnePairZone) {
   EXPECT_GT(single, 5);
 }
 
-// Tip relief physics (Harris 1958; GEARS.md §3). Linear theory (linear pair
+// Tip relief physics (Harris 1958). Linear theory (linear pair
 // springs k, single-pair deflection delta = F/k at the design load, relief on both
 // gears, R(s) the sum of both reliefs at a contact point, eps the contact ratio):
 // two pairs share with X = (R(s) + R(s + pb) + delta) / 2, one pair X = R(s) + delta.
@@ -289,7 +289,7 @@ TEST(PairSte, ToothBeamBelowTheBaseCircle) {
   EXPECT_GE(below, 4);   // (rb - rf) / (h / 14) = 2.64 mm / 0.72 mm
 }
 
-// The seam with the potential-energy method of issue20-pe (potential_energy.hpp): its
+// The seam with the potential-energy method (potential_energy.hpp): its
 // pair stiffness plugs in as the PairStiffnessFn unchanged; with Hertz left to that
 // function (model hertz = none) the one-pair STE is F / k_PE at the same contact radii.
 TEST(PairSte, PotentialEnergySeam) {

@@ -5,7 +5,7 @@
 // form must lie outside every rack position and touch one), never from tooth_form itself.
 //
 // Gears: the thesis gear (z 50, m 3 mm, x 0), FZG type C (z 16 / 24, m 4.5 mm,
-// x 0.1817 / 0.1715; shared/GEARS.md gives rho_fP* = 0.38 for it), a z = 10 pinion
+// x 0.1817 / 0.1715, rho_fP* = 0.38: DIN ISO 14635-1), a z = 10 pinion
 // (undercut), all with ha* = 1, hf* = 1.25, alpha = 20 deg.
 #include <algorithm>
 #include <cmath>
