@@ -85,6 +85,77 @@ double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd
   return sum / periods;
 }
 
+namespace {
+// The states after 1..periods forcing periods from (x, v) (rows of xs, vs) and the product of
+// the period maps' monodromy matrices.
+void chain(const TimeIntegrator& ti, double omega, int periods, const TimeIntegrationOptions& opt, Eigen::VectorXd x,
+           Eigen::VectorXd v, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs, Eigen::MatrixXd& M) {
+  xs.resize(periods, x.size());
+  vs.resize(periods, x.size());
+  M = Eigen::MatrixXd::Identity(2 * x.size(), 2 * x.size());
+  for (int k = 0; k < periods; ++k) {
+    Eigen::VectorXd xT, vT;
+    Eigen::MatrixXd Phi;
+    ti.period_map(x, v, omega, opt, xT, vT, Phi);
+    M = Phi * M;
+    x = xT, v = vT;
+    xs.row(k) = x.transpose();
+    vs.row(k) = v.transpose();
+  }
+}
+}  // namespace
+
+int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eigen::VectorXd& x_end,
+                     const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
+                     Eigen::MatrixXd& cx, Eigen::MatrixXd& cv) {
+  const Eigen::Index rows = p.x.rows(), d = x_end.size();
+  if (rows < 2) return 0;
+  const double w = p.omega;
+  auto state = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
+    Eigen::VectorXd s(2 * d);
+    s << x, v / w;
+    return s;
+  };
+  auto recorded = [&](Eigen::Index j) { return state(p.x.row(j).transpose(), p.v.row(j).transpose()); };
+  // The candidate period: the smallest repetition error at the end of the recording.
+  int n = 1;
+  double best = INFINITY;
+  for (int m = 1; m <= max_period && m < rows; ++m) {
+    const double r = (recorded(rows - 1) - recorded(rows - 1 - m)).cwiseAbs().maxCoeff();
+    if (r < best) best = r, n = m;
+  }
+  // Newton shooting on the n-period map from the last state, in (x, v).
+  Eigen::VectorXd S(2 * d), F(2 * d);
+  S << x_end, v_end;
+  Eigen::MatrixXd xs, vs, M;
+  bool converged = false;
+  for (int it = 0; it < 12 && !converged; ++it) {
+    chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);
+    F << xs.row(n - 1).transpose() - S.head(d), vs.row(n - 1).transpose() - S.tail(d);
+    converged = state(F.head(d), F.tail(d)).cwiseAbs().maxCoeff() <= 1e-2 * tol;
+    if (!converged) S -= (M - Eigen::MatrixXd::Identity(2 * d, 2 * d)).partialPivLu().solve(F);
+    if (!S.allFinite()) return 0;
+  }
+  if (!converged) return 0;
+  chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);   // the monodromy at the fixed point
+  if (M.eigenvalues().cwiseAbs().maxCoeff() >= 1.0) return 0;   // not attracting
+  const Eigen::VectorXd Sstar = state(S.head(d), S.tail(d));
+  if (!((state(x_end, v_end) - Sstar).cwiseAbs().maxCoeff() < (recorded(0) - Sstar).cwiseAbs().maxCoeff()))
+    return 0;   // the integration is not approaching it
+  // The least period: the first m dividing n after which the cycle repeats.
+  for (int m = 1; m < n; ++m)
+    if (n % m == 0 && (state(xs.row(m - 1).transpose(), vs.row(m - 1).transpose()) - Sstar).cwiseAbs().maxCoeff() <= tol) {
+      n = m;
+      break;
+    }
+  cx.resize(n, d);
+  cv.resize(n, d);
+  cx.row(0) = S.head(d).transpose();
+  cv.row(0) = S.tail(d).transpose();
+  for (int k = 1; k < n; ++k) cx.row(k) = xs.row(k - 1), cv.row(k) = vs.row(k - 1);
+  return n;
+}
+
 BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                        const BifurcationDiagramOptions& opt,
@@ -132,6 +203,15 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
         p.motion = p.lyapunov > opt.lyapunov_threshold    ? Motion::chaotic
                    : p.lyapunov >= -opt.lyapunov_threshold ? Motion::quasi_periodic
                                                            : Motion::unsettled;
+        if (p.motion != Motion::chaotic) {
+          Eigen::MatrixXd cx, cv;
+          const int n = attracting_cycle(ti, p, x, v, opt.max_period, tol, opt.integration, cx, cv);
+          if (n > 0) {
+            p.motion = Motion::periodic, p.n = n, p.by_shooting = true;
+            p.x = cx, p.v = cv;
+            x = cx.row(0).transpose(), v = cv.row(0).transpose();
+          }
+        }
       }
     } catch (const std::runtime_error& e) {   // this speed fails; the next starts from the last good state
       p.motion = Motion::failed;

@@ -16,13 +16,16 @@
 //    equations TimeIntegrator::period_map integrates for Floquet shooting, over
 //    lyapunov_periods periods from the last recorded state: chaotic if lambda >
 //    lyapunov_threshold; quasi-periodic if |lambda| <= lyapunov_threshold (a torus has
-//    lambda = 0; a finite-time estimate scatters about it by O(1 / lyapunov_periods)). Beside
-//    a period doubling the test cannot tell a torus from a period-n orbit approached with a
-//    multiplier of modulus within e^(+-lyapunov_threshold) of 1 (its repetition error decays
-//    too slowly to fall under period_tol in the periods given; the light-load gear shows one
-//    such speed on each side of its unstable range): such a speed is labelled quasi-periodic;
+//    lambda = 0; a finite-time estimate scatters about it by O(1 / lyapunov_periods));
 //    "unsettled" if lambda < -lyapunov_threshold (an attracting orbit the classifier did not
-//    see repeat: a period above max_period or a transient longer than transient_periods).
+//    see repeat: a period above max_period or a transient longer than transient_periods);
+//  - a speed not chaotic by lambda is then tried as a slowly approached cycle (beside a
+//    period doubling or a fold a multiplier near the unit circle makes the approach take
+//    thousands of periods): Newton shooting on the n-period map from the last state, n the
+//    period with the smallest repetition error at the end of the recording (attracting_cycle).
+//    If it converges (to period_tol / 100), the cycle's multipliers lie inside the unit circle
+//    and the integration is approaching it, the speed is period-n (by_shooting; x, v then hold
+//    the cycle's n points, lambda stays as computed).
 // The library returns the states; only lib/gearhb/app writes them.
 #include <functional>
 #include <string>
@@ -76,6 +79,7 @@ struct DiagramPoint {
   int n = 0;                       // the period (periodic), else 0
   double lyapunov = NAN;           // per forcing period (computed if not periodic), else NaN
   int transient = 0;               // periods discarded
+  bool by_shooting = false;        // periodic by attracting_cycle (a slow approach), not by repetition
   Eigen::MatrixXd x, v;            // Poincare states: (periods + 1) x dofs
   std::string failure;             // why, if motion == failed
 };
@@ -100,6 +104,14 @@ std::string check_bifurcation_options(const BifurcationDiagramOptions& opt, std:
 // The smallest n in 1..max_period with |S_{j+n} - S_j| <= tol for all recorded pairs (S = (x,
 // v / omega), rows of xs, vs; max norm), else 0.
 int poincare_period(const Eigen::MatrixXd& xs, const Eigen::MatrixXd& vs, double omega, int max_period, double tol);
+
+// The attracting cycle that the recorded Poincare states of p (and the later state x_end,
+// v_end) approach, by Newton shooting on the n-period map (see the top of this file): its
+// least period n, its n states in cx, cv (rows; the first the one nearest the end state); 0 if
+// there is none. tol: period_tol x_scale.
+int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eigen::VectorXd& x_end,
+                     const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
+                     Eigen::MatrixXd& cx, Eigen::MatrixXd& cv);
 
 // The largest Lyapunov exponent per forcing period of the orbit through (x0, v0) at phase 0:
 // (1 / periods) sum_k ln |Phi_k w_k| with w_k the tangent vector renormalised every period (in
