@@ -15,6 +15,7 @@ MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n point
                  "quasi_periodic": "quasi-periodic, or slow approach beside a bifurcation (|Lyapunov| < 0.02)", "chaotic": "chaotic (Lyapunov > 0)",
                  "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
 SWEEP_MARKERS = {"up": ".", "down": "x"}
+ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
 
 
 def motion_key(motion, n):
@@ -36,7 +37,7 @@ def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
         for key, idx in groups.items():
             ax.plot([d[x][i] for i in idx], [d[y][i] * scale for i in idx], ls="none",
                     marker=SWEEP_MARKERS[sweep], ms=2.5 if sweep == "up" else 2.2, mew=0.6,
-                    color=MOTION_COLOURS[key], zorder=4)
+                    color=MOTION_COLOURS[key], zorder=ZORDER[key])
             drawn.add((key, sweep))
     handles = [Line2D([], [], ls="none", marker="s", ms=5, color=MOTION_COLOURS[k], label=MOTION_LABELS[k])
                for k in MOTION_COLOURS if any(k == key for key, _ in drawn)]
@@ -47,6 +48,8 @@ def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
 
 def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase"):
     """The HB branch's value at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed unstable."""
+    if "point" in h:   # the branch's own points (the rows at the diagram's speeds are for checks)
+        h = {c: [v[i] for i in range(len(v)) if h["point"][i] == "branch"] for c, v in h.items()}
     if not h[x]:
         return []
     plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb")

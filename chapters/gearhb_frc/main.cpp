@@ -181,9 +181,10 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   add_bifurcation_rows(t, d, model_.output, 1.0, lead);
   run.write("bifurcation_diagram.csv", t);
   Table h(hb_section_columns({"omega"}, "x"));
-  add_hb_section_rows(h, hb, c, model_.output, 1.0, lead);
+  add_hb_section_rows(h, hb, c, d, model_.output, 1.0, lead);
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
+  run.say(model_.name + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
 }
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).

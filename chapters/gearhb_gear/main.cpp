@@ -464,8 +464,9 @@ void GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   };
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
   add_bifurcation_rows(t, d, q, 1e6, lead);
-  add_hb_section_rows(hb_section, hb, r.curve, q, 1e6, lead);
+  add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
+  run.say(torque_label(i) + ": " + diagram_summary(d, [&](double w) { return speed_rpm(w); }, "rpm"));
 }
 
 // Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the

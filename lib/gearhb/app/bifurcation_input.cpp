@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include "gearhb/app/json_file.hpp"
+#include "gearhb/core/newton.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
 namespace gearhb {
@@ -55,22 +57,36 @@ std::string bifurcation_diagram_help() {
          "                        writes bifurcation_diagram.csv and bifurcation_diagram.png\n";
 }
 
-void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
-                         double scale, const std::function<std::vector<Table::Cell>(double)>& lead) {
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
+                         const Eigen::VectorXd& q, double scale,
+                         const std::function<std::vector<Table::Cell>(double)>& lead) {
   const auto& P = c.branch.points;
-  for (std::size_t i = 0; i < P.size(); ++i) {
+  auto add = [&](double w, const Eigen::VectorXd& X, bool stable, const char* point) {
     Eigen::VectorXd x0, v0;
-    hb_initial_state(hb, P[i].X, P[i].omega, x0, v0);
-    std::vector<Table::Cell> row = lead(P[i].omega);
+    hb_initial_state(hb, X, w, x0, v0);
+    std::vector<Table::Cell> row = lead(w);
     row.emplace_back(scale * q.dot(x0));
-    row.emplace_back(long(i < c.stable.size() && c.stable[i] ? 1 : 0));
+    row.emplace_back(long(stable ? 1 : 0));
+    row.emplace_back(std::string(point));
     t.add_row(std::move(row));
+  };
+  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
+  // At the diagram's speeds: the orbit of every segment stable at both ends that brackets it,
+  // solved by Newton at the speed from the segment's end.
+  for (const DiagramPoint& p : d.points) {
+    if (!p.up) continue;
+    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
+      if ((P[i - 1].omega - p.omega) * (P[i].omega - p.omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+      Eigen::VectorXd X = P[i].X;
+      if (newton_solve(hb, X, p.omega, c.scaling).converged) add(p.omega, X, true, "speed");
+    }
   }
 }
 
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value) {
   lead.push_back(value);
   lead.emplace_back("stable");
+  lead.emplace_back("point");
   return lead;
 }
 
@@ -100,6 +116,37 @@ void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std
     key.add(std::string("diagram_") + to_string(m) + "_speeds" + suffix, double(count), "-");
   }
   key.add("diagram_max_period" + suffix, double(max_period), "-");
+}
+
+std::string diagram_summary(const BifurcationDiagram& d, const std::function<double(double)>& speed,
+                            const std::string& unit) {
+  long count[5] = {0, 0, 0, 0, 0}, period1 = 0;
+  int max_period = 0;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const DiagramPoint& p : d.points) {
+    ++count[int(p.motion)];
+    max_period = std::max(max_period, p.n);
+    period1 += p.n == 1 ? 1 : 0;
+    if (p.n != 1) {
+      const double s = speed(p.omega);
+      lo[p.up ? 0 : 1] = std::min(lo[p.up ? 0 : 1], s), hi[p.up ? 0 : 1] = std::max(hi[p.up ? 0 : 1], s);
+    }
+  }
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "bifurcation diagram, %zu speeds x 2 sweeps: period 1 at %ld, period n >= 2 at %ld (largest n %d), "
+                "quasi-periodic %ld, chaotic %ld, unsettled %ld, failed %ld",
+                d.points.size() / 2, period1, count[int(Motion::periodic)] - period1, max_period,
+                count[int(Motion::quasi_periodic)], count[int(Motion::chaotic)], count[int(Motion::unsettled)],
+                count[int(Motion::failed)]);
+  std::string text = line;
+  for (int k = 0; k < 2; ++k)
+    if (std::isfinite(lo[k])) {
+      std::snprintf(line, sizeof line, "; not period 1 from %.4g to %.4g %s (sweep %s)", lo[k], hi[k], unit.c_str(),
+                    k == 0 ? "up" : "down");
+      text += line;
+    }
+  return text;
 }
 
 std::vector<std::string> bifurcation_columns(std::vector<std::string> lead, const std::string& value) {

@@ -39,11 +39,15 @@ std::string bifurcation_diagram_help();
 // them within period_tol), any other all its recorded points, a failed one none.
 void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
                           const std::function<std::vector<Table::Cell>(double)>& lead);
-// The HB branch at the same section (phase 0), to draw under the Poincare points
-// (bifurcation_diagram_hb.csv): per branch point the cells `lead(omega)`, then scale q' x(phase 0)
-// and its Floquet stability (1 | 0); hb_section_columns: the lead columns, `value`, stable.
-void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
-                         double scale, const std::function<std::vector<Table::Cell>(double)>& lead);
+// The HB branch at the same section (phase 0), to draw under the Poincare points and to check
+// them (bifurcation_diagram_hb.csv): the cells `lead(omega)`, then scale q' x(phase 0), its
+// Floquet stability (1 | 0) and point: `branch` for every point of the branch (in continuation
+// order), then `speed` for the HB orbit at each speed of the diagram's grid on every segment of
+// the branch stable at both ends that brackets it (solved by Newton at that speed);
+// hb_section_columns: the lead columns, `value`, stable, point.
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
+                         const Eigen::VectorXd& q, double scale,
+                         const std::function<std::vector<Table::Cell>(double)>& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
 
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
@@ -56,6 +60,12 @@ BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const F
 // sweeps counted) of each motion, diagram_<motion>_speeds, and the largest period seen,
 // diagram_max_period.
 void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std::string& suffix);
+
+// One line for the console: the speeds of each motion over both sweeps, the largest period,
+// and per sweep the span of speeds that are not period 1 (first to last), in the program's
+// unit: `speed(omega)` and `unit` (e.g. rpm).
+std::string diagram_summary(const BifurcationDiagram& d, const std::function<double(double)>& speed,
+                            const std::string& unit);
 
 // The column names after the lead ones, the value column named `value`.
 std::vector<std::string> bifurcation_columns(std::vector<std::string> lead, const std::string& value);
