@@ -12,7 +12,7 @@ from style import plot_branch
 MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C2", "chaotic": "C3",
                   "unsettled": "C1"}
 MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n points)",
-                 "quasi_periodic": "quasi-periodic, or slow approach beside a bifurcation (|Lyapunov| < 0.02)", "chaotic": "chaotic (Lyapunov > 0)",
+                 "quasi_periodic": "quasi-periodic (|Lyapunov| < 0.02, no attracting cycle)", "chaotic": "chaotic (Lyapunov > 0)",
                  "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
 SWEEP_MARKERS = {"up": ".", "down": "x"}
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
