@@ -14,6 +14,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, contact_rug, legend_styles, plot_branch,  # noqa: E402
                    read_csv, rug_room, save)
+from poincare import draw_hb_section, draw_poincare  # noqa: E402
 
 
 
@@ -32,11 +33,42 @@ def per_contact_state(d):
         states.append("intermittent" if "intermittent" in s else "full" if "full" in s else "open")
     return dict(d, contact=states)
 
+def poincare_panel(ax, p, h, direction, sweeps=("up", "down"), title=None):
+    """The diagram's Poincare points over the HB branch at phase 0, on ax; its legend below."""
+    handles = draw_hb_section(ax, h, "omega", "x") + draw_poincare(ax, p, "omega", "x", sweeps=sweeps)
+    ax.set_ylabel("q'x at phase 0 of each\nforcing period [m]")
+    if title:
+        ax.set_title(title, fontsize=9)
+    return handles
+
+
+def diagram_figure(d_dir, model, p, h):
+    """bifurcation_diagram.png: the up sweep above, the down sweep below."""
+    fig, axes = plt.subplots(2, 1, figsize=(6.8, 6.8), sharex=True)
+    labels = {}
+    for ax, sweep in zip(axes, ("up", "down")):
+        for hd in poincare_panel(ax, p, h, model["output"]["direction"], (sweep,),
+                                 "sweep %s (each speed starts from the previous speed's final state)" % sweep):
+            labels.setdefault(hd.get_label(), hd)
+    axes[-1].set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+    fig.suptitle("%s\nbifurcation diagram by time integration (Poincare section at phase 0)"
+                 % model.get("name", "model"), fontsize=9)
+    axes[-1].legend(handles=list(labels.values()), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2),
+                    ncol=2, frameon=False)
+    save(fig, d_dir / "bifurcation_diagram.png")
+
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     model = json.load(open(d_dir / "params.json"))
     d = read_csv(d_dir / "frc.csv")
-    fig, ax = plt.subplots(figsize=(6.8, 4.6))
+    diagram = d_dir / "bifurcation_diagram.csv"
+    p = h = None
+    if diagram.exists() and (d_dir / "bifurcation_diagram_hb.csv").exists():
+        p, h = read_csv(diagram), read_csv(d_dir / "bifurcation_diagram_hb.csv")
+        fig, (ax, axp) = plt.subplots(2, 1, figsize=(6.8, 7.4), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
+    else:
+        fig, ax = plt.subplots(figsize=(6.8, 4.6))
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
     contact_rug(ax, per_contact_state(d))
@@ -63,8 +95,17 @@ def main():
     ax.set_title("%s\nH = %d, swept %g to %g rad/s%s" % (model.get("name", "model"), model["harmonics"],
                                                          model["omega"]["from"], model["omega"]["to"], beyond),
                  fontsize=9)
-    h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14),
+    h_main, _ = ax.get_legend_handles_labels()
+    if p is not None:
+        ax.set_xlabel("")
+        handles = poincare_panel(axp, p, h, direction)
+        axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+        axp.legend(handles=h_main + legend_styles(ax) + handles, fontsize=6.5, loc="upper center",
+                   bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
+        save(fig, d_dir / "frc.png")
+        diagram_figure(d_dir, model, p, h)
+        return
+    ax.legend(handles=h_main + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14),
               ncol=3, frameon=False)
     save(fig, d_dir / "frc.png")
 

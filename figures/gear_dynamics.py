@@ -6,6 +6,10 @@ Writes into DIR:
                     (fold o, period doubling s, Neimark-Sacker D), the contact class along
                     each curve as a thin band under the panel (drive-flank loss orange, back-flank
                     impact red), ISO 6336-1 method B's K_v dotted where iso_kv.csv exists;
+                    with bifurcation_diagram.csv (the file's bifurcation_diagram key) one more
+                    panel per torque whose period-1 branch has an unstable stretch: the Poincare
+                    DTE (once per mesh period) over the HB branch at the same phase (poincare.py);
+  bifurcation_diagram.png  the diagram of every torque, sweep up (left) and down (right);
   campbell.png      mesh orders 1..4 against speed with the closed-contact natural frequencies;
   time_history.png  DTE and flank forces over two mesh periods at one impact / loss point;
   dte_spectrum.png  the DTE per mesh order at three speeds, per torque.
@@ -16,6 +20,7 @@ from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
 from style import CONTACT_COLOURS, plot_branch, read_csv, save, torque_colour
+from poincare import draw_hb_section, draw_poincare
 
 # The drive flank opening is the mesh's intermittent contact (the rug colour of every chapter).
 CONTACT_COLOUR = {"drive_loss": CONTACT_COLOURS["intermittent"], "back_impact": CONTACT_COLOURS["back_impact"],
@@ -49,8 +54,31 @@ def contact_rugs(ax, torques, frc):
     ax.set_ylim(-(len(torques) * 1.25 + 0.3) * h, top)
 
 
+def torque_rows(d, i):
+    """The rows of torque i (0-based) of a bifurcation_diagram*.csv, as a table of their own."""
+    keep = [k for k in range(len(d["torque_index"])) if int(d["torque_index"][k]) == i + 1]
+    return {c: [v[k] for k in keep] for c, v in d.items()}
+
+
+def diagram_panel(ax, p, h, sweeps, title):
+    handles = draw_hb_section(ax, h, "speed_rpm", "dte_um") + draw_poincare(ax, p, "speed_rpm", "dte_um",
+                                                                             sweeps=sweeps)
+    ax.set_ylabel("DTE at phase 0 of each\nmesh period [um]")
+    ax.set_title(title, fontsize=8)
+    return handles
+
+
+def read_diagram(d_dir):
+    """(diagram, HB section) of the run, or None without a bifurcation diagram."""
+    if not (d_dir / "bifurcation_diagram.csv").exists() or not (d_dir / "bifurcation_diagram_hb.csv").exists():
+        return None
+    return read_csv(d_dir / "bifurcation_diagram.csv"), read_csv(d_dir / "bifurcation_diagram_hb.csv")
+
+
 def response_figure(d_dir, params, kn, torques, frc, bif):
-    fig, axes = plt.subplots(2, 1, figsize=(9.6, 7.4), sharex=True)
+    diagram = read_diagram(d_dir)
+    unstable = [i for i, d in enumerate(frc) if diagram and any(int(s) == 0 for s in d["stable"])]
+    fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
     for ax, y, label in ((axes[0], "dte_rms_um", "DTE RMS (oscillating part) [um]"),
                          (axes[1], "dynamic_factor", "dynamic factor K_v = max |mesh force| / F0")):
@@ -67,7 +95,13 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
         ax.set_ylim(bottom=0)
         contact_rugs(ax, torques, frc)
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
-    axes[1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
+    extra = {}
+    for ax, i in zip(axes[2:], unstable):
+        for hd in diagram_panel(ax, torque_rows(diagram[0], i), torque_rows(diagram[1], i), ("up", "down"),
+                                "%s: bifurcation diagram by time integration (sweeps up and down)"
+                                % torque_label(torques[i])):
+            extra.setdefault(hd.get_label(), hd)
+    axes[-1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
     handles = [Line2D([], [], color=torque_colour(T, torques), label=torque_label(T)) for T in torques]
     handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
                 Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
@@ -81,11 +115,34 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
                               % (kn["iso_quality_grade"], kn["iso_tip_relief_um"],
                                  " (running-in: no relief)" if kn["iso_tip_relief_from_running_in"] else "")))
     axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+    if extra:
+        axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
     dyn = params.get("dynamics", {})
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
         params.get("name", "gear pair"), dyn.get("model", "one_dof"), dyn.get("mesh", "constant"),
         dyn.get("zeta", 0.08), dyn.get("harmonics", 5), kn["normal_backlash_m"] * 1e6), fontsize=8)
     save(fig, d_dir / "response.png")
+
+
+def diagram_figure(d_dir, params, torques, diagram):
+    """bifurcation_diagram.png: one row per torque, sweep up (left) and down (right)."""
+    fig, grid = plt.subplots(len(torques), 2, figsize=(12.0, 3.4 * len(torques) + 1.2), sharex=True, sharey="row",
+                             squeeze=False)
+    labels = {}
+    for i, T in enumerate(torques):
+        p, h = torque_rows(diagram[0], i), torque_rows(diagram[1], i)
+        for ax, sweep in zip(grid[i], ("up", "down")):
+            for hd in diagram_panel(ax, p, h, (sweep,), "%s, sweep %s" % (torque_label(T), sweep)):
+                labels.setdefault(hd.get_label(), hd)
+    for ax in grid[-1]:
+        ax.set_xlabel("speed of gear 1 n1 [rpm]")
+    fig.suptitle("%s: bifurcation diagram by time integration\n(each speed starts from the previous speed's "
+                 "final state; the DTE once per mesh period, at phase 0)" % params.get("name", "gear pair"),
+                 fontsize=9)
+    fig.legend(handles=list(labels.values()), fontsize=7, loc="lower center", ncol=3, frameon=False)
+    fig.tight_layout(rect=(0, 0.09, 1, 0.97))
+    fig.savefig(d_dir / "bifurcation_diagram.png")
+    plt.close(fig)
 
 
 def campbell_figure(d_dir, params, kn, torques, frc):
@@ -166,6 +223,9 @@ def draw(d_dir, params, kn, torques):
         b.setdefault("type", [])
         b.setdefault("omega", [])
     response_figure(d_dir, params, kn, torques, frc, bif)
+    diagram = read_diagram(d_dir)
+    if diagram:
+        diagram_figure(d_dir, params, torques, diagram)
     campbell_figure(d_dir, params, kn, torques, frc)
     time_history_figure(d_dir, params, kn)
     spectrum_figure(d_dir, params, torques)

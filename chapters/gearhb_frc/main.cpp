@@ -20,11 +20,13 @@
 #include <tuple>
 #include <vector>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/model_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
 
@@ -49,6 +51,7 @@ class FrequencyResponseFromFile {
   void read_model();
   void natural_frequencies(Run& run) const;
   void frequency_response(Run& run) const;
+  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void draw(Run& run) const;
 };
 
@@ -163,7 +166,25 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
     key.add(std::string("x_min_") + name, r.x_min, "m");
     key.add(std::string("stable_") + name, st ? 1.0 : 0.0, "-");
   }
+  if (model_.diagram.on) bifurcation_diagram(run, hb, c);
+}
 
+// Step 3b (with the file's bifurcation_diagram key): the diagram by time integration over the
+// same range, up then down, from the HB orbit at the lowest frequency (bifurcation_diagram.csv:
+// omega, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov; and
+// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath).
+void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const double lo = std::min(model_.omega_from, model_.omega_to), hi = std::max(model_.omega_from, model_.omega_to);
+  const BifurcationDiagram d = diagram_of_curve(run, hb, c, lo, hi, model_.diagram.options, "bifurcation_diagram", "");
+  auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
+  Table t(bifurcation_columns({"omega"}, "x"));
+  add_bifurcation_rows(t, d, model_.output, 1.0, lead);
+  run.write("bifurcation_diagram.csv", t);
+  Table h(hb_section_columns({"omega"}, "x"));
+  add_hb_section_rows(h, hb, c, d, model_.output, 1.0, lead);
+  run.write("bifurcation_diagram_hb.csv", h);
+  diagram_key_numbers(run.key_numbers(), d, "");
+  run.say(model_.name + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
 }
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
@@ -178,7 +199,8 @@ int main(int argc, char** argv) {
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
               "Writes DIR/frc.csv, bifurcations.csv, modes.csv, key_numbers.json, params.json (the resolved model),\n"
-              "timings.csv (wall time per step) and frc.png.\n\n" +
+              "timings.csv (wall time per step) and frc.png; with the bifurcation_diagram key also\n"
+              "bifurcation_diagram.csv and bifurcation_diagram.png.\n\n" +
                   model_file_help());
   FrequencyResponseFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -49,6 +49,7 @@
 #include <string>
 
 #include "gearhb/app/case_table.hpp"
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/gear_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
@@ -147,6 +148,8 @@ class GearPairFromFile {
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
+  void bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r, Table& t,
+                           Table& hb_section) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
@@ -424,6 +427,8 @@ void GearPairFromFile::dynamics(Run& run) const {
   Table spectrum({"torque_index", "f_mesh_hz", "order", "amplitude_um"});
   Table history({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
   double history_kv = 0.0;
+  const std::vector<std::string> lead{"torque_index", "torque_Nm", "f_mesh_hz", "speed_rpm"};
+  Table diagram(bifurcation_columns(lead, "dte_um")), diagram_hb(hb_section_columns(lead, "dte_um"));
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
     const Response r = response(run, i);
     const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
@@ -431,6 +436,7 @@ void GearPairFromFile::dynamics(Run& run) const {
     response_key_numbers(run, i, r);
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
+    if (file_.diagram.on) bifurcation_diagram(run, i, hb, r, diagram, diagram_hb);
     const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
     for (std::size_t k = 0; k < f.size(); ++k)
       modes.add_row({long(i + 1), file_.torques[i], long(k + 1), f[k], speed_rpm(2.0 * M_PI * f[k])});
@@ -438,6 +444,29 @@ void GearPairFromFile::dynamics(Run& run) const {
   run.write("modes.csv", modes);
   run.write("dte_spectrum.csv", spectrum);
   if (history.rows() > 0) run.write("time_history.csv", history);
+  if (file_.diagram.on) {
+    run.write("bifurcation_diagram.csv", diagram);
+    run.write("bifurcation_diagram_hb.csv", diagram_hb);
+  }
+}
+
+// With the file's bifurcation_diagram key: the diagram by time integration over the speed
+// range, up then down, from the HB orbit at the lowest speed (rows of bifurcation_diagram.csv:
+// the DTE at phase 0 of each mesh period, um; bifurcation_diagram_hb.csv: the HB branch's).
+void GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+                                           Table& t, Table& hb_section) const {
+  const std::string n = std::to_string(i + 1);
+  const double lo = 2.0 * M_PI * file_.dynamics.f_mesh_from, hi = 2.0 * M_PI * file_.dynamics.f_mesh_to;
+  const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, file_.diagram.options,
+                                                "bifurcation_diagram_" + n, torque_label(i) + ": ");
+  auto lead = [&](double w) {
+    return std::vector<Table::Cell>{long(i + 1), file_.torques[i], w / (2.0 * M_PI), speed_rpm(w)};
+  };
+  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
+  add_bifurcation_rows(t, d, q, 1e6, lead);
+  add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
+  diagram_key_numbers(run.key_numbers(), d, "_" + n);
+  run.say(torque_label(i) + ": " + diagram_summary(d, [&](double w) { return speed_rpm(w); }, "rpm"));
 }
 
 // Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the

@@ -44,6 +44,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/gears/dte_model.hpp"
 #include "gearhb/gears/fe_tooth_contact.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
@@ -99,6 +100,7 @@ struct GearFile {
   double harris_from = 0, harris_to = 0;   // [N m]
   int harris_points = 0;
   GearDynamicsInput dynamics;
+  BifurcationDiagramInput diagram;  // bifurcation_diagram (app/bifurcation_input.hpp): off if absent
   nlohmann::json resolved;         // the file after overrides (params.json)
 };
 

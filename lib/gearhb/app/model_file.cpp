@@ -177,7 +177,7 @@ ModelFile read_model_file(const std::string& path,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "mass", "stiffness", "damping", "rayleigh", "contacts", "forcing", "harmonics",
-                          "samples", "omega", "output", "solver"});
+                          "samples", "omega", "output", "solver", "bifurcation_diagram"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   for (const char* k : {"mass", "stiffness", "harmonics", "omega", "output"})
     if (!j.contains(k)) fail(path, k, "is missing");
@@ -192,6 +192,7 @@ ModelFile read_model_file(const std::string& path,
   m.system = read_system(j, path, n);
   read_settings(j, path, n, m);
   m.contacts = read_contacts(j, path, n, m.harmonics);
+  m.diagram = read_bifurcation_diagram(j, path);
   return m;
 }
 
@@ -220,7 +221,8 @@ std::string model_file_help() {
          "  omega.from, omega.to  frequency range [rad/s], swept from 'from' to 'to'\n"
          "  output.direction      n numbers: the plotted coordinate q'x\n"
          "  solver.exact_contact  flag (true | false, or 1 | 0): exact projection of the contact law (default), else sampled AFT\n"
-         "  solver.ds_max         largest arc-length step (default 0.02)\n"
+         "  solver.ds_max         largest arc-length step (default 0.02)\n" +
+         bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"
          "  unknowns: densely when the contacts touch every DOF (1 DOF: about 0.15 s a point at H = 255,\n"

@@ -16,7 +16,8 @@
 //     "samples":   0,                                     AFT samples (0 = 4 (2H+1))
 //     "omega":     {"from": 0.8, "to": 0.5},              [rad/s], either direction
 //     "output":    {"direction": [1, 0]},                 the plotted coordinate q' x
-//     "solver":    {"exact_contact": 1, "ds_max": 0.02}
+//     "solver":    {"exact_contact": 1, "ds_max": 0.02},
+//     "bifurcation_diagram": {"speeds": 200}               optional (app/bifurcation_input.hpp)
 //   }
 //
 // Contact law of the library: F = max(kc (g + direction' x), 0); gap g < 0 a
@@ -37,6 +38,7 @@
 #include <Eigen/Dense>
 #include <nlohmann/json.hpp>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/json_file.hpp"   // read_json_file, max_json_depth
 
 #include "gearhb/hb/harmonic_balance.hpp"
@@ -53,6 +55,7 @@ struct ModelFile {
   Eigen::VectorXd output;                    // the plotted coordinate
   bool exact_contact = true;
   double ds_max = 0.02;
+  BifurcationDiagramInput diagram;           // the bifurcation diagram by time integration (off if absent)
   nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
 
   HarmonicBalance harmonic_balance() const;

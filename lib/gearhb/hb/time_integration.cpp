@@ -283,6 +283,25 @@ std::vector<double> phase_state(const Eigen::VectorXd& x0, const Eigen::VectorXd
   return y;
 }
 
+// One integration of the state (no variational equations) from (x0, v0) at phase 0, forcing
+// period after period: GSL errors returned, the driver at its first step P / 1000.
+struct PhaseIntegration {
+  static constexpr double P = 2.0 * M_PI;   // one forcing period in theta
+  const GslErrorsReturned gsl_errors;
+  OdeContext ctx;
+  Driver drv;
+  std::vector<double> y;
+  double theta = 0.0;
+  PhaseIntegration(const TimeIntegrator* ti, const HarmonicBalance& hb, const Eigen::MatrixXd& Minv,
+                   const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, const TimeIntegrationOptions& opt)
+      : ctx{ti, &hb, omega, hb.dofs(), false, Minv},
+        drv(ctx, std::size_t(2 * hb.dofs()), P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper),
+        y(phase_state(x0, v0, omega)) {}
+  void advance(double theta1) { drv.advance(theta, theta1, y.data(), ctx.omega); }
+  Eigen::Map<const Eigen::VectorXd> x() const { return {y.data(), ctx.n}; }
+  Eigen::VectorXd v() const { return ctx.omega * Eigen::Map<const Eigen::VectorXd>(y.data() + ctx.n, ctx.n); }
+};
+
 }  // namespace
 
 Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
@@ -333,21 +352,36 @@ SteadyState TimeIntegrator::steady_state(const Eigen::VectorXd& x0, const Eigen:
 
 Eigen::MatrixXd TimeIntegrator::sample(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                                        int transient, int periods, const TimeIntegrationOptions& opt) const {
-  const int n = hb_.dofs(), N = opt.samples_per_period;
-  const GslErrorsReturned gsl_errors;
-  OdeContext ctx{this, &hb_, omega, n, false, Minv_};
-  const double P = 2.0 * M_PI;   // one forcing period in theta
-  Driver drv(ctx, 2 * n, P / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol, opt.stepper);
-  std::vector<double> y = phase_state(x0, v0, omega);
-  double theta = 0.0;
-  for (int p = 1; p <= transient; ++p) drv.advance(theta, p * P, y.data(), omega);
-  Eigen::MatrixXd xs(Eigen::Index(periods) * N, n);
-  const double theta0 = theta;
+  const int N = opt.samples_per_period;
+  PhaseIntegration in(this, hb_, Minv_, x0, v0, omega, opt);
+  for (int p = 1; p <= transient; ++p) in.advance(p * in.P);
+  Eigen::MatrixXd xs(Eigen::Index(periods) * N, hb_.dofs());
+  const double theta0 = in.theta;
   for (Eigen::Index j = 0; j < xs.rows(); ++j) {
-    drv.advance(theta, theta0 + P * double(j) / N, y.data(), omega);
-    for (int i = 0; i < n; ++i) xs(j, i) = y[i];
+    in.advance(theta0 + in.P * double(j) / N);
+    xs.row(j) = in.x().transpose();
   }
   return xs;
+}
+
+void TimeIntegrator::poincare(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int transient,
+                              int periods, const TimeIntegrationOptions& opt, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs,
+                              const std::function<bool(const Eigen::VectorXd&, const Eigen::VectorXd&)>& settled,
+                              int* transient_used) const {
+  PhaseIntegration in(this, hb_, Minv_, x0, v0, omega, opt);
+  int p = 0;
+  while (p < transient) {
+    in.advance(++p * in.P);
+    if (settled && settled(in.x(), in.v())) break;
+  }
+  if (transient_used) *transient_used = p;
+  xs.resize(periods + 1, hb_.dofs());
+  vs.resize(periods + 1, hb_.dofs());
+  for (int j = 0; j <= periods; ++j) {
+    if (j > 0) in.advance((p + j) * in.P);
+    xs.row(j) = in.x().transpose();
+    vs.row(j) = in.v().transpose();
+  }
 }
 
 namespace {

@@ -70,6 +70,16 @@ class TimeIntegrator {
   // (period doubling, quasi-periodic), where steady_state's periodicity test fails.
   Eigen::MatrixXd sample(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int transient,
                          int periods, const TimeIntegrationOptions& opt) const;
+  // The Poincare section theta = 0 (mod 2 pi): integrate from (x0, v0) at phase 0 over
+  // `transient` forcing periods, then over `periods` more; row j of xs, vs is the state
+  // (x, v) after transient + j periods, j = 0..periods (periods + 1 rows, the last the final
+  // state). If `settled` is given, the transient ends early, after at least 1 period, at the
+  // first period whose state settled(x, v) accepts (called with the state after every
+  // transient period); `transient_used` (if not null) receives the periods discarded.
+  void poincare(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int transient, int periods,
+                const TimeIntegrationOptions& opt, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs,
+                const std::function<bool(const Eigen::VectorXd&, const Eigen::VectorXd&)>& settled = {},
+                int* transient_used = nullptr) const;
   double max_over_period(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
                          const Eigen::VectorXd& q, const TimeIntegrationOptions& opt) const;
 

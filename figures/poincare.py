@@ -1,0 +1,57 @@
+"""The bifurcation diagram by time integration (issue 34 section 3), shared by frc.py and
+gearhb_gear.py: the Poincare points (the coordinate once per forcing period, at phase 0)
+of bifurcation_diagram.csv over the HB branch at the same phase (bifurcation_diagram_hb.csv,
+solid where stable, dashed where unstable).
+
+One convention: the motion's colour (MOTION_COLOURS), the sweep's marker (up: dot, down:
+small x); a period-n speed draws its n points, any other speed its whole cloud."""
+from matplotlib.lines import Line2D
+
+from style import plot_branch
+
+MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C2", "chaotic": "C3",
+                  "unsettled": "C1"}
+MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n points)",
+                 "quasi_periodic": "quasi-periodic (|Lyapunov| < 0.02, no attracting cycle)", "chaotic": "chaotic (Lyapunov > 0)",
+                 "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
+SWEEP_MARKERS = {"up": ".", "down": "x"}
+ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
+
+
+def motion_key(motion, n):
+    if motion == "periodic":
+        return "periodic_1" if int(n) == 1 else "periodic_n"
+    return motion
+
+
+def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
+    """The Poincare points of the table d (columns x, y, sweep, motion, n), y times scale;
+    keep(i) (optional) selects rows. Returns the legend handles of what was drawn."""
+    drawn = set()
+    for sweep in sweeps:
+        groups = {}
+        for i in range(len(d[x])):
+            if d["sweep"][i] != sweep or (keep and not keep(i)):
+                continue
+            groups.setdefault(motion_key(d["motion"][i], d["n"][i]), []).append(i)
+        for key, idx in groups.items():
+            ax.plot([d[x][i] for i in idx], [d[y][i] * scale for i in idx], ls="none",
+                    marker=SWEEP_MARKERS[sweep], ms=2.5 if sweep == "up" else 2.2, mew=0.6,
+                    color=MOTION_COLOURS[key], zorder=ZORDER[key])
+            drawn.add((key, sweep))
+    handles = [Line2D([], [], ls="none", marker="s", ms=5, color=MOTION_COLOURS[k], label=MOTION_LABELS[k])
+               for k in MOTION_COLOURS if any(k == key for key, _ in drawn)]
+    handles += [Line2D([], [], ls="none", marker=SWEEP_MARKERS[s], color="0.3",
+                       label="time integration, sweep %s" % s) for s in sweeps if any(s == sw for _, sw in drawn)]
+    return handles
+
+
+def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase"):
+    """The HB branch's value at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed unstable."""
+    if "point" in h:   # the branch's own points (the rows at the diagram's speeds are for checks)
+        h = {c: [v[i] for i in range(len(v)) if h["point"][i] == "branch"] for c, v in h.items()}
+    if not h[x]:
+        return []
+    plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb")
+    return [Line2D([], [], color=colour, ls="-", label=label + " (stable)"),
+            Line2D([], [], color=colour, ls="--", label=label + " (unstable)")]

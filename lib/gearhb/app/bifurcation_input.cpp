@@ -1,0 +1,175 @@
+#include "gearhb/app/bifurcation_input.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "gearhb/app/json_file.hpp"
+#include "gearhb/core/newton.hpp"
+#include "gearhb/hb/time_integration.hpp"
+
+namespace gearhb {
+
+BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, const std::string& file) {
+  BifurcationDiagramInput in;
+  if (!root.is_object() || !root.contains("bifurcation_diagram")) return in;
+  const nlohmann::json& j = root["bifurcation_diagram"];
+  const std::string where = "bifurcation_diagram";
+  if (!j.is_object()) fail_key(file, where, "must be an object of options ({} for the defaults)");
+  only_keys(j, file, where,
+            {"speeds", "transient_periods", "periods", "max_period", "period_tol", "lyapunov_periods",
+             "lyapunov_threshold"});
+  in.on = true;
+  BifurcationDiagramOptions& o = in.options;
+  auto whole = [&](const char* key, int& v, int lo, int hi) {   // the ranges of check_bifurcation_options
+    if (j.contains(key)) v = json_whole(j[key], file, where + "." + key, lo, hi);
+  };
+  auto number = [&](const char* key, double& v) {
+    if (j.contains(key)) v = json_number(j[key], file, where + "." + key);
+  };
+  whole("speeds", o.speeds, 2, 100000);
+  whole("transient_periods", o.transient_periods, 0, 1000000);
+  whole("periods", o.periods, 2, 100000);
+  whole("max_period", o.max_period, 1, 64);
+  number("period_tol", o.period_tol);
+  whole("lyapunov_periods", o.lyapunov_periods, 10, 1000000);
+  number("lyapunov_threshold", o.lyapunov_threshold);
+  std::string why;
+  const std::string bad = check_bifurcation_options(o, &why);
+  if (!bad.empty()) fail_key(file, where + "." + bad, why);
+  return in;
+}
+
+std::string bifurcation_diagram_help() {
+  const BifurcationDiagramOptions d;
+  auto num = [](double v) {
+    char s[32];
+    std::snprintf(s, sizeof s, "%g", v);
+    return std::string(s);
+  };
+  return "  bifurcation_diagram   optional (absent: not computed): the diagram by time integration, an object of\n"
+         "                        speeds (" + std::to_string(d.speeds) + " per sweep, up then down), transient_periods (" +
+         std::to_string(d.transient_periods) + ", at most), periods (" + std::to_string(d.periods) +
+         " Poincare points), max_period (" + std::to_string(d.max_period) + "),\n"
+         "                        period_tol (" + num(d.period_tol) + " of the typical displacement), lyapunov_periods (" +
+         std::to_string(d.lyapunov_periods) + "), lyapunov_threshold (" + num(d.lyapunov_threshold) +
+         " per forcing period);\n"
+         "                        writes bifurcation_diagram.csv and bifurcation_diagram.png\n";
+}
+
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
+                         const Eigen::VectorXd& q, double scale,
+                         const std::function<std::vector<Table::Cell>(double)>& lead) {
+  const auto& P = c.branch.points;
+  auto add = [&](double w, const Eigen::VectorXd& X, bool stable, const char* point) {
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, X, w, x0, v0);
+    std::vector<Table::Cell> row = lead(w);
+    row.emplace_back(scale * q.dot(x0));
+    row.emplace_back(long(stable ? 1 : 0));
+    row.emplace_back(std::string(point));
+    t.add_row(std::move(row));
+  };
+  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
+  // At the diagram's speeds: the orbit of every segment stable at both ends that brackets it,
+  // solved by Newton at the speed from the segment's end.
+  for (const DiagramPoint& p : d.points) {
+    if (!p.up) continue;
+    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
+      if ((P[i - 1].omega - p.omega) * (P[i].omega - p.omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+      Eigen::VectorXd X = P[i].X;
+      if (newton_solve(hb, X, p.omega, c.scaling).converged) add(p.omega, X, true, "speed");
+    }
+  }
+}
+
+std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value) {
+  lead.push_back(value);
+  lead.emplace_back("stable");
+  lead.emplace_back("point");
+  return lead;
+}
+
+BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
+                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label) {
+  o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  const auto& P = c.branch.points;
+  const auto lowest = std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; });
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(hb, lowest->X, lowest->omega, x0, v0);
+  return run.timed(step, [&] {
+    return bifurcation_diagram(hb, lo, hi, x0, v0, o, [&](const DiagramPoint& p, int k) {
+      run.progress(label + "bifurcation diagram, sweep " + (p.up ? "up, " : "down, ") + to_string(p.motion), long(k),
+                   p.omega, (hi - lo) / (o.speeds - 1));
+    });
+  });
+}
+
+void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std::string& suffix) {
+  int max_period = 0;
+  for (Motion m : {Motion::periodic, Motion::quasi_periodic, Motion::chaotic, Motion::unsettled, Motion::failed}) {
+    long count = 0;
+    for (const DiagramPoint& p : d.points) {
+      count += p.motion == m ? 1 : 0;
+      max_period = std::max(max_period, p.n);
+    }
+    key.add(std::string("diagram_") + to_string(m) + "_speeds" + suffix, double(count), "-");
+  }
+  key.add("diagram_max_period" + suffix, double(max_period), "-");
+}
+
+std::string diagram_summary(const BifurcationDiagram& d, const std::function<double(double)>& speed,
+                            const std::string& unit) {
+  long count[5] = {0, 0, 0, 0, 0}, period1 = 0;
+  int max_period = 0;
+  double lo[2] = {INFINITY, INFINITY}, hi[2] = {-INFINITY, -INFINITY};
+  for (const DiagramPoint& p : d.points) {
+    ++count[int(p.motion)];
+    max_period = std::max(max_period, p.n);
+    period1 += p.n == 1 ? 1 : 0;
+    if (p.n != 1) {
+      const double s = speed(p.omega);
+      lo[p.up ? 0 : 1] = std::min(lo[p.up ? 0 : 1], s), hi[p.up ? 0 : 1] = std::max(hi[p.up ? 0 : 1], s);
+    }
+  }
+  char line[400];
+  std::snprintf(line, sizeof line,
+                "bifurcation diagram, %zu speeds x 2 sweeps: period 1 at %ld, period n >= 2 at %ld (largest n %d), "
+                "quasi-periodic %ld, chaotic %ld, unsettled %ld, failed %ld",
+                d.points.size() / 2, period1, count[int(Motion::periodic)] - period1, max_period,
+                count[int(Motion::quasi_periodic)], count[int(Motion::chaotic)], count[int(Motion::unsettled)],
+                count[int(Motion::failed)]);
+  std::string text = line;
+  for (int k = 0; k < 2; ++k)
+    if (std::isfinite(lo[k])) {
+      std::snprintf(line, sizeof line, "; not period 1 from %.4g to %.4g %s (sweep %s)", lo[k], hi[k], unit.c_str(),
+                    k == 0 ? "up" : "down");
+      text += line;
+    }
+  return text;
+}
+
+std::vector<std::string> bifurcation_columns(std::vector<std::string> lead, const std::string& value) {
+  for (const char* c : {"sweep"}) lead.emplace_back(c);
+  lead.push_back(value);
+  for (const char* c : {"motion", "n", "lyapunov"}) lead.emplace_back(c);
+  return lead;
+}
+
+void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
+                          const std::function<std::vector<Table::Cell>(double)>& lead) {
+  for (const DiagramPoint& p : d.points) {
+    const Eigen::Index rows = p.motion == Motion::periodic ? p.n : std::max<Eigen::Index>(p.x.rows() - 1, 0);
+    for (Eigen::Index j = 0; j < rows; ++j) {
+      std::vector<Table::Cell> row = lead(p.omega);
+      row.emplace_back(std::string(p.up ? "up" : "down"));
+      row.emplace_back(scale * q.dot(p.x.row(j).transpose()));
+      row.emplace_back(std::string(to_string(p.motion)));
+      row.emplace_back(long(p.n));
+      row.push_back(cell(std::isfinite(p.lyapunov), p.lyapunov));
+      t.add_row(std::move(row));
+    }
+  }
+}
+
+}  // namespace gearhb

@@ -1,0 +1,228 @@
+#include "gearhb/hb/bifurcation_diagram.hpp"
+
+#include <cmath>
+#include <deque>
+#include <stdexcept>
+
+namespace gearhb {
+
+const char* to_string(Motion m) {
+  switch (m) {
+    case Motion::periodic: return "periodic";
+    case Motion::quasi_periodic: return "quasi_periodic";
+    case Motion::chaotic: return "chaotic";
+    case Motion::unsettled: return "unsettled";
+    case Motion::failed: break;
+  }
+  return "failed";
+}
+
+std::string check_bifurcation_options(const BifurcationDiagramOptions& o, std::string* why) {
+  auto bad = [&](const char* key, const std::string& text) {
+    if (why) *why = text;
+    return std::string(key);
+  };
+  if (o.speeds < 2 || o.speeds > 100000) return bad("speeds", "must be a whole number in [2, 100000]");
+  if (o.transient_periods < 0 || o.transient_periods > 1000000)
+    return bad("transient_periods", "must be a whole number in [0, 1000000]");
+  if (o.max_period < 1 || o.max_period > 64) return bad("max_period", "must be a whole number in [1, 64]");
+  if (o.periods < 2 * o.max_period || o.periods > 100000)
+    return bad("periods", "must be a whole number in [2 max_period, 100000] (a period must repeat at least twice)");
+  if (!(o.period_tol >= 1e-14 && o.period_tol <= 0.1)) return bad("period_tol", "must be in [1e-14, 0.1]");
+  if (o.lyapunov_periods < 10 || o.lyapunov_periods > 1000000)
+    return bad("lyapunov_periods", "must be a whole number in [10, 1000000]");
+  if (!(o.lyapunov_threshold > 0.0 && o.lyapunov_threshold <= 1.0))
+    return bad("lyapunov_threshold", "must be in (0, 1]");
+  return "";
+}
+
+namespace {
+// The Poincare state S = (x, v / omega) (both halves displacements).
+Eigen::VectorXd section_state(const Eigen::VectorXd& x, const Eigen::VectorXd& v, double omega) {
+  Eigen::VectorXd s(2 * x.size());
+  s << x, v / omega;
+  return s;
+}
+}  // namespace
+
+int poincare_period(const Eigen::MatrixXd& xs, const Eigen::MatrixXd& vs, double omega, int max_period, double tol) {
+  const Eigen::Index rows = xs.rows();
+  for (int n = 1; n <= max_period && n < rows; ++n) {
+    bool repeats = true;
+    for (Eigen::Index j = 0; j + n < rows && repeats; ++j) {
+      const double dx = (xs.row(j + n) - xs.row(j)).cwiseAbs().maxCoeff();
+      const double dv = (vs.row(j + n) - vs.row(j)).cwiseAbs().maxCoeff() / omega;
+      repeats = std::max(dx, dv) <= tol;
+    }
+    if (repeats) return n;
+  }
+  return 0;
+}
+
+double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                 double omega, int periods, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end,
+                                 Eigen::VectorXd* v_end) {
+  const Eigen::Index n = x0.size();
+  Eigen::VectorXd x = x0, v = v0, xT, vT;
+  Eigen::MatrixXd Phi;
+  // The tangent vector in (x, v / omega), every component alike at the start.
+  Eigen::VectorXd w = Eigen::VectorXd::Ones(2 * n).normalized();
+  double sum = 0.0;
+  for (int k = 0; k < periods; ++k) {
+    ti.period_map(x, v, omega, opt, xT, vT, Phi);
+    Eigen::VectorXd wv = w;   // to (x, v), through Phi, back to (x, v / omega)
+    wv.tail(n) *= omega;
+    Eigen::VectorXd u = Phi * wv;
+    u.tail(n) /= omega;
+    const double g = u.norm();
+    if (!(g > 0.0) || !std::isfinite(g)) throw std::runtime_error("Lyapunov exponent: the tangent vector vanished or diverged");
+    sum += std::log(g);
+    w = u / g;
+    x = xT, v = vT;
+  }
+  if (x_end) *x_end = x;
+  if (v_end) *v_end = v;
+  return sum / periods;
+}
+
+namespace {
+// The states after 1..periods forcing periods from (x, v) (rows of xs, vs) and the product of
+// the period maps' monodromy matrices.
+void chain(const TimeIntegrator& ti, double omega, int periods, const TimeIntegrationOptions& opt, Eigen::VectorXd x,
+           Eigen::VectorXd v, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs, Eigen::MatrixXd& M) {
+  xs.resize(periods, x.size());
+  vs.resize(periods, x.size());
+  M = Eigen::MatrixXd::Identity(2 * x.size(), 2 * x.size());
+  for (int k = 0; k < periods; ++k) {
+    Eigen::VectorXd xT, vT;
+    Eigen::MatrixXd Phi;
+    ti.period_map(x, v, omega, opt, xT, vT, Phi);
+    M = Phi * M;
+    x = xT, v = vT;
+    xs.row(k) = x.transpose();
+    vs.row(k) = v.transpose();
+  }
+}
+}  // namespace
+
+int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eigen::VectorXd& x_end,
+                     const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
+                     Eigen::MatrixXd& cx, Eigen::MatrixXd& cv) {
+  const Eigen::Index rows = p.x.rows(), d = x_end.size();
+  if (rows < 2) return 0;
+  const double w = p.omega;
+  auto state = [&](const Eigen::VectorXd& x, const Eigen::VectorXd& v) {
+    Eigen::VectorXd s(2 * d);
+    s << x, v / w;
+    return s;
+  };
+  auto recorded = [&](Eigen::Index j) { return state(p.x.row(j).transpose(), p.v.row(j).transpose()); };
+  // The candidate period: the smallest repetition error at the end of the recording.
+  int n = 1;
+  double best = INFINITY;
+  for (int m = 1; m <= max_period && m < rows; ++m) {
+    const double r = (recorded(rows - 1) - recorded(rows - 1 - m)).cwiseAbs().maxCoeff();
+    if (r < best) best = r, n = m;
+  }
+  // Newton shooting on the n-period map from the last state, in (x, v).
+  Eigen::VectorXd S(2 * d), F(2 * d);
+  S << x_end, v_end;
+  Eigen::MatrixXd xs, vs, M;
+  bool converged = false;
+  for (int it = 0; it < 12 && !converged; ++it) {
+    chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);
+    F << xs.row(n - 1).transpose() - S.head(d), vs.row(n - 1).transpose() - S.tail(d);
+    converged = state(F.head(d), F.tail(d)).cwiseAbs().maxCoeff() <= 1e-2 * tol;
+    if (!converged) S -= (M - Eigen::MatrixXd::Identity(2 * d, 2 * d)).partialPivLu().solve(F);
+    if (!S.allFinite()) return 0;
+  }
+  if (!converged) return 0;
+  chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);   // the monodromy at the fixed point
+  if (M.eigenvalues().cwiseAbs().maxCoeff() >= 1.0) return 0;   // not attracting
+  const Eigen::VectorXd Sstar = state(S.head(d), S.tail(d));
+  if (!((state(x_end, v_end) - Sstar).cwiseAbs().maxCoeff() < (recorded(0) - Sstar).cwiseAbs().maxCoeff()))
+    return 0;   // the integration is not approaching it
+  // The least period: the first m dividing n after which the cycle repeats.
+  for (int m = 1; m < n; ++m)
+    if (n % m == 0 && (state(xs.row(m - 1).transpose(), vs.row(m - 1).transpose()) - Sstar).cwiseAbs().maxCoeff() <= tol) {
+      n = m;
+      break;
+    }
+  cx.resize(n, d);
+  cv.resize(n, d);
+  cx.row(0) = S.head(d).transpose();
+  cv.row(0) = S.tail(d).transpose();
+  for (int k = 1; k < n; ++k) cx.row(k) = xs.row(k - 1), cv.row(k) = vs.row(k - 1);
+  return n;
+}
+
+BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
+                                       const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                       const BifurcationDiagramOptions& opt,
+                                       const std::function<void(const DiagramPoint&, int)>& progress) {
+  std::string why;
+  const std::string key = check_bifurcation_options(opt, &why);
+  if (!key.empty()) throw std::invalid_argument("bifurcation diagram: " + key + " " + why);
+  if (!(omega_min > 0.0 && omega_max > omega_min)) throw std::invalid_argument("bifurcation diagram: needs 0 < omega_min < omega_max");
+  const TimeIntegrator ti(hb);
+  const double tol = opt.period_tol * opt.integration.x_scale;
+  BifurcationDiagram d;
+  Eigen::VectorXd x = x0, v = v0;
+  const int N = opt.speeds;
+  for (int s = 0; s < 2 * N; ++s) {
+    const bool up = s < N;
+    const int k = up ? s : 2 * N - 1 - s;
+    DiagramPoint p;
+    p.omega = omega_min + (omega_max - omega_min) * double(k) / double(N - 1);
+    p.up = up;
+    // The transient ends once the Poincare point repeats after n <= max_period periods within
+    // period_tol / 100: a period-1 orbit approached with a multiplier mu near -1 repeats after 2
+    // periods |mu^2 - 1| / |mu - 1| times more closely than after 1, so a transient ended at
+    // period_tol would be read as period 2; at period_tol / 100 it is not unless |mu| > 0.99.
+    std::deque<Eigen::VectorXd> last;
+    auto settled = [&](const Eigen::VectorXd& xk, const Eigen::VectorXd& vk) {
+      const Eigen::VectorXd S = section_state(xk, vk, p.omega);
+      bool repeats = false;
+      for (std::size_t j = 0; j < last.size() && !repeats; ++j)
+        repeats = (S - last[last.size() - 1 - j]).cwiseAbs().maxCoeff() <= 0.01 * tol;
+      last.push_back(S);
+      if (int(last.size()) > opt.max_period) last.pop_front();
+      return repeats;
+    };
+    try {
+      ti.poincare(x, v, p.omega, opt.transient_periods, opt.periods, opt.integration, p.x, p.v, settled, &p.transient);
+      x = p.x.bottomRows(1).transpose();
+      v = p.v.bottomRows(1).transpose();
+      p.n = poincare_period(p.x, p.v, p.omega, opt.max_period, tol);
+      if (p.n > 0) {
+        p.motion = Motion::periodic;
+      } else {
+        Eigen::VectorXd xe, ve;
+        p.lyapunov = largest_lyapunov_exponent(ti, x, v, p.omega, opt.lyapunov_periods, opt.integration, &xe, &ve);
+        x = xe, v = ve;
+        p.motion = p.lyapunov > opt.lyapunov_threshold    ? Motion::chaotic
+                   : p.lyapunov >= -opt.lyapunov_threshold ? Motion::quasi_periodic
+                                                           : Motion::unsettled;
+        if (p.motion != Motion::chaotic) {
+          Eigen::MatrixXd cx, cv;
+          const int n = attracting_cycle(ti, p, x, v, opt.max_period, tol, opt.integration, cx, cv);
+          if (n > 0) {
+            p.motion = Motion::periodic, p.n = n, p.by_shooting = true;
+            p.x = cx, p.v = cv;
+            x = cx.row(0).transpose(), v = cv.row(0).transpose();
+          }
+        }
+      }
+    } catch (const std::runtime_error& e) {   // this speed fails; the next starts from the last good state
+      p.motion = Motion::failed;
+      p.failure = e.what();
+      p.x.resize(0, x.size());
+      p.v.resize(0, x.size());
+    }
+    if (progress) progress(p, s);
+    d.points.push_back(std::move(p));
+  }
+  return d;
+}
+
+}  // namespace gearhb

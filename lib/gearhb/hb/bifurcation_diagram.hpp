@@ -1,0 +1,124 @@
+#pragma once
+// The bifurcation diagram by time integration (issue 34 §3): an independent view of the
+// model the harmonic balance solves. The forcing frequency omega steps over a grid of
+// `speeds` values, up from omega_min to omega_max, then down again; at each the equations
+// of the HarmonicBalance model are integrated (TimeIntegrator: GSL rk8pd, the contact
+// switches located exactly) from the previous speed's final state - continuation in time,
+// so up and down sweeps differ where attractors coexist - a transient is discarded and the
+// state at phase 0 of every forcing period (the Poincare section theta = 0 mod 2 pi) is
+// recorded over `periods` periods.
+//
+// Classification of each speed (classify_poincare, motion_of):
+//  - period-n: the smallest n <= max_period with |S_{j+n} - S_j| <= period_tol x_scale for
+//    every recorded pair (S = (x, v / omega), the max norm: both halves displacements);
+//  - otherwise by the largest Lyapunov exponent lambda (per forcing period, i.e. ln of the
+//    mean growth factor of a tangent vector over one period), from the variational
+//    equations TimeIntegrator::period_map integrates for Floquet shooting, over
+//    lyapunov_periods periods from the last recorded state: chaotic if lambda >
+//    lyapunov_threshold; quasi-periodic if |lambda| <= lyapunov_threshold (a torus has
+//    lambda = 0; a finite-time estimate scatters about it by O(1 / lyapunov_periods));
+//    "unsettled" if lambda < -lyapunov_threshold (an attracting orbit the classifier did not
+//    see repeat: a period above max_period or a transient longer than transient_periods);
+//  - a speed not chaotic by lambda is then tried as a slowly approached cycle (beside a
+//    period doubling or a fold a multiplier near the unit circle makes the approach take
+//    thousands of periods): Newton shooting on the n-period map from the last state, n the
+//    period with the smallest repetition error at the end of the recording (attracting_cycle).
+//    If it converges (to period_tol / 100), the cycle's multipliers lie inside the unit circle
+//    and the integration is approaching it, the speed is period-n (by_shooting; x, v then hold
+//    the cycle's n points, lambda stays as computed).
+// The library returns the states; only lib/gearhb/app writes them.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/time_integration.hpp"
+
+namespace gearhb {
+
+enum class Motion { periodic, quasi_periodic, chaotic, unsettled, failed };
+const char* to_string(Motion m);
+
+struct BifurcationDiagramOptions {
+  // Grid points of each sweep (up and down), uniform in omega, both ends included: 200
+  // resolves a period-doubling window 1 % of the range wide by two points.
+  int speeds = 200;
+  // Most forcing periods discarded at each speed before the recording. The transient ends
+  // earlier once the Poincare point repeats within period_tol / 100 after n <= max_period
+  // periods (bifurcation_diagram.cpp says why the factor)
+  // (the start is the previous speed's attractor, so a few tens of periods suffice off a
+  // jump); 400 lets a mode of damping ratio 0.03 at the forcing frequency decay by
+  // exp(-2 pi 0.03 400) ~ 1e-33 after a jump, and one of 0.005 by 1e-5.
+  int transient_periods = 400;
+  // Poincare points recorded per speed: 64 shows a period up to 8 repeating 8 times and a
+  // torus or a strange attractor as a cloud of 64 points.
+  int periods = 64;
+  // Largest period n recognised: 8 covers the period-doubling cascade to period 8 and the
+  // subharmonics of order up to 8 reported for the clearance oscillator (Kahraman & Singh 1990).
+  int max_period = 8;
+  // |S_{j+n} - S_j| / x_scale below which the Poincare points repeat: 1e-6 is 1e4 times the
+  // integration's accuracy over a period (rel_tol 1e-10) and small enough that a torus (whose
+  // points never repeat) or a slowly decaying transient is not taken for a period.
+  double period_tol = 1e-6;
+  // Periods of the variational integration for lambda: 200 puts the finite-time scatter of
+  // a torus' lambda (~ ln(growth spread) / periods) under lyapunov_threshold.
+  int lyapunov_periods = 200;
+  // lambda (per forcing period) above which the motion is chaotic: 0.02 (a tangent vector
+  // growing by e^4 = 55 over 200 periods); a stated, not derived, threshold.
+  double lyapunov_threshold = 0.02;
+  // The integration (tolerances; x_scale: the typical displacement, the unit of period_tol).
+  TimeIntegrationOptions integration;
+};
+
+struct DiagramPoint {
+  double omega = 0.0;
+  bool up = true;                  // the sweep: up (omega rising) or down
+  Motion motion = Motion::failed;
+  int n = 0;                       // the period (periodic), else 0
+  double lyapunov = NAN;           // per forcing period (computed if not periodic), else NaN
+  int transient = 0;               // periods discarded
+  bool by_shooting = false;        // periodic by attracting_cycle (a slow approach), not by repetition
+  Eigen::MatrixXd x, v;            // Poincare states: (periods + 1) x dofs
+  std::string failure;             // why, if motion == failed
+};
+
+struct BifurcationDiagram {
+  std::vector<DiagramPoint> points;   // the up sweep, then the down sweep
+};
+
+// The sweep up from (x0, v0) at phase 0 and omega_min, then down from the up sweep's end.
+// progress (optional) is called after every speed with the point and its index (0-based,
+// over both sweeps). Throws std::invalid_argument for options out of range
+// (check_bifurcation_options).
+BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
+                                       const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                       const BifurcationDiagramOptions& opt,
+                                       const std::function<void(const DiagramPoint&, int)>& progress = {});
+
+// The option out of range, by its key ("speeds", "transient_periods", "periods",
+// "max_period", "period_tol", "lyapunov_periods", "lyapunov_threshold"), and why; "" if none.
+std::string check_bifurcation_options(const BifurcationDiagramOptions& opt, std::string* why = nullptr);
+
+// The smallest n in 1..max_period with |S_{j+n} - S_j| <= tol for all recorded pairs (S = (x,
+// v / omega), rows of xs, vs; max norm), else 0.
+int poincare_period(const Eigen::MatrixXd& xs, const Eigen::MatrixXd& vs, double omega, int max_period, double tol);
+
+// The attracting cycle that the recorded Poincare states of p (and the later state x_end,
+// v_end) approach, by Newton shooting on the n-period map (see the top of this file): its
+// least period n, its n states in cx, cv (rows; the first the one nearest the end state); 0 if
+// there is none. tol: period_tol x_scale.
+int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eigen::VectorXd& x_end,
+                     const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
+                     Eigen::MatrixXd& cx, Eigen::MatrixXd& cv);
+
+// The largest Lyapunov exponent per forcing period of the orbit through (x0, v0) at phase 0:
+// (1 / periods) sum_k ln |Phi_k w_k| with w_k the tangent vector renormalised every period (in
+// (x, v / omega)), Phi_k the period map's monodromy. x_end, v_end (if not null) receive the
+// state after the periods.
+double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                 double omega, int periods, const TimeIntegrationOptions& opt,
+                                 Eigen::VectorXd* x_end = nullptr, Eigen::VectorXd* v_end = nullptr);
+
+}  // namespace gearhb
