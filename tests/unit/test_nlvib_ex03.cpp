@@ -143,7 +143,7 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
   const Table bt = bifurcation_table(c);
   EXPECT_EQ(bt.rows(), c.bifurcations.size());
   const std::string b = bt.to_csv();
-  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus,located,smooth");
+  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus,located,smooth,period,branch,starts_branch");
   EXPECT_NE(b.find("period_doubling"), std::string::npos);
   EXPECT_NE(b.find("neimark_sacker"), std::string::npos);
 }

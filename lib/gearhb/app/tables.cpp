@@ -61,7 +61,7 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
 }  // namespace
 
 Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
-                         const RowProgress& progress) {
+                         const RowProgress& progress, const BranchLabel& label) {
   const int n = hb.dofs();
   std::vector<std::string> columns = common_columns();
   std::vector<ResponseEvaluator> dof;
@@ -75,12 +75,15 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
     for (const char* what : {"_max_exact", "_min_exact", "_h1_exact"}) columns.push_back("q" + std::to_string(i + 1) + what);
   const std::size_t P = hb.contacts().size();
   for (std::size_t i = 0; i < P; ++i) columns.push_back("contact_" + std::to_string(i + 1));
+  columns.push_back("period");
+  columns.push_back("branch");
   const ResponseEvaluator ev(hb, output);
   Table t(columns);
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     if (progress) progress(p);
     const ExactPoint e = exact_point(hb, c, p, qs);
     std::vector<Table::Cell> row = common_row(ev, c, p, e, "");
+    row[0] = label.period * c.branch.points[p].omega;   // the forcing frequency
     for (int i = 0; i < n; ++i) {
       const auto q = dof[i].summarize(c.branch.points[p].X);
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
@@ -91,6 +94,7 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
     }
     const auto r = ev.summarize(c.branch.points[p].X);
     for (std::size_t i = 0; i < P; ++i) row.push_back(std::string(to_string(r.contact_states[i])));
+    row.insert(row.end(), {long(label.period), long(label.branch)});
     t.add_row(std::move(row));
   }
   return t;
@@ -122,11 +126,16 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
   return t;
 }
 
-Table bifurcation_table(const FrequencyCurve& c) {
-  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located", "smooth"});
-  for (const auto& b : c.bifurcations)
-    t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier),
-               long(b.located ? 1 : 0), long(b.smooth ? 1 : 0)});
+Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label, const std::vector<int>& starts) {
+  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located", "smooth", "period", "branch",
+           "starts_branch"});
+  for (std::size_t i = 0; i < c.bifurcations.size(); ++i) {
+    const Bifurcation& b = c.bifurcations[i];
+    const bool starts_one = i < starts.size() && starts[i] >= 0;
+    t.add_row({std::string(to_string(b.type)), label.period * b.omega, b.multiplier.real(), b.multiplier.imag(),
+               std::abs(b.multiplier), long(b.located ? 1 : 0), long(b.smooth ? 1 : 0), long(label.period),
+               long(label.branch), starts_one ? Table::Cell(long(starts[i])) : Table::Cell(std::string())});
+  }
   return t;
 }
 

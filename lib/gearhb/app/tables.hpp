@@ -48,13 +48,24 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
 // q<i>_max_exact, q<i>_min_exact, q<i>_h1_exact, then contact_<j> for every contact j =
 // 1..P: its own state over the period (open, full, intermittent; `contact` is the summary
 // over all of them).
+// Last, `period` and `branch` (BranchLabel): 1 and 0 for the main (period-1) branch, 2 and
+// the branch's id for a period-2 branch (period_doubling.hpp; then hb is its period-2
+// model, c's omegas its base frequency, and omega is written as the forcing frequency,
+// period x that).
+struct BranchLabel {
+  int period = 1;
+  int branch = 0;
+};
 Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
-                         const RowProgress& progress = {});
+                         const RowProgress& progress = {}, const BranchLabel& label = {});
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),
-// smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across).
-Table bifurcation_table(const FrequencyCurve& c);
+// smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across),
+// period, branch (the branch the event lies on, BranchLabel; omega written as the forcing
+// frequency), starts_branch (the id of the period-2 branch a PD starts: starts[i] for
+// bifurcation i, empty where none or `starts` is empty).
+Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, const std::vector<int>& starts = {});
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);

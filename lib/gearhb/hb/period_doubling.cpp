@@ -166,7 +166,7 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   if (best < 0) {
     std::ostringstream os;
     os << "the period-2 model (H2 = " << hbp.harmonics()
-       << ") has no branch point within two points of the PD (its odd block stays regular): raise its harmonics";
+       << ") has no branch point within two points of the PD (its odd block stays regular at this truncation): raise the harmonics H of the model";
     throw Failed(os.str());
   }
   const BranchPoint &pa = P[std::size_t(best)], &pb = P[std::size_t(best) + 1];
@@ -342,6 +342,12 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
       SweepOptions o2 = opt;
       o2.omega_min /= 2.0;
       o2.omega_max /= 2.0;
+      if (opt.step_progress)   // reported in the forcing frequency
+        o2.step_progress = [&opt](const std::string& step, const ContinuationProgress& q) {
+          ContinuationProgress f = q;
+          f.omega *= 2.0;
+          opt.step_progress("period-2 " + step, f);
+        };
       analyse_stability(hbp, o2, c2);
     } catch (const std::exception& e) {
       os << "failed: " << e.what();
