@@ -43,7 +43,7 @@ def rows_of(d, branch):
     return {k: [v[i] for i in keep] for k, v in d.items()}
 
 
-PERIOD2_COLOURS = ["C3", "C2", "C4", "C5"]
+PERIOD2_COLOURS = ["C3", "C2", "C4", "C5", "C6", "C8", "C9", "C1"]
 
 
 def main():
