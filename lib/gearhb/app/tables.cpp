@@ -27,7 +27,7 @@ namespace {
 std::vector<std::string> common_columns() {
   return {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
           "floquet_modulus", "floquet_angle", "hb_orbit_error",
-          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact"};
+          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact", "period", "branch"};
 }
 
 // The exact twins of x_max, x_min, x_rms_ac, x_h1, x_mean: empty unless status ok.
@@ -41,13 +41,14 @@ std::vector<Table::Cell> exact_cells(const ExactPoint& e, std::size_t k, bool wi
   return r;
 }
 
-// Point i's common cells; `e` holds the exact measures of q first.
+// Point i's common cells; `e` holds the exact measures of q first. omega is written as the
+// forcing frequency: label.period x the point's (the base frequency of a period-p model).
 std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const FrequencyCurve& c, std::size_t i,
-                                    const ExactPoint& e, const std::string& contact) {
+                                    const ExactPoint& e, const std::string& contact, const BranchLabel& label = {}) {
   const auto& P = c.branch.points;
   const auto r = ev.summarize(P[i].X);
   const bool fl = c.floquet.size() == P.size();
-  std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+  std::vector<Table::Cell> row{label.period * P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
                                contact.empty() ? std::string(to_string(r.contact)) : contact,
                                cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
                                // NaN where no corrected orbit exists (a time-varying stiffness)
@@ -55,6 +56,7 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
   const auto ex = exact_cells(e, 0);
   row.insert(row.end(), ex.begin(), ex.end());
   row.push_back(std::string(to_string(e.status)));
+  row.insert(row.end(), {long(label.period), long(label.branch)});
   return row;
 }
 
@@ -75,15 +77,12 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
     for (const char* what : {"_max_exact", "_min_exact", "_h1_exact"}) columns.push_back("q" + std::to_string(i + 1) + what);
   const std::size_t P = hb.contacts().size();
   for (std::size_t i = 0; i < P; ++i) columns.push_back("contact_" + std::to_string(i + 1));
-  columns.push_back("period");
-  columns.push_back("branch");
   const ResponseEvaluator ev(hb, output);
   Table t(columns);
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     if (progress) progress(p);
     const ExactPoint e = exact_point(hb, c, p, qs);
-    std::vector<Table::Cell> row = common_row(ev, c, p, e, "");
-    row[0] = label.period * c.branch.points[p].omega;   // the forcing frequency
+    std::vector<Table::Cell> row = common_row(ev, c, p, e, "", label);
     for (int i = 0; i < n; ++i) {
       const auto q = dof[i].summarize(c.branch.points[p].X);
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
@@ -94,7 +93,6 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
     }
     const auto r = ev.summarize(c.branch.points[p].X);
     for (std::size_t i = 0; i < P; ++i) row.push_back(std::string(to_string(r.contact_states[i])));
-    row.insert(row.end(), {long(label.period), long(label.branch)});
     t.add_row(std::move(row));
   }
   return t;
