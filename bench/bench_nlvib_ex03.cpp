@@ -6,6 +6,7 @@
 
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "../tests/unit/test_models.hpp"
 
 using namespace gearhb;
@@ -65,3 +66,24 @@ static void BM_Ex03FloquetPoint(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(floquet_of_hb_orbit(hb, p.X, p.omega, c.scaling.x[0]).modulus);
 }
 BENCHMARK(BM_Ex03FloquetPoint)->Unit(benchmark::kMicrosecond);
+
+// The period-2 branch of ex. 03 (hb/period_doubling.hpp) at H = 40 (H2 = 80; at H = 21 the
+// period-2 model has no branch point): the switch at the first PD, the continuation to the
+// second, every point's Floquet multipliers over two forcing periods and its bifurcations
+// located. The period-1 sweep is computed once, outside the timing.
+static void BM_Ex03Period2Branch(benchmark::State& st) {
+  const HarmonicBalance hb = test_models::nlvib_ex03(40);
+  SweepOptions o = ex03_options(StabilityMethod::floquet, true, 0.02, 0.0);
+  const FrequencyCurve c = sweep_frequency(hb, o, "ex03");
+  o.continuation.fast_iterations = int(st.range(0));
+  std::size_t points = 0;
+  for (auto _ : st) {
+    const auto br = period_doubled_branches(hb, c, o);
+    if (br.size() != 1 || br[0].end != PeriodDoubledBranch::End::merged) st.SkipWithError("no merged branch");
+    points = br.empty() ? 0 : br[0].curve.branch.points.size();
+  }
+  st.counters["points"] = double(points);
+}
+// fast_iterations: the continuation's step-growth rule (3, the sweep's default: the period-2
+// corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).
+BENCHMARK(BM_Ex03Period2Branch)->Arg(3)->Arg(4)->ArgNames({"fast_iterations"})->Unit(benchmark::kMillisecond);

@@ -4,7 +4,10 @@
 The output coordinate's x_max (upper) and x_min (lower) against omega, solid where
 stable and dashed where unstable, contact state marked, bifurcations (if the run
 wrote bifurcations.csv) marked with a legend; the title is the model's name and
-harmonics (from params.json, the resolved model)."""
+harmonics (from params.json, the resolved model). Period-2 branches (rows with
+period 2 in frc.csv, one per branch id) in their own colour (x_max and x_min over two
+forcing periods); the contact rug and the bifurcation markers are those of the period-1
+branch (branch 0) and of each period-2 branch on its own curve."""
 import json
 import pathlib
 import sys
@@ -58,31 +61,82 @@ def diagram_figure(d_dir, model, p, h):
     save(fig, d_dir / "bifurcation_diagram.png")
 
 
+def rows_of(d, branch):
+    """The rows of branch id `branch` (all rows of a table without the column)."""
+    if "branch" not in d:
+        return d if branch == 0 else {k: [] for k in d}
+    keep = [i for i, b in enumerate(d["branch"]) if int(b) == branch]
+    return {k: [v[i] for i in keep] for k, v in d.items()}
+
+
+PERIOD2_COLOURS = ["C3", "C2", "C4", "C5", "C6", "C8", "C9", "C1"]
+
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     model = json.load(open(d_dir / "params.json"))
-    d = read_csv(d_dir / "frc.csv")
+    full = read_csv(d_dir / "frc.csv")
+    d = rows_of(full, 0)
+    ids = sorted({int(b) for b in full.get("branch", [])} - {0})
     diagram = d_dir / "bifurcation_diagram.csv"
     p = h = None
     if diagram.exists() and (d_dir / "bifurcation_diagram_hb.csv").exists():
         p, h = read_csv(diagram), read_csv(d_dir / "bifurcation_diagram_hb.csv")
-        fig, (ax, axp) = plt.subplots(2, 1, figsize=(6.8, 7.4), sharex=True, gridspec_kw={"height_ratios": [3, 2]})
-    else:
-        fig, ax = plt.subplots(figsize=(6.8, 4.6))
+    # The response (top left); the period-2 branches close up (right, if any); the Poincare
+    # points of the bifurcation diagram under the response (if computed).
+    rows, cols = (2 if p is not None else 1), (2 if ids else 1)
+    fig, grid = plt.subplots(rows, cols, squeeze=False, figsize=(6.8 + 3.6 * (cols - 1), 4.6 + 2.8 * (rows - 1)),
+                             gridspec_kw={"width_ratios": [2, 1][:cols], "height_ratios": [3, 2][:rows]})
+    ax = grid[0][0]
+    ins = grid[0][1] if ids else None
+    axp = grid[1][0] if p is not None else None
+    if axp is not None:
+        axp.sharex(ax)
+        if ids:
+            grid[1][1].axis("off")
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
+    for n, bid in enumerate(ids):
+        d2 = rows_of(full, bid)
+        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
+        plot_branch(ax, d2, "x_max", colour, "period 2 (branch %d): max, min over two periods" % bid)
+        plot_branch(ax, d2, "x_min", colour)
+    if ids:   # x_min over the period-2 branches' range (where the two periods differ most)
+        w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]
+        lo2, hi2 = min(w2), max(w2)
+        pad = 0.15 * (hi2 - lo2)
+        ys = []
+        for n, bid in enumerate(ids):
+            d2 = rows_of(full, bid)
+            plot_branch(ins, d2, "x_min", PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
+            ys += d2["x_min"]
+        span = max(ys) - min(ys)
+        near = [i for i, w in enumerate(d["omega"]) if lo2 - pad <= w <= hi2 + pad
+                and min(ys) - span <= d["x_min"][i] <= max(ys) + span]
+        ins.plot([d["omega"][i] for i in near], [d["x_min"][i] for i in near], ".", color="C0", ms=3,
+                 label="period 1 (points)")
+        ins.set_xlim(lo2 - pad, hi2 + pad)
+        ins.set_ylim(min(ys) - 0.3 * span, max(ys) + 0.3 * span)
+        ins.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+        ins.set_title("x_min beside the period-2 branches", fontsize=9)
+        ins.legend(fontsize=7, frameon=False)
     contact_rug(ax, per_contact_state(d))
     bif = d_dir / "bifurcations.csv"
     if bif.exists() and bif.read_text().count("\n") > 1:
         b = read_csv(bif)
         for kind, m in BIFURCATION_MARKERS.items():
             c = BIFURCATION_COLOURS[kind]
-            w = [b["omega"][i] for i in range(len(b["omega"])) if b["type"][i] == kind]
+            w, ys = [], []
+            for i in range(len(b["omega"])):
+                if b["type"][i] != kind:
+                    continue
+                on = rows_of(full, int(b["branch"][i]) if "branch" in b else 0)
+                if not on["omega"]:
+                    continue
+                j = min(range(len(on["omega"])), key=lambda k: abs(on["omega"][k] - b["omega"][i]))
+                w.append(b["omega"][i])
+                ys.append(on["x_max"][j])
             if w:
-                ys = []
-                for wi in w:
-                    j = min(range(len(d["omega"])), key=lambda k: abs(d["omega"][k] - wi))
-                    ys.append(d["x_max"][j])
                 ax.plot(w, ys, ls="none", marker=m, color=c, mfc="none", ms=8, label=kind.replace("_", " "))
     rug_room(ax)
     direction = model["output"]["direction"]

@@ -28,6 +28,7 @@
 #include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
@@ -145,9 +146,42 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.say(model_.name + ": " + c.branch.summary() +
           (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
   if (!c.complete) throw std::runtime_error("the frequency response did not reach omega.to: " + c.failure);
-  run.write("frc.csv", dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name)));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  // Period-2 branches from the located PDs (hb/period_doubling.hpp): each its own branch id
+  // (1, 2, ...) in frc.csv and bifurcations.csv; a switch that fails says where and why in
+  // one line and the rest of the run stands.
+  std::vector<PeriodDoubledBranch> pd;
+  if (model_.period_doubling_depth >= 1)
+    pd = run.timed("period-2 branches", [&] { return period_doubled_branches(hb, c, o); });
+  std::vector<int> starts(c.bifurcations.size(), -1);
+  for (std::size_t k = 0; k < pd.size(); ++k) {
+    run.say(model_.name + ": " + pd[k].why);
+    if (!pd[k].curve.branch.points.empty()) starts[pd[k].from] = int(k) + 1;
+  }
+  Table frc = dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name));
+  Table bif = bifurcation_table(c, {}, starts);
+  int period2_points = 0;
+  for (std::size_t k = 0; k < pd.size(); ++k) {
+    if (pd[k].curve.branch.points.empty() || pd[k].curve.stable.size() != pd[k].curve.branch.points.size()) continue;
+    const BranchLabel label{2, int(k) + 1};
+    frc.append(dof_response_table(*pd[k].model, pd[k].curve, model_.output, {}, label));
+    bif.append(bifurcation_table(pd[k].curve, label));
+    period2_points += int(pd[k].curve.branch.points.size());
+  }
+  run.write("frc.csv", frc);
+  run.write("bifurcations.csv", bif);
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
+  if (model_.period_doubling_depth >= 1) {
+    int merged = 0;
+    for (const auto& b : pd) merged += b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
+    run.key_numbers().add("period2_branches", double(pd.size()), "-");
+    run.key_numbers().add("period2_branches_merged", double(merged), "-");
+    run.key_numbers().add("period2_points", double(period2_points), "-");
+    for (std::size_t k = 0; k < pd.size(); ++k) {   // where each branch starts and ends (forcing omega)
+      const std::string id = std::to_string(k + 1);
+      run.key_numbers().add("period2_omega_start_" + id, pd[k].omega_start, "rad/s");
+      if (std::isfinite(pd[k].omega_end)) run.key_numbers().add("period2_omega_end_" + id, pd[k].omega_end, "rad/s");
+    }
+  }
   const ResponseEvaluator ev(hb, model_.output);
   double peak = ev.summarize(c.branch.points.front().X).x_max;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
@@ -198,9 +232,10 @@ int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
-              "Writes DIR/frc.csv, bifurcations.csv, modes.csv, key_numbers.json, params.json (the resolved model),\n"
-              "timings.csv (wall time per step) and frc.png; with the bifurcation_diagram key also\n"
-              "bifurcation_diagram.csv and bifurcation_diagram.png.\n\n" +
+              "Writes DIR/frc.csv (with the period-2 branches: columns period, branch), bifurcations.csv,\n"
+              "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
+              "and frc.png; with the bifurcation_diagram key also bifurcation_diagram.csv and\n"
+              "bifurcation_diagram.png.\n\n" +
                   model_file_help());
   FrequencyResponseFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

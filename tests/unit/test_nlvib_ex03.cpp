@@ -123,7 +123,7 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
   const std::string frc = frequency_response_table(hb, c, Eigen::Vector2d(1, 0)).to_csv();
   EXPECT_EQ(frc.substr(0, frc.find('\n')),
             "omega,x_max,x_min,x_rms_ac,x_h1,x_mean,stable,contact,floquet_modulus,floquet_angle,hb_orbit_error,"
-            "x_max_exact,x_min_exact,x_rms_ac_exact,x_h1_exact,x_mean_exact,exact");
+            "x_max_exact,x_min_exact,x_rms_ac_exact,x_h1_exact,x_mean_exact,exact,period,branch");
   // every point of this curve has its exact orbit or says why not; none is silently HB
   std::size_t rows = 0, flagged = 0;
   for (std::size_t p = 0; (p = frc.find('\n', p)) != std::string::npos; ++p) {
@@ -131,7 +131,9 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
     if (e == std::string::npos) break;
     const std::string row = frc.substr(p + 1, e - p - 1);
     ++rows;
-    const std::string flag = row.substr(row.rfind(',') + 1);
+    std::string head = row.substr(0, row.rfind(','));   // drop branch, then period: exact is before them
+    head = head.substr(0, head.rfind(','));
+    const std::string flag = head.substr(head.rfind(',') + 1);
     EXPECT_TRUE(flag == "ok" || flag == "not_converged" || flag == "inconsistent") << row;
     if (flag != "ok") {
       ++flagged;
@@ -143,7 +145,7 @@ TEST(NlvibEx03, TablesCarryFloquetColumnsAndBifurcations) {
   const Table bt = bifurcation_table(c);
   EXPECT_EQ(bt.rows(), c.bifurcations.size());
   const std::string b = bt.to_csv();
-  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus,located,smooth");
+  EXPECT_EQ(b.substr(0, b.find('\n')), "type,omega,multiplier_re,multiplier_im,modulus,located,smooth,period,branch,starts_branch");
   EXPECT_NE(b.find("period_doubling"), std::string::npos);
   EXPECT_NE(b.find("neimark_sacker"), std::string::npos);
 }

@@ -56,6 +56,9 @@ struct ModelFile {
   bool exact_contact = true;
   double ds_max = 0.02;
   BifurcationDiagramInput diagram;           // the bifurcation diagram by time integration (off if absent)
+  // period_doubling.depth: 0 = none, 1 = a period-2 branch from each located PD of the
+  // period-1 branch (the default; period-4 branches from their PDs are not computed yet)
+  int period_doubling_depth = 1;
   nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
 
   HarmonicBalance harmonic_balance() const;

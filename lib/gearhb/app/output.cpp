@@ -66,6 +66,11 @@ void write_file_atomic(const std::string& path, const std::string& content) {
 
 Table::Table(std::vector<std::string> columns) : columns_(std::move(columns)) {}
 
+void Table::append(const Table& more) {
+  if (more.columns_ != columns_) throw std::logic_error("Table::append: other columns");
+  for (const auto& r : more.rows_) rows_.push_back(r);
+}
+
 void Table::add_row(std::vector<Cell> row) {
   if (row.size() != columns_.size())
     throw std::logic_error("Table::add_row: row has " + std::to_string(row.size()) +

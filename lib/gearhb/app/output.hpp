@@ -27,6 +27,7 @@ class Table {
   using Cell = std::variant<double, long, std::string>;
   explicit Table(std::vector<std::string> columns);
   void add_row(std::vector<Cell> row);   // must match the column count; finite numbers only
+  void append(const Table& more);         // its rows; its columns must be these
   std::size_t rows() const { return rows_.size(); }
   std::string to_csv() const;            // %.10g numbers, header first
   void write(const std::string& path) const { write_file_atomic(path, to_csv()); }

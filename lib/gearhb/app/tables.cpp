@@ -27,7 +27,7 @@ namespace {
 std::vector<std::string> common_columns() {
   return {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
           "floquet_modulus", "floquet_angle", "hb_orbit_error",
-          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact"};
+          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact", "period", "branch"};
 }
 
 // The exact twins of x_max, x_min, x_rms_ac, x_h1, x_mean: empty unless status ok.
@@ -41,13 +41,14 @@ std::vector<Table::Cell> exact_cells(const ExactPoint& e, std::size_t k, bool wi
   return r;
 }
 
-// Point i's common cells; `e` holds the exact measures of q first.
+// Point i's common cells; `e` holds the exact measures of q first. omega is written as the
+// forcing frequency: label.period x the point's (the base frequency of a period-p model).
 std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const FrequencyCurve& c, std::size_t i,
-                                    const ExactPoint& e, const std::string& contact) {
+                                    const ExactPoint& e, const std::string& contact, const BranchLabel& label = {}) {
   const auto& P = c.branch.points;
   const auto r = ev.summarize(P[i].X);
   const bool fl = c.floquet.size() == P.size();
-  std::vector<Table::Cell> row{P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+  std::vector<Table::Cell> row{label.period * P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
                                contact.empty() ? std::string(to_string(r.contact)) : contact,
                                cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
                                // NaN where no corrected orbit exists (a time-varying stiffness)
@@ -55,13 +56,14 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
   const auto ex = exact_cells(e, 0);
   row.insert(row.end(), ex.begin(), ex.end());
   row.push_back(std::string(to_string(e.status)));
+  row.insert(row.end(), {long(label.period), long(label.branch)});
   return row;
 }
 
 }  // namespace
 
 Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
-                         const RowProgress& progress) {
+                         const RowProgress& progress, const BranchLabel& label) {
   const int n = hb.dofs();
   std::vector<std::string> columns = common_columns();
   std::vector<ResponseEvaluator> dof;
@@ -80,7 +82,7 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     if (progress) progress(p);
     const ExactPoint e = exact_point(hb, c, p, qs);
-    std::vector<Table::Cell> row = common_row(ev, c, p, e, "");
+    std::vector<Table::Cell> row = common_row(ev, c, p, e, "", label);
     for (int i = 0; i < n; ++i) {
       const auto q = dof[i].summarize(c.branch.points[p].X);
       row.insert(row.end(), {q.x_max, q.x_min, q.x_h1});
@@ -122,11 +124,16 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
   return t;
 }
 
-Table bifurcation_table(const FrequencyCurve& c) {
-  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located", "smooth"});
-  for (const auto& b : c.bifurcations)
-    t.add_row({std::string(to_string(b.type)), b.omega, b.multiplier.real(), b.multiplier.imag(), std::abs(b.multiplier),
-               long(b.located ? 1 : 0), long(b.smooth ? 1 : 0)});
+Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label, const std::vector<int>& starts) {
+  Table t({"type", "omega", "multiplier_re", "multiplier_im", "modulus", "located", "smooth", "period", "branch",
+           "starts_branch"});
+  for (std::size_t i = 0; i < c.bifurcations.size(); ++i) {
+    const Bifurcation& b = c.bifurcations[i];
+    const bool starts_one = i < starts.size() && starts[i] >= 0;
+    t.add_row({std::string(to_string(b.type)), label.period * b.omega, b.multiplier.real(), b.multiplier.imag(),
+               std::abs(b.multiplier), long(b.located ? 1 : 0), long(b.smooth ? 1 : 0), long(label.period),
+               long(label.branch), starts_one ? Table::Cell(long(starts[i])) : Table::Cell(std::string())});
+  }
   return t;
 }
 

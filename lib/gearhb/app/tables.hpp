@@ -20,6 +20,14 @@ namespace gearhb {
 Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
                                const std::vector<bool>& stable, const Eigen::VectorXd& q);
 
+// The `period` and `branch` columns of a table: 1 and 0 for the main (period-1) branch, 2 and
+// the branch's id for a period-2 branch (period_doubling.hpp; then hb is its period-2 model,
+// c's omegas its base frequency, and omega is written as the forcing frequency, period x that).
+struct BranchLabel {
+  int period = 1;
+  int branch = 0;
+};
+
 // The common columns of every frequency-response table of a curve (lib/README "Output
 // files"), for the coordinate q' x, one row per point in continuation order:
 //   omega, x_max, x_min, x_rms_ac, x_h1, x_mean, stable, contact   (the HB orbit),
@@ -27,7 +35,7 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
 //   (max |x_HB - x_exact| over the period, floquet.hpp),
 //   x_max_exact, x_min_exact, x_rms_ac_exact, x_h1_exact, x_mean_exact (the same measures
 //   of the exact orbit, exact_orbit.hpp), exact (ok | not_converged | inconsistent |
-//   unavailable: ExactStatus);
+//   unavailable: ExactStatus), period, branch (BranchLabel below: 1, 0 for a period-1 curve);
 // cells are empty where a value does not exist (no Floquet stability; no corrected
 // orbit for a time-varying stiffness; exact != ok). Each row follows its point's exact
 // orbit: `progress` (if given) is called before each row with its point (e.g. to show
@@ -49,12 +57,15 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
 // 1..P: its own state over the period (open, full, intermittent; `contact` is the summary
 // over all of them).
 Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
-                         const RowProgress& progress = {});
+                         const RowProgress& progress = {}, const BranchLabel& label = {});
 
 // The bifurcations of a curve: type, omega, multiplier_re, multiplier_im, modulus,
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),
-// smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across).
-Table bifurcation_table(const FrequencyCurve& c);
+// smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across),
+// period, branch (the branch the event lies on, BranchLabel; omega written as the forcing
+// frequency), starts_branch (the id of the period-2 branch a PD starts: starts[i] for
+// bifurcation i, empty where none or `starts` is empty).
+Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, const std::vector<int>& starts = {});
 
 // The harmonic-balance vs time-integration comparison, one row per compared point.
 Table time_integration_table(const TimeIntegrationCheck& check);

@@ -172,6 +172,74 @@ double next_step(const ContinuationOptions& opt, double ds, int iterations, cons
 
 }  // namespace
 
+namespace {
+
+// Steps 2-5 of arc_length_continuation from the converged point y with tangent t (scaled),
+// appending to b. With `end` (arc_length_continuation_from): the branch ends, complete, at
+// the first point outside [end->omega_min, end->omega_max] or where end->stop says so (kept);
+// without it at omega_end (Newton exactly there) or turned back beyond omega_start, as a sweep.
+void march(Scaled& S, const ContinuationOptions& opt, Eigen::VectorXd y, Eigen::VectorXd t, double dir, Branch& b,
+           const ContinuationEnd* end) {
+  const int n = S.n;
+  const ParametricProblem& p = S.p;
+  const Scaling& s = S.s;
+  NewtonOptions nopt{opt.tolerance, opt.endpoint_iterations};
+  double ds = std::min(opt.ds_initial, opt.ds_max);
+  std::uint64_t regime = opt.regime ? opt.regime(S.X(y)) : 0;
+  for (int step = 0;; ++step) {
+    if (step >= opt.max_steps) {
+      b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
+                                                     std::to_string(opt.max_steps) + ")"});
+      return;
+    }
+    // 2. Predictor and corrector (predict_correct).
+    Step st;
+    Failure failure;
+    if (!predict_correct(S, opt, y, t, regime, ds, b, st, failure)) {
+      b.failures.push_back(failure);
+      return;
+    }
+    // 3. Accept; locate a fold between the two points.
+    const double w_new = S.omega(st.y);
+    BranchPoint pt{S.X(st.y), w_new, st.iterations, st.residual, ds, st.t[n]};
+    if ((t[n] > 0) != (st.t[n] > 0) && t[n] != 0.0) {
+      const Eigen::VectorXd yf = locate_fold(S, y, t, st.y, st.t, opt.tolerance, opt.locate_iterations);
+      b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
+    }
+    // 4. Reached the end of the range: finish with a Newton solve exactly at omega_end.
+    if (end) {
+      if (w_new < end->omega_min || w_new > end->omega_max || (end->stop && end->stop(pt.X, pt.omega))) {
+        b.points.push_back(pt);
+        b.complete = true;
+        return;
+      }
+    } else if ((w_new - opt.omega_end) * dir >= 0.0) {
+      const double w0 = S.omega(y);
+      const double a = (opt.omega_end - w0) / (w_new - w0);
+      Eigen::VectorXd Xe = (1.0 - a) * S.X(y) + a * pt.X;
+      NewtonReport er = newton_solve(p, Xe, opt.omega_end, s, nopt);
+      if (er.converged) b.points.push_back({Xe, opt.omega_end, er.iterations, er.residual, ds, st.t[n]});
+      else b.points.push_back(pt);
+      b.complete = true;
+      return;
+    }
+    if (!end && (w_new - opt.omega_start) * dir < -opt.start_excursion && b.points.size() > 2) {
+      b.points.push_back(pt);
+      b.failures.push_back({w_new, st.residual, ds, "branch turned back out of the range at its start"});
+      return;
+    }
+    b.points.push_back(pt);
+    if (opt.progress) opt.progress({int(b.points.size()) - 1, w_new, ds});
+    // 5. The next step.
+    ds = next_step(opt, ds, st.iterations, t, st.t);
+    y = st.y;
+    t = st.t;
+    regime = st.regime;
+  }
+}
+
+}  // namespace
+
 Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                                const Scaling& s, const ContinuationOptions& opt) {
   Branch b;
@@ -198,52 +266,33 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
   b.points.push_back({X, opt.omega_start, nr.iterations, nr.residual, 0.0, t[n]});
   if (opt.progress) opt.progress({0, opt.omega_start, 0.0});
 
-  double ds = std::min(opt.ds_initial, opt.ds_max);
-  std::uint64_t regime = opt.regime ? opt.regime(X) : 0;
-  for (int step = 0;; ++step) {
-    if (step >= opt.max_steps) {
-      b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
-                                                     std::to_string(opt.max_steps) + ")"});
-      return b;
-    }
-    // 2. Predictor and corrector (predict_correct).
-    Step st;
-    Failure failure;
-    if (!predict_correct(S, opt, y, t, regime, ds, b, st, failure)) {
-      b.failures.push_back(failure);
-      return b;
-    }
-    // 3. Accept; locate a fold between the two points.
-    const double w_new = S.omega(st.y);
-    BranchPoint pt{S.X(st.y), w_new, st.iterations, st.residual, ds, st.t[n]};
-    if ((t[n] > 0) != (st.t[n] > 0) && t[n] != 0.0) {
-      const Eigen::VectorXd yf = locate_fold(S, y, t, st.y, st.t, opt.tolerance, opt.locate_iterations);
-      b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
-    }
-    // 4. Reached the end of the range: finish with a Newton solve exactly at omega_end.
-    if ((w_new - opt.omega_end) * dir >= 0.0) {
-      const double w0 = S.omega(y);
-      const double a = (opt.omega_end - w0) / (w_new - w0);
-      Eigen::VectorXd Xe = (1.0 - a) * S.X(y) + a * pt.X;
-      NewtonReport er = newton_solve(p, Xe, opt.omega_end, s, nopt);
-      if (er.converged) b.points.push_back({Xe, opt.omega_end, er.iterations, er.residual, ds, st.t[n]});
-      else b.points.push_back(pt);
-      b.complete = true;
-      return b;
-    }
-    if ((w_new - opt.omega_start) * dir < -opt.start_excursion && b.points.size() > 2) {
-      b.points.push_back(pt);
-      b.failures.push_back({w_new, st.residual, ds, "branch turned back out of the range at its start"});
-      return b;
-    }
-    b.points.push_back(pt);
-    if (opt.progress) opt.progress({int(b.points.size()) - 1, w_new, ds});
-    // 5. The next step.
-    ds = next_step(opt, ds, st.iterations, t, st.t);
-    y = st.y;
-    t = st.t;
-    regime = st.regime;
+  march(S, opt, y, t, dir, b, nullptr);
+  return b;
+}
+
+Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::VectorXd& X, double omega,
+                                    const Eigen::VectorXd& direction, double ds0, const Scaling& s,
+                                    const ContinuationOptions& opt, const ContinuationEnd& end) {
+  Branch b;
+  const int n = p.size();
+  Scaled S(p, s);
+  const Eigen::VectorXd d = direction.normalized();
+  // the first point: the predictor ds0 d corrected in the hyperplane normal to d
+  Eigen::VectorXd y = S.y(X, omega) + ds0 * d, t;
+  int iters = 0;
+  double res = 0.0;
+  if (!correct(S, y, d, opt.endpoint_iterations, opt.tolerance, iters, res)) {
+    b.failures.push_back({omega, res, ds0, "first point off the start: corrector did not converge"});
+    return b;
   }
+  if (!tangent_here(S, d, t)) {
+    b.failures.push_back({S.omega(y), res, ds0, "singular augmented Jacobian at the first point"});
+    return b;
+  }
+  b.points.push_back({S.X(y), S.omega(y), iters, res, ds0, t[n]});
+  if (opt.progress) opt.progress({0, S.omega(y), ds0});
+  march(S, opt, y, t, t[n] >= 0.0 ? 1.0 : -1.0, b, &end);
+  return b;
 }
 
 Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,

@@ -115,6 +115,22 @@ struct Branch {
 Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                                const Scaling& s, const ContinuationOptions& opt);
 
+// Where arc_length_continuation_from ends a branch (complete): at the first point outside
+// [omega_min, omega_max], or at the first point where stop(X, omega) is true; both kept.
+struct ContinuationEnd {
+  double omega_min = -INFINITY, omega_max = INFINITY;
+  std::function<bool(const Eigen::VectorXd&, double)> stop;
+};
+
+// Pseudo-arc-length continuation off the solution (X, omega) along `direction` (scaled,
+// y = (X / x_scale, omega / omega_scale), n + 1 entries; e.g. the critical direction at a
+// branch point): the first point is the predictor y + ds0 d (d = direction normalised)
+// corrected in the hyperplane normal to d, its tangent oriented along d; then the steps of
+// arc_length_continuation (opt.omega_start / omega_end unused) until `end` says so.
+Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::VectorXd& X, double omega,
+                                    const Eigen::VectorXd& direction, double ds0, const Scaling& s,
+                                    const ContinuationOptions& opt, const ContinuationEnd& end);
+
 // Natural (sequential) continuation with `opt.natural_points` fixed omega steps.
 Branch natural_continuation(const ParametricProblem& p, const Eigen::VectorXd& X0,
                             const Scaling& s, const ContinuationOptions& opt);

@@ -30,8 +30,9 @@ class AmplitudeHomotopy : public ParametricProblem {
  public:
   AmplitudeHomotopy(const HarmonicBalance& hb, double omega) : hb_(hb), w_(omega), fper_(Eigen::VectorXd::Zero(hb.size())) {
     const int n = hb.dofs();
-    fper_.segment(hb.index(1, 0), n) = hb.excitation().fc;
-    fper_.segment(hb.index(2, 0), n) = hb.excitation().fs;
+    const int p = hb.excitation().harmonic;
+    fper_.segment(hb.index(2 * p - 1, 0), n) = hb.excitation().fc;
+    fper_.segment(hb.index(2 * p, 0), n) = hb.excitation().fs;
   }
   int size() const override { return hb_.size(); }
   void evaluate(const Eigen::VectorXd& X, double lambda, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,

@@ -17,9 +17,12 @@ namespace gearhb {
 
 PiecewiseLinearFlow::PiecewiseLinearFlow(const HarmonicBalance& hb, bool spectral)
     : hb_(hb), n_(hb.dofs()), spectral_(spectral), Minv_(hb.system().M.inverse()) {
-  harmonics_.push_back(1);
+  // the forcing's harmonic first (its oscillator drives fc, fs), then the gaps' others
+  const int p = hb.excitation().harmonic;
+  harmonics_.push_back(p);
   const int H = hb.harmonics();
-  for (int k = 2; k <= H; ++k) {
+  for (int k = 1; k <= H; ++k) {
+    if (k == p) continue;
     bool used = false;
     for (const auto& ct : hb.contacts())
       used = used || ct.gap_harmonics[2 * k - 1] != 0.0 || ct.gap_harmonics[2 * k] != 0.0;

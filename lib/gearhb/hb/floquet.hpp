@@ -107,7 +107,7 @@ class PiecewiseLinearFlow {
   // diagonalised propagator one product V_xv (e^{lambda s_j} o V^-1 z), else one exponential
   // per s_j. (The other rows of z are the oscillators [1, cos k omega t, sin k omega t]: known.)
   Eigen::MatrixXd advance_xv(unsigned state, double omega, const Eigen::VectorXd& s, const Eigen::VectorXd& z) const;
-  // The harmonics k of the oscillator states (k = 1 first; floquet.hpp's header).
+  // The harmonics k of the oscillator states (the forcing harmonic first, Excitation::harmonic; floquet.hpp's header).
   const std::vector<int>& oscillator_harmonics() const { return harmonics_; }
   // The generator A_state (its rows n..2n-1 give the acceleration).
   const Eigen::MatrixXd& generator_matrix(unsigned state, double omega) const;
@@ -132,7 +132,7 @@ class PiecewiseLinearFlow {
   const HarmonicBalance& hb_;
   int n_, dim_;
   bool spectral_;
-  std::vector<int> harmonics_;       // oscillator harmonics k (k = 1 first)
+  std::vector<int> harmonics_;       // oscillator harmonics k (the forcing harmonic first)
   std::vector<Eigen::RowVectorXd> rows_;   // u_i = r_i' z
   Eigen::MatrixXd Minv_;
   mutable std::vector<std::pair<unsigned, std::shared_ptr<Propagator>>> cache_;   // (contact state, its propagator) at cache_omega_

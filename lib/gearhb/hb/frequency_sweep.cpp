@@ -470,23 +470,28 @@ FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& op
   c.scaling = checked_scaling(hb, opt, label);
   const ContinuationOptions co = sweep_continuation(hb, opt);
   if (!trace_branch(hb, opt, co, label, c)) return c;
+  analyse_stability(hb, opt, c);
+  return c;
+}
+
+void analyse_stability(const HarmonicBalance& hb, const SweepOptions& opt, FrequencyCurve& c) {
   const std::size_t points = c.branch.points.size();
   if (opt.stability == StabilityMethod::hill || opt.hill_cross_check) c.hill_stable = branch_stability(hb, c.branch);
   if (opt.stability == StabilityMethod::hill) c.stable = c.hill_stable;
   if (opt.stability == StabilityMethod::none) c.stable.assign(points, true);
-  if (opt.stability != StabilityMethod::floquet) return c;
+  if (opt.stability != StabilityMethod::floquet) return;
   const std::vector<FloquetResult> fr = floquet_of_branch(hb, opt, c);
-  if (!opt.locate_bifurcations || opt.natural) return c;
-  locate_crossings(hb, opt, co.tolerance, fr, c);
+  if (!opt.locate_bifurcations || opt.natural) return;
+  const double tolerance = opt.continuation.tolerance;
+  locate_crossings(hb, opt, tolerance, fr, c);
   const bool parametric = std::any_of(hb.contacts().begin(), hb.contacts().end(),
                                       [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
   if (opt.narrow_bands == BandSearch::always || (opt.narrow_bands == BandSearch::parametric && parametric)) {
-    add_narrow_bands(hb, c, c.scaling.x[0], opt, co.tolerance, fr);
+    add_narrow_bands(hb, c, c.scaling.x[0], opt, tolerance, fr);
     std::stable_sort(c.bifurcations.begin(), c.bifurcations.end(),
                      [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; });
   }
   c.bifurcations = one_entry_per_crossing(hb, c, c.scaling.x[0], opt.floquet);
-  return c;
 }
 
 namespace {

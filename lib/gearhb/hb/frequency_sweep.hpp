@@ -133,6 +133,11 @@ Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label);
 
+// The steps of sweep_frequency after the continuation, on a traced branch (c.branch,
+// c.scaling, c.natural set): the stability of every point by opt.stability and, for
+// Floquet, the bifurcations located between the points (opt.locate_bifurcations).
+void analyse_stability(const HarmonicBalance& hb, const SweepOptions& opt, FrequencyCurve& c);
+
 // Contact predicates on the penetration over a period: of every contact together (contact
 // = -1: the summary state, ResponseSummary::contact) or of contact `contact` alone (e.g. one
 // flank of a gear mesh with backlash).

@@ -21,6 +21,8 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
   vec(f_.f0, "f0");
   vec(f_.fc, "fc");
   vec(f_.fs, "fs");
+  if (f_.harmonic < 1 || f_.harmonic > H)
+    throw std::invalid_argument("HarmonicBalance: the forcing harmonic must lie in 1..H");
   if (contacts_.size() > std::size_t(kMaxContacts))
     throw std::invalid_argument("HarmonicBalance: " + std::to_string(contacts_.size()) + " contacts; at most " +
                                 std::to_string(kMaxContacts));
@@ -73,8 +75,8 @@ void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double omega, Eigen
     Rm.col(c) = KX.col(c) - kw * kw * MX.col(c) + kw * CX.col(s);
     Rm.col(s) = KX.col(s) - kw * kw * MX.col(s) - kw * CX.col(c);
   }
-  Rm.col(1) -= f_.fc;
-  Rm.col(2) -= f_.fs;
+  Rm.col(2 * f_.harmonic - 1) -= f_.fc;
+  Rm.col(2 * f_.harmonic) -= f_.fs;
   if (dRdw) {
     dRdw->setZero(size());
     Eigen::Map<Eigen::MatrixXd> Dm(dRdw->data(), n, m);
@@ -409,9 +411,10 @@ Eigen::VectorXd HarmonicBalance::contact_set_solution(double omega, unsigned lon
   const std::complex<double> i(0.0, 1.0);
   // fc cos + fs sin = Re((fc - i fs) e^{i theta})
   const Eigen::VectorXcd F = f_.fc.cast<std::complex<double>>() - i * f_.fs.cast<std::complex<double>>();
-  const Eigen::VectorXcd Z = frequency_response(s, F, omega);
-  X.segment(index(1, 0), n_) = Z.real();
-  X.segment(index(2, 0), n_) = -Z.imag();
+  const int p = f_.harmonic;
+  const Eigen::VectorXcd Z = frequency_response(s, F, p * omega);
+  X.segment(index(2 * p - 1, 0), n_) = Z.real();
+  X.segment(index(2 * p, 0), n_) = -Z.imag();
   return X;
 }
 
@@ -443,7 +446,7 @@ Scaling HarmonicBalance::scaling(double wmin, double wmax) const {
       if (closed && contacts_.empty()) continue;
       const Eigen::VectorXd X = linear_solution(omega, closed);
       for (int d = 0; d < n_; ++d) {
-        const double a = std::hypot(X[index(1, d)], X[index(2, d)]);
+        const double a = std::hypot(X[index(2 * f_.harmonic - 1, d)], X[index(2 * f_.harmonic, d)]);
         if (std::isfinite(a)) xref = std::max(xref, a);
         if (std::isfinite(X[d])) xstatic = std::max(xstatic, std::fabs(X[d]));   // NaN: no static equilibrium
       }

@@ -43,11 +43,15 @@
 
 namespace gearhb {
 
-// External forcing f0 + fc cos(theta) + fs sin(theta), each an n-vector.
 enum class ContactQuadrature { exact, sampled };
 
+// External forcing f0 + fc cos(p theta) + fs sin(p theta), each an n-vector, on harmonic
+// p = `harmonic` of the model's base frequency (theta = omega t). p = 1: the forcing
+// frequency is the base frequency (every period-1 model). p = 2: the model of a period-2
+// orbit (subharmonic.hpp): its base frequency is half the forcing frequency.
 struct Excitation {
   Eigen::VectorXd f0, fc, fs;
+  int harmonic = 1;
 };
 
 // Threads: a HarmonicBalance keeps work buffers (its own and its Aft's), so one object

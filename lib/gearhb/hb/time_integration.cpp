@@ -89,7 +89,7 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
   const auto& f = c->hb->excitation();
   const auto& contacts = c->hb->contacts();
   c->r.resize(n);
-  c->r = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta);
+  c->r = f.f0 + f.fc * std::cos(f.harmonic * theta) + f.fs * std::sin(f.harmonic * theta);
   c->r.noalias() -= omega * (sys.C * x_theta);
   c->r.noalias() -= sys.K * x;
   c->kc.resize(contacts.size());
@@ -309,7 +309,7 @@ Eigen::VectorXd TimeIntegrator::acceleration(double t, const Eigen::VectorXd& x,
   const auto& sys = hb_.system();
   const auto& f = hb_.excitation();
   const double theta = omega * t;
-  Eigen::VectorXd rhs = f.f0 + f.fc * std::cos(theta) + f.fs * std::sin(theta) - sys.C * v - sys.K * x;
+  Eigen::VectorXd rhs = f.f0 + f.fc * std::cos(f.harmonic * theta) + f.fs * std::sin(f.harmonic * theta) - sys.C * v - sys.K * x;
   for (const auto& ct : hb_.contacts())
     rhs -= contact_force(stiffness_at(ct, theta), gap_at(ct, theta) + ct.normal.dot(x)) * ct.normal;
   return Minv_ * rhs;

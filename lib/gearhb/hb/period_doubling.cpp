@@ -1,0 +1,362 @@
+#include "gearhb/hb/period_doubling.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <stdexcept>
+
+#include <Eigen/Eigenvalues>
+
+#include "gearhb/hb/floquet.hpp"
+
+namespace gearhb {
+
+std::shared_ptr<HarmonicBalance> subharmonic_model(const HarmonicBalance& hb, int p, int H2) {
+  if (p < 1) throw std::invalid_argument("subharmonic_model: the period must be >= 1");
+  const int H = hb.harmonics();
+  if (H2 == 0) H2 = p * H;
+  if (H2 < p) throw std::invalid_argument("subharmonic_model: H2 must be at least the period");
+  std::vector<UnilateralContact> contacts = hb.contacts();
+  for (auto& ct : contacts) {
+    const Eigen::VectorXd g = ct.gap_harmonics;   // 2H + 1 (HarmonicBalance pads it)
+    Eigen::VectorXd gp = Eigen::VectorXd::Zero(2 * H2 + 1);
+    gp[0] = g[0];
+    for (int k = 1; 2 * k < g.size() && p * k <= H2; ++k) {
+      gp[2 * p * k - 1] = g[2 * k - 1];
+      gp[2 * p * k] = g[2 * k];
+    }
+    ct.gap_harmonics = gp;
+    if (ct.stiffness_profile) ct.stiffness_profile = [s = ct.stiffness_profile, p](double theta) { return s(p * theta); };
+  }
+  Excitation f = hb.excitation();
+  f.harmonic *= p;
+  // the same time samples per forcing period as hb where H2 = p H, the default otherwise
+  const int N = H2 == p * H ? p * hb.samples() : 0;
+  return std::make_shared<HarmonicBalance>(hb.system(), contacts, f, H2, N, hb.quadrature());
+}
+
+Eigen::VectorXd to_subharmonic_basis(const HarmonicBalance& hb, const HarmonicBalance& hbp, int p,
+                                     const Eigen::VectorXd& X) {
+  const int n = hb.dofs();
+  Eigen::VectorXd Xp = Eigen::VectorXd::Zero(hbp.size());
+  Xp.head(n) = X.head(n);
+  for (int k = 1; k <= hb.harmonics() && p * k <= hbp.harmonics(); ++k) {
+    Xp.segment(hbp.index(2 * p * k - 1, 0), n) = X.segment(hb.index(2 * k - 1, 0), n);
+    Xp.segment(hbp.index(2 * p * k, 0), n) = X.segment(hb.index(2 * k, 0), n);
+  }
+  return Xp;
+}
+
+Eigen::VectorXd subharmonic_part(const HarmonicBalance& hbp, int p, const Eigen::VectorXd& X) {
+  Eigen::VectorXd out = X;
+  const int n = hbp.dofs();
+  for (int a = 0; a < 2 * hbp.harmonics() + 1; ++a)
+    if (((a + 1) / 2) % p == 0) out.segment(a * n, n).setZero();
+  return out;
+}
+
+namespace {
+
+struct Failed : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+}  // namespace
+
+namespace {
+
+// The odd-harmonic rows and columns of hbp's Jacobian at X (the block that decides a
+// period-2 branch point on a period-1 orbit: even and odd harmonics decouple there).
+Eigen::MatrixXd odd_block(const HarmonicBalance& hbp, const Eigen::VectorXd& X, double Omega, std::vector<int>& odd) {
+  Eigen::VectorXd R;
+  Eigen::MatrixXd J;
+  hbp.evaluate(X, Omega, R, &J, nullptr);
+  odd.clear();
+  const int n = hbp.dofs();
+  for (int a = 0; a < 2 * hbp.harmonics() + 1; ++a)
+    if (((a + 1) / 2) % 2 == 1)
+      for (int d = 0; d < n; ++d) odd.push_back(a * n + d);
+  Eigen::MatrixXd Jo(odd.size(), odd.size());
+  for (std::size_t i = 0; i < odd.size(); ++i)
+    for (std::size_t j = 0; j < odd.size(); ++j) Jo(Eigen::Index(i), Eigen::Index(j)) = J(odd[i], odd[j]);
+  return Jo;
+}
+
+int det_sign(const Eigen::MatrixXd& A) { return Eigen::PartialPivLU<Eigen::MatrixXd>(A).determinant() > 0.0 ? 1 : -1; }
+
+}  // namespace
+
+SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
+                               const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp) {
+  SwitchPoint sp;
+  BranchPoint& at = sp.at;
+  Eigen::VectorXd& phi = sp.phi_floquet;
+  for (const auto& ct : hb.contacts())
+    if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
+  if (!bf.located) throw Failed("the PD was not located (a corrector failed on its chord)");
+  const auto& P = c.branch.points;
+  const BranchPoint &a = P[std::size_t(bf.after_point)], &b = P[std::size_t(bf.after_point) + 1];
+  const double t = std::clamp((bf.omega - a.omega) / (b.omega - a.omega), 0.0, 1.0);
+  at = point_on_chord(hb, a, b, c.scaling, t, opt.continuation.tolerance);
+  const double xs = c.scaling.x[0], w = at.omega;
+  const FloquetResult fr = floquet_of_hb_orbit(hb, at.X, w, xs, opt.floquet);
+  if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  Eigen::EigenSolver<Eigen::MatrixXd> es(fr.monodromy);
+  Eigen::Index j = 0;
+  es.eigenvalues().unaryExpr([](std::complex<double> m) { return std::abs(m + 1.0); }).real().minCoeff(&j);
+  const std::complex<double> mu = es.eigenvalues()[j];
+  if (std::abs(mu + 1.0) > 0.05) {
+    std::ostringstream os;
+    os << "no Floquet multiplier near -1 at the PD point (nearest " << mu.real() << (mu.imag() < 0 ? "" : "+")
+       << mu.imag() << "i)";
+    throw Failed(os.str());
+  }
+  // the eigenvector of a real multiplier, made real (Eigen returns it up to a complex factor)
+  Eigen::VectorXcd ec = es.eigenvectors().col(j);
+  Eigen::Index big = 0;
+  ec.cwiseAbs().maxCoeff(&big);
+  ec *= std::conj(ec[big]) / std::abs(ec[big]);
+  const int n = hb.dofs();
+  Eigen::VectorXd e = ec.real();
+  e.tail(n) /= w;   // velocities in units of displacement (as the shooting scales them)
+  e /= e.cwiseAbs().maxCoeff();
+  e.tail(n) *= w;
+  // the eigen-solution over one forcing period by central differences of the exact flow
+  const int N = pdo.samples;
+  const double T = 2.0 * M_PI / w, delta = 1e-6 * xs;
+  std::vector<double> nodes(static_cast<std::size_t>(N));
+  for (int i = 0; i < N; ++i) nodes[std::size_t(i)] = T * i / N;
+  PiecewiseLinearFlow flow(hb);
+  Eigen::VectorXd xT, vT;
+  Eigen::MatrixXd Phi, xp, xm;
+  flow.period_map(fr.x0 + delta * e.head(n), fr.v0 + delta * e.tail(n), w, nodes, xT, vT, Phi, &xp);
+  flow.period_map(fr.x0 - delta * e.head(n), fr.v0 - delta * e.tail(n), w, nodes, xT, vT, Phi, &xm);
+  const Eigen::MatrixXd D = (xp - xm) / (2.0 * delta);
+  // odd harmonics k of Omega = omega / 2: Omega t_i = pi i / N; the antiperiodic extension
+  // makes the integral over two periods twice that over one
+  phi = Eigen::VectorXd::Zero(hbp.size());
+  for (int k = 1; k <= hbp.harmonics(); k += 2) {
+    Eigen::VectorXd ck = Eigen::VectorXd::Zero(n), sk = Eigen::VectorXd::Zero(n);
+    for (int i = 0; i < N; ++i) {
+      const double th = M_PI * k * i / N;
+      ck += D.col(i) * std::cos(th);
+      sk += D.col(i) * std::sin(th);
+    }
+    phi.segment(hbp.index(2 * k - 1, 0), n) = 2.0 * ck / N;
+    phi.segment(hbp.index(2 * k, 0), n) = 2.0 * sk / N;
+  }
+  if (!(phi.norm() > 0.0)) throw Failed("the critical eigen-solution has no odd harmonics");
+  phi.normalize();
+  // The branch point of the period-2 model itself: where the odd block of its Jacobian on
+  // the period-1 branch is singular (det changes sign), searched on the chords within two
+  // points of the PD, the nearest taken, located by bisection on the chord. The HB model at
+  // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
+  // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
+  // largest and turns back): then there is no period-2 HB branch to switch to.
+  std::vector<int> odd;
+  auto sign_at = [&](const BranchPoint& q) {
+    return det_sign(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
+  };
+  const int lo_i = std::max(0, bf.after_point - 2), hi_i = std::min(int(P.size()) - 2, bf.after_point + 2);
+  int best = -1;
+  for (int i = lo_i; i <= hi_i; ++i)
+    if (sign_at(P[std::size_t(i)]) != sign_at(P[std::size_t(i) + 1]) &&
+        (best < 0 || std::abs(i - bf.after_point) < std::abs(best - bf.after_point)))
+      best = i;
+  if (best < 0) {
+    std::ostringstream os;
+    os << "the period-2 model (H2 = " << hbp.harmonics()
+       << ") has no branch point within two points of the PD (its odd block stays regular at this truncation): raise the harmonics H of the model";
+    throw Failed(os.str());
+  }
+  const BranchPoint &pa = P[std::size_t(best)], &pb = P[std::size_t(best) + 1];
+  const int sa = sign_at(pa);
+  double tl = 0.0, th = 1.0;
+  BranchPoint q = pa;
+  for (int it = 0; it < 60 && th - tl > 1e-12; ++it) {
+    const double tm = 0.5 * (tl + th);
+    q = point_on_chord(hb, pa, pb, c.scaling, tm, opt.continuation.tolerance);
+    (sign_at(q) == sa ? tl : th) = tm;
+  }
+  sp.branch_point = q;
+  // its null vector by inverse iteration from the Floquet direction
+  const Eigen::MatrixXd Jo = odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd);
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jo);
+  Eigen::VectorXd v(odd.size()), po(odd.size());
+  for (std::size_t i = 0; i < odd.size(); ++i) po[Eigen::Index(i)] = phi[odd[i]];
+  v = po;
+  for (int it = 0; it < 3; ++it) v = lu.solve(v).normalized();
+  if (v.dot(po) < 0.0) v = -v;
+  sp.agreement = v.dot(po) / po.norm();
+  sp.phi = Eigen::VectorXd::Zero(hbp.size());
+  for (std::size_t i = 0; i < odd.size(); ++i) sp.phi[odd[i]] = v[Eigen::Index(i)];
+  return sp;
+}
+
+namespace {
+
+// Step 5: the point where the branch crossed the period-1 branch, between its last two
+// points (odd part along phi, the odd part of a, positive at a and negative at b): regula
+// falsi (Illinois) on the chord fraction, each trial corrected onto the branch.
+BranchPoint merge_point(const HarmonicBalance& hbp, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
+                        const Eigen::VectorXd& phi, double tolerance) {
+  auto f = [&](const Eigen::VectorXd& X) { return subharmonic_part(hbp, 2, X).dot(phi) / s.x[0]; };
+  double t0 = 0.0, t1 = 1.0, f0 = f(a.X), f1 = f(b.X);
+  BranchPoint best = std::fabs(f0) < std::fabs(f1) ? a : b;
+  int side = 0;
+  for (int it = 0; it < 40 && std::fabs(f(best.X)) > 1e-9; ++it) {
+    const double t = (t0 * f1 - t1 * f0) / (f1 - f0);
+    best = point_on_chord(hbp, a, b, s, t, tolerance);
+    const double ft = f(best.X);
+    if ((ft > 0) == (f0 > 0)) {
+      t0 = t, f0 = ft;
+      if (side == -1) f1 *= 0.5;
+      side = -1;
+    } else {
+      t1 = t, f1 = ft;
+      if (side == 1) f0 *= 0.5;
+      side = 1;
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                         const SweepOptions& opt, const PeriodDoublingOptions& pdo) {
+  std::vector<PeriodDoubledBranch> out;
+  if (c.natural || c.branch.points.size() < 2) return out;
+  for (std::size_t i = 0; i < c.bifurcations.size(); ++i) {
+    const Bifurcation& bf = c.bifurcations[i];
+    if (bf.type != BifurcationType::period_doubling) continue;
+    bool reached = false;
+    for (const auto& o : out) reached = reached || o.to == int(i);
+    if (reached) continue;
+    PeriodDoubledBranch r;
+    r.from = i;
+    r.omega_start = bf.omega;
+    std::ostringstream os;
+    os << "period-2 branch from the PD at omega = " << bf.omega << ": ";
+    try {
+      r.model = subharmonic_model(hb, 2);
+      const HarmonicBalance& hbp = *r.model;
+      const SwitchPoint sp = critical_direction(hb, c, bf, opt, pdo, hbp);
+      const BranchPoint& at = sp.branch_point;
+      const Eigen::VectorXd& phi = sp.phi;
+      r.omega_branch_point = at.omega;
+      r.direction_agreement = sp.agreement;
+      Scaling s = c.scaling;
+      s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
+      s.omega = c.scaling.omega / 2.0;
+      ContinuationOptions co = opt.continuation;
+      co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
+      // it merged when its odd part reverses against the point before (a smooth branch
+      // turns its odd part gradually; it flips only through zero)
+      Eigen::VectorXd prev_odd = phi;
+      ContinuationEnd end;
+      end.omega_min = opt.omega_min / 2.0;
+      end.omega_max = opt.omega_max / 2.0;
+      end.stop = [&hbp, &prev_odd](const Eigen::VectorXd& X, double) {
+        const Eigen::VectorXd odd = subharmonic_part(hbp, 2, X);
+        const bool flipped = odd.dot(prev_odd) < 0.0;
+        if (!flipped) prev_odd = odd;
+        return flipped;
+      };
+      Eigen::VectorXd d = Eigen::VectorXd::Zero(hbp.size() + 1);
+      d.head(hbp.size()) = phi / c.scaling.x[0];
+      const Eigen::VectorXd X0 = to_subharmonic_basis(hb, hbp, 2, at.X);
+      // the first step: pdo.step, shortened tenfold while the corrector fails (the branch
+      // point is singular: its basin shrinks with the step's error against the branch)
+      Branch b;
+      for (double step = pdo.step;; step *= 0.1) {
+        prev_odd = phi;
+        b = arc_length_continuation_from(hbp, X0, at.omega / 2.0, d, step, s, co, end);
+        if (b.points.size() > 1 || step < 1e-6 * pdo.step) break;
+      }
+      // A step that overshot the merge (near a branch point the branch is a parabola
+      // omega - omega_b ~ odd^2, nearly normal to the period-1 branch: a step along its
+      // tangent crosses to the mirror half) with the last point still far from it (odd part
+      // above 5 % of the branch's largest): the last chord is walked again from its start
+      // with steps ten times shorter, up to five times.
+      auto odd_norm = [&hbp](const BranchPoint& q) { return subharmonic_part(hbp, 2, q.X).norm(); };
+      for (int refine = 0; refine < 5 && b.complete && b.points.size() >= 2 && end.stop(b.points.back().X, 0.0); ++refine) {
+        double largest = 0.0;
+        for (const auto& q : b.points) largest = std::max(largest, odd_norm(q));
+        const BranchPoint a = b.points[b.points.size() - 2], z = b.points.back();
+        if (odd_norm(a) <= 0.05 * largest) break;
+        Eigen::VectorXd chord(hbp.size() + 1);
+        chord.head(hbp.size()) = (z.X - a.X) / c.scaling.x[0];
+        chord[hbp.size()] = (z.omega - a.omega) / s.omega;
+        ContinuationOptions fine = co;
+        fine.ds_max = 0.1 * std::max(chord.norm(), co.ds_min);
+        fine.ds_initial = fine.ds_max;
+        prev_odd = subharmonic_part(hbp, 2, a.X);
+        Branch more = arc_length_continuation_from(hbp, a.X, a.omega, chord, fine.ds_max, s, fine, end);
+        if (more.points.empty()) break;
+        b.points.pop_back();
+        for (auto& f : more.folds) f.after_point += int(b.points.size());
+        b.folds.insert(b.folds.end(), more.folds.begin(), more.folds.end());
+        b.points.insert(b.points.end(), more.points.begin(), more.points.end());
+        b.complete = more.complete;
+        b.failures = more.failures;
+      }
+      // the branch starts at the PD point: the period-1 orbit, a solution of the period-2 model
+      b.points.insert(b.points.begin(), BranchPoint{X0, at.omega / 2.0, 0, 0.0, 0.0, 0.0});
+      for (auto& f : b.folds) ++f.after_point;
+      FrequencyCurve& c2 = r.curve;
+      c2.scaling = s;
+      c2.stability = opt.stability;
+      const BranchPoint& last = b.points.back();
+      if (!b.complete) {
+        const Failure& f = b.failures.empty() ? Failure{last.omega, 0.0, 0.0, "stopped"} : b.failures.back();
+        os << "failed at omega = " << 2.0 * f.omega << ": " << f.what;
+        r.end = PeriodDoubledBranch::End::failed;
+        r.omega_end = 2.0 * f.omega;
+      } else if (b.points.size() >= 3 && subharmonic_part(hbp, 2, last.X).dot(prev_odd) < 0.0) {
+        try {
+          b.points.back() = merge_point(hbp, b.points[b.points.size() - 2], last, s, prev_odd, co.tolerance);
+        } catch (const std::exception&) {
+          b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
+        }
+        r.omega_end = 2.0 * b.points.back().omega;
+        double dmin = INFINITY;
+        for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
+          const auto& o = c.bifurcations[k];
+          const double dk = std::fabs(o.omega - r.omega_end);
+          if (o.type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, r.to = int(k);
+        }
+        if (r.to >= 0 && dmin > 1e-3 * std::fabs(r.omega_end)) r.to = -1;
+        r.end = PeriodDoubledBranch::End::merged;
+        os << "merges with the period-1 branch at omega = " << r.omega_end;
+        if (r.to >= 0) os << " (the PD located at " << c.bifurcations[std::size_t(r.to)].omega << ")";
+        else os << " where no PD of the period-1 branch was located";
+      } else {
+        r.end = PeriodDoubledBranch::End::left_range;
+        r.omega_end = 2.0 * last.omega;
+        os << "leaves the range at omega = " << r.omega_end;
+      }
+      c2.branch = std::move(b);
+      c2.complete = r.end != PeriodDoubledBranch::End::failed;
+      if (!c2.complete) c2.failure = os.str();
+      SweepOptions o2 = opt;
+      o2.omega_min /= 2.0;
+      o2.omega_max /= 2.0;
+      if (opt.step_progress)   // reported in the forcing frequency
+        o2.step_progress = [&opt](const std::string& step, const ContinuationProgress& q) {
+          ContinuationProgress f = q;
+          f.omega *= 2.0;
+          opt.step_progress("period-2 " + step, f);
+        };
+      analyse_stability(hbp, o2, c2);
+    } catch (const std::exception& e) {
+      os << "failed: " << e.what();
+      r.end = PeriodDoubledBranch::End::failed;
+    }
+    r.why = os.str();
+    out.push_back(std::move(r));
+  }
+  return out;
+}
+
+}  // namespace gearhb

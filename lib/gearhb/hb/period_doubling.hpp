@@ -1,0 +1,119 @@
+#pragma once
+// Period-doubled branches by harmonic balance, switched at the located period-doubling
+// (PD) points of a period-1 frequency curve (issue 34 §1).
+//
+// The model. A period-2 orbit of a system forced at omega is periodic with the base
+// frequency Omega = omega / 2. subharmonic_model(hb, 2) is the same equations as an
+// ordinary HarmonicBalance on Omega: H2 harmonics (2H for the switch: then every period-1
+// HB point, harmonic k -> 2k, solves it exactly; with more harmonics it does not, and the
+// branch point is lost - ex. 03 at H = 21 in H2 = 80), the forcing on harmonic
+// 2 of Omega (Excitation::harmonic), every periodic coefficient moved k -> 2k (the gaps'
+// harmonics) or composed with theta -> 2 theta (a stiffness profile). Why a model of its
+// own rather than a `period` flag inside HarmonicBalance: every consumer of a model (the
+// exact flow, the shooting, the time integration, the response, the bifurcation location)
+// then works unchanged on the period-2 orbit, its period 2 pi / Omega being two forcing
+// periods, with no second meaning of omega to get wrong. Its frequency parameter is
+// Omega: a FrequencyCurve of the period-2 model holds Omega (forcing omega = 2 Omega). The
+// continuation's scaled parameter Omega / (omega_scale / 2) equals omega / omega_scale, so
+// the arc length, steps and tolerances are those of a continuation in the forcing
+// frequency.
+//
+// The switch at a PD of the period-1 curve c (located omega_pd, between two points):
+//  1. the PD point: the chord point at omega_pd corrected onto the period-1 branch;
+//  2. its Floquet multipliers on the corrected orbit (floquet.hpp) and the real eigenvector
+//     e = (dx0, dv0) of the multiplier nearest -1;
+//  3. the eigen-solution dx(t) over one forcing period, by central differences of the
+//     exact flow (PiecewiseLinearFlow) from the corrected state +- delta e; it is
+//     antiperiodic (dx(t + T) = -dx(t) for mu = -1), so it lives on the odd harmonics of
+//     Omega, and its coefficients are the trapezoid sums over one period (spectrally
+//     accurate: the integrand dx(t) cos(k Omega t), k odd, is T-periodic);
+//  4. a period-1 point re-expressed on the period-2 basis (harmonic k -> 2k) is a solution
+//     of the period-2 model with zero odd harmonics; the period-2 HB branch crosses the
+//     period-1 branch where the odd block of the period-2 Jacobian is singular (its own
+//     branch point, beside the PD by the truncation error; located by bisection on the
+//     sign of its determinant), and leaves it along that block's null vector. The Floquet
+//     eigen-solution picks that null vector (one inverse iteration from it; their cosine is
+//     reported: 0.9986 for ex. 03) and cannot replace it: 5 % of a direction off the null
+//     vector leaves a residual that the nearly singular corrector turns into an O(1) step
+//     (tried: Newton diverged from the PD with the Floquet direction itself). The first
+//     point is the branch point plus `step` (scaled arc length) along the null vector,
+//     corrected in the hyperplane normal to it (so it cannot fall back onto the period-1
+//     orbit), and the branch is continued with the existing arc length
+//     (arc_length_continuation_from);
+//  5. it ends where its odd harmonics change sign (it crossed the period-1 branch: it
+//     merged at another PD; the crossing is refined by secant iterations on the chord to
+//     |odd| ~ 0 and matched to the nearest located PD of c), where it leaves the range
+//     (complete), or where the continuation fails (the reason kept; the rest of the run
+//     stands).
+// The two directions +-e from the PD give the same orbits shifted by one forcing period
+// (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
+// a PD where an earlier branch merged is not switched again.
+//
+// Stability of the period-2 points: analyse_stability on the period-2 model, i.e. Floquet
+// multipliers of the orbit corrected by shooting over two forcing periods, and its own
+// bifurcations (its PDs would start period-4 branches: depth 1 = period 2 only for now).
+// Models with a time-varying contact stiffness have no exact flow: the switch reports it.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+
+namespace gearhb {
+
+// The period-p model of hb (p >= 1): base frequency omega / p, H2 harmonics (0: p H).
+std::shared_ptr<HarmonicBalance> subharmonic_model(const HarmonicBalance& hb, int p, int H2 = 0);
+
+// X of hb (H harmonics) on the basis of the period-p model hbp: harmonic k -> p k (those
+// beyond hbp's harmonics dropped).
+Eigen::VectorXd to_subharmonic_basis(const HarmonicBalance& hb, const HarmonicBalance& hbp, int p,
+                                     const Eigen::VectorXd& X);
+
+// X of hbp with the coefficients of the harmonics that are multiples of p zeroed: the part
+// that a period-1 orbit does not have (p = 2: the odd harmonics of Omega).
+Eigen::VectorXd subharmonic_part(const HarmonicBalance& hbp, int p, const Eigen::VectorXd& X);
+
+struct PeriodDoublingOptions {
+  double step = 0.02;    // scaled arc length of the first point off the PD
+  int samples = 512;     // samples of the eigen-solution over one forcing period
+};
+
+// Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
+struct SwitchPoint {
+  BranchPoint at;                // the PD point on hb's branch (Floquet-located omega)
+  Eigen::VectorXd phi_floquet;   // odd-harmonic coefficients (hbp's basis, unit norm) of the
+                                 // critical Floquet eigen-solution of its corrected orbit
+  BranchPoint branch_point;      // the period-2 model's own branch point on hb's branch
+  Eigen::VectorXd phi;           // the null vector there of the odd block of hbp's Jacobian
+                                 // (inverse iteration from phi_floquet), on hbp's basis
+  double agreement = NAN;        // |phi' phi_floquet|: 1 when both see the same eigen-solution
+};
+SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
+                               const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp);
+
+struct PeriodDoubledBranch {
+  int period = 2;
+  std::size_t from = 0;          // index in c.bifurcations of the PD it starts at
+  double omega_start = NAN;      // forcing frequency of that PD [rad/s]
+  double omega_branch_point = NAN;   // the period-2 model's branch point there (SwitchPoint) [rad/s]
+  double direction_agreement = NAN;  // SwitchPoint::agreement
+  std::shared_ptr<HarmonicBalance> model;   // the period-2 model
+  FrequencyCurve curve;          // on the model: point omegas are Omega = omega / 2
+  // How it ends: merged (at another PD of c: `to`, its index in c.bifurcations, and
+  // omega_end the refined crossing [forcing rad/s]), left the range, or failed (why).
+  enum class End { merged, left_range, failed } end = End::failed;
+  int to = -1;
+  double omega_end = NAN;
+  std::string why;               // one line: where and why it ended
+};
+
+// One period-2 branch per PD of c not already reached by an earlier branch (opt: the
+// options of the period-1 sweep, whose range bounds the branches).
+std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                         const SweepOptions& opt,
+                                                         const PeriodDoublingOptions& pdo = {});
+
+}  // namespace gearhb

@@ -1,0 +1,171 @@
+// Period-doubled branches by harmonic balance (hb/period_doubling.hpp, issue 34 §1).
+//  - NLvib example 03 (test_models::nlvib_ex03) at H = 40 (H2 = 80: at H = 21 the period-2
+//    model has no branch point beside the PDs, period_doubling.hpp): the period-2 branch
+//    switched at one PD must end at the other, both located by Floquet on the exact flow
+//    (reference/scripts/nlvib_ex03_exact.json, +-1e-11), and its stable points must be
+//    period-2 orbits of the original model by GSL time integration (q1's max over two
+//    periods, the orbit period-2 and not period-1).
+//  - The period-2 HB of the same oscillator agrees with shooting over two forcing periods
+//    on the exact flow of the ORIGINAL model (PiecewiseLinearFlow of the period-1 model:
+//    no harmonic balance), a method independent of the period-2 model.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/hb/floquet.hpp"
+#include "gearhb/hb/period_doubling.hpp"
+#include "gearhb/hb/response.hpp"
+#include "gearhb/hb/time_integration.hpp"
+#include "test_models.hpp"
+
+using namespace gearhb;
+
+namespace {
+// Exact-flow period doublings of ex. 03 (test_nlvib_ex03.cpp, nlvib_ex03_exact.json).
+constexpr double kPdHigh = 0.755586159356, kPdLow = 0.738783025373;
+
+struct Ex03Pd {
+  HarmonicBalance hb = test_models::nlvib_ex03(40);
+  SweepOptions o = test_models::nlvib_ex03_sweep(StabilityMethod::floquet);
+  FrequencyCurve c;
+  std::vector<PeriodDoubledBranch> br;
+  Ex03Pd() {
+    c = sweep_frequency(hb, o, "ex03");
+    br = period_doubled_branches(hb, c, o);
+  }
+};
+const Ex03Pd& ex03() {
+  static const Ex03Pd e;
+  return e;
+}
+double odd_norm(const PeriodDoubledBranch& b, const BranchPoint& p) { return subharmonic_part(*b.model, 2, p.X).norm(); }
+}  // namespace
+
+TEST(PeriodDoubling, Ex03BranchJoinsTheTwoDoublings) {
+  const auto& e = ex03();
+  ASSERT_TRUE(e.c.complete) << e.c.failure;
+  // one branch: switched at the first PD met (the sweep runs down), the second is its end
+  ASSERT_EQ(e.br.size(), 1u);
+  const PeriodDoubledBranch& b = e.br[0];
+  EXPECT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+  EXPECT_NEAR(b.omega_start, kPdHigh, 1e-9);
+  // the HB's own branch points beside the exact PDs (truncation at H = 40: measured 6e-7, 1.7e-6)
+  EXPECT_NEAR(b.omega_branch_point, kPdHigh, 5e-6);
+  EXPECT_NEAR(b.omega_end, kPdLow, 5e-6) << b.why;
+  ASSERT_GE(b.to, 0);
+  EXPECT_NEAR(e.c.bifurcations[std::size_t(b.to)].omega, kPdLow, 1e-9);
+  // the Floquet eigen-solution and the HB null vector are one direction
+  EXPECT_GT(b.direction_agreement, 0.999);
+  // odd harmonics: zero at both ends, large in between
+  const auto& P = b.curve.branch.points;
+  double largest = 0.0;
+  for (const auto& p : P) largest = std::max(largest, odd_norm(b, p));
+  EXPECT_GT(largest, 0.1);
+  EXPECT_EQ(odd_norm(b, P.front()), 0.0);
+  // resolved up to the merge: the last point (the refined crossing, or the last point before
+  // it where the refinement's corrector failed) within 2 % of the largest odd part
+  EXPECT_LT(odd_norm(b, P.back()), 0.02 * largest);
+}
+
+TEST(PeriodDoubling, Ex03StablePointsAreSeenByTimeIntegration) {
+  const auto& e = ex03();
+  ASSERT_EQ(e.br.size(), 1u);
+  const PeriodDoubledBranch& b = e.br[0];
+  const auto& P = b.curve.branch.points;
+  ResponseEvaluator ev(*b.model, Eigen::Vector2d(1, 0));
+  TimeIntegrator ti(e.hb);   // the ORIGINAL (period-1) model at the forcing frequency
+  TimeIntegrationOptions to;
+  to.x_scale = e.c.scaling.x[0];
+  to.samples_per_period = 4000;
+  int compared = 0, unstable = 0;
+  for (std::size_t i = 0; i < P.size(); i += 6) {
+    if (!b.curve.stable[i]) {
+      ++unstable;
+      continue;
+    }
+    if (b.curve.floquet[i].modulus > 0.9) continue;   // slow to settle
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(*b.model, P[i].X, P[i].omega, x0, v0);
+    const double omega = 2.0 * P[i].omega;
+    // 300 transient forcing periods: |mu| <= 0.9 per two periods leaves < 1e-13 of a start error
+    const Eigen::MatrixXd x = ti.sample(x0, v0, omega, 300, 4, to);
+    const Eigen::Index S = to.samples_per_period;
+    const double max12 = x.col(0).head(2 * S).maxCoeff(), max34 = x.col(0).tail(2 * S).maxCoeff();
+    const double max1 = x.col(0).head(S).maxCoeff(), max2 = x.col(0).segment(S, S).maxCoeff();
+    const double hb_max = ev.summarize(P[i].X).x_max;
+    // period 2: periods 3-4 repeat 1-2, and the two forcing periods differ (by the odd part)
+    EXPECT_NEAR(max34, max12, 1e-8) << omega;
+    EXPECT_GT((x.block(0, 0, S, 1) - x.block(S, 0, S, 1)).cwiseAbs().maxCoeff(), 1e-3) << omega;
+    // q1 max over two periods: HB (H2 = 80) against the integration. Tolerance, by the
+    // triangle inequality through the exact orbit (the HB orbit corrected by shooting over
+    // two periods): the HB orbit's distance to it, max |x_HB - x_exact| on 4000 samples a
+    // period (FloquetResult::orbit_error), + the sampled crest of the integration (4000
+    // samples a period: |x| (pi / 4000)^2 / 2 = 3.3e-7) + the integration's own error (1e-9).
+    FloquetOptions dense;
+    dense.steps = 8000;
+    const double orbit_error = floquet_of_hb_orbit(*b.model, P[i].X, P[i].omega, e.c.scaling.x[0], dense).orbit_error;
+    const double tol = orbit_error + 3.3e-7 * std::fabs(max12) + 1e-9;
+    EXPECT_NEAR(hb_max, max12, tol) << "omega " << omega << " (max of one period " << max1 << ", " << max2 << ")";
+    ++compared;
+  }
+  EXPECT_GE(compared, 4);
+  EXPECT_GE(unstable, 1);   // the stretch past the fold near the upper PD
+}
+
+TEST(PeriodDoubling, Ex03PeriodTwoHbMatchesShootingOverTwoPeriods) {
+  // An independent period-2 orbit: Newton on the period-2 map of the ORIGINAL model's exact
+  // flow (two applications of the one-period map; no harmonic balance), started from the HB
+  // state, against the HB orbit at a stable point in the middle of the branch.
+  const auto& e = ex03();
+  ASSERT_EQ(e.br.size(), 1u);
+  const PeriodDoubledBranch& b = e.br[0];
+  const auto& P = b.curve.branch.points;
+  const BranchPoint& p = P[P.size() / 2];
+  const double omega = 2.0 * p.omega, T = 2.0 * M_PI / omega;
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(*b.model, p.X, p.omega, x0, v0);
+  PiecewiseLinearFlow flow(e.hb);
+  std::vector<double> nodes;
+  for (int j = 0; j < 128; ++j) nodes.push_back(T * j / 128);
+  const int n = 2;
+  Eigen::VectorXd y(2 * n);
+  y << x0, v0;
+  const Eigen::VectorXd y_hb = y;
+  double res = INFINITY;
+  for (int it = 0; it < 20 && res > 1e-12; ++it) {
+    Eigen::VectorXd x1, v1, x2, v2;
+    Eigen::MatrixXd P1, P2;
+    flow.period_map(y.head(n), y.tail(n), omega, nodes, x1, v1, P1);
+    flow.period_map(x1, v1, omega, nodes, x2, v2, P2);
+    Eigen::VectorXd F(2 * n);
+    F << x2 - y.head(n), v2 - y.tail(n);
+    res = F.cwiseAbs().maxCoeff();
+    y -= (P2 * P1 - Eigen::MatrixXd::Identity(2 * n, 2 * n)).partialPivLu().solve(F);
+  }
+  ASSERT_LT(res, 1e-12);
+  // the shot orbit is period 2, not period 1
+  Eigen::VectorXd x1, v1;
+  Eigen::MatrixXd P1;
+  flow.period_map(y.head(n), y.tail(n), omega, nodes, x1, v1, P1);
+  EXPECT_GT((x1 - y.head(n)).norm(), 1e-3);
+  // HB state at phase 0 against it: within the HB orbit error of that point
+  EXPECT_LT((y - y_hb).head(n).cwiseAbs().maxCoeff(), b.curve.floquet[P.size() / 2].orbit_error + 1e-9);
+}
+
+TEST(PeriodDoubling, SubharmonicModelPlacesTheForcingOnHarmonicTwo) {
+  // The period-1 solution re-expressed on the period-2 basis solves the period-2 model
+  // (ex. 03 at one omega: the residual of the embedded point is that of the period-1 point).
+  const auto& e = ex03();
+  const HarmonicBalance& hb = e.hb;
+  const auto hbp = subharmonic_model(hb, 2);
+  ASSERT_EQ(hbp->harmonics(), 80);
+  ASSERT_EQ(hbp->excitation().harmonic, 2);
+  for (std::size_t i : {std::size_t(0), e.c.branch.points.size() / 2}) {
+    const BranchPoint& p = e.c.branch.points[i];
+    Eigen::VectorXd R1, R;
+    hb.evaluate(p.X, p.omega, R1, nullptr, nullptr);
+    hbp->evaluate(to_subharmonic_basis(hb, *hbp, 2, p.X), p.omega / 2, R, nullptr, nullptr);
+    EXPECT_LT(R.cwiseAbs().maxCoeff(), 1e-9 * e.c.scaling.residual + 10 * R1.cwiseAbs().maxCoeff());
+    EXPECT_EQ(subharmonic_part(*hbp, 2, to_subharmonic_basis(hb, *hbp, 2, p.X)).norm(), 0.0);
+  }
+}
