@@ -69,7 +69,7 @@ def rows_of(d, branch):
     return {k: [v[i] for i in keep] for k, v in d.items()}
 
 
-PERIOD2_COLOURS = ["C3", "C2", "C4", "C5", "C6", "C8", "C9", "C1"]
+PERIOD2_COLOURS = ["C2", "C4", "C5", "C6", "C8", "C9", "C1"]   # not red: the diagram draws chaos red
 
 
 def main():

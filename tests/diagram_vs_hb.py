@@ -36,6 +36,7 @@ def main():
         h = [r for r in hb if group is None or r[group] == g]
         branch = [r for r in h if r["point"] == "branch"]
         frc = rows(d_dir + ("/frc.csv" if g is None else "/frc_%s.csv" % g))
+        frc = [r for r in frc if r.get("branch", "0") == "0"]   # the period-1 branch (period-2 rows follow it)
         assert len(frc) == len(branch), "frc and the HB section table differ in length"
         E = max(float(r["hb_orbit_error"]) * scale for r, b in zip(frc, branch) if b["stable"] == "1"
                 and r["hb_orbit_error"])
