@@ -138,13 +138,16 @@ class GearPairFromFile {
   void draw(Run& run) const;
 
   // The dynamics, per torque (README "The pair over its speed range").
+  // One mesh model per torque: built once, its curve, summary and closed-contact frequency.
   struct Response {
     DteGear mesh;
     FrequencyCurve curve;
     MeshCurveSummary summary;
+    double f_natural = 0.0;   // the one-DOF closed-contact mesh frequency [Hz]
   };
   BearingSupport bearings() const;
-  Response response(Run& run, std::size_t i) const;
+  DteGear mesh_at(std::size_t i) const;
+  Response response(Run& run, std::size_t i, const DteGear& mesh, const HarmonicBalance& hb) const;
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
@@ -430,8 +433,9 @@ void GearPairFromFile::dynamics(Run& run) const {
   const std::vector<std::string> lead{"torque_index", "torque_Nm", "f_mesh_hz", "speed_rpm"};
   Table diagram(bifurcation_columns(lead, "dte_um")), diagram_hb(hb_section_columns(lead, "dte_um"));
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
-    const Response r = response(run, i);
-    const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
+    const DteGear mesh = mesh_at(i);
+    const HarmonicBalance hb = gear_mesh_model(mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
+    const Response r = response(run, i, mesh, hb);
     response_tables(run, i, hb, r);
     response_key_numbers(run, i, r);
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
@@ -524,7 +528,7 @@ void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size
                                             Table& history, double& history_kv) const {
   const auto& P = r.curve.branch.points;
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
-  const double wn = 2.0 * M_PI * closed_contact_frequencies(r.mesh, MeshDofs::one_dof, {}).front();
+  const double wn = 2.0 * M_PI * r.f_natural;
   for (double omega : {0.5 * wn, r.summary.dte_rms_peak_omega, 1.5 * wn}) {
     std::size_t best = P.size();
     for (std::size_t k = 0; k < P.size(); ++k)
@@ -570,14 +574,21 @@ std::string GearPairFromFile::torque_label(std::size_t i) const {
   return label;
 }
 
-// The mesh at torque i and its frequency curve over the speed range.
-GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i) const {
+// The mesh at torque i (its STE from the tooth model, its equivalent mass and damping).
+DteGear GearPairFromFile::mesh_at(std::size_t i) const {
   const GearDynamicsInput& d = file_.dynamics;
   const double T = file_.torques[i];
+  return gear_pair_mesh(file_.pair, loaded_->ste(T), T, file_.gear[0].inertia, file_.gear[1].inertia, d.zeta,
+                        d.back_flank ? file_.backlash : INFINITY);
+}
+
+// The frequency curve of torque i's mesh model over the speed range.
+GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, const DteGear& mesh,
+                                                      const HarmonicBalance& hb) const {
+  const GearDynamicsInput& d = file_.dynamics;
   Response r;
-  r.mesh = gear_pair_mesh(file_.pair, loaded_->ste(T), T, file_.gear[0].inertia, file_.gear[1].inertia,
-                          d.zeta, d.back_flank ? file_.backlash : INFINITY);
-  const HarmonicBalance hb = gear_mesh_model(r.mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
+  r.mesh = mesh;
+  r.f_natural = closed_contact_frequencies(mesh, MeshDofs::one_dof, {}).front();
   SweepOptions o;
   o.omega_min = 2.0 * M_PI * d.f_mesh_from;
   o.omega_max = 2.0 * M_PI * d.f_mesh_to;
@@ -613,7 +624,7 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   KeyNumbers& key = run.key_numbers();
   const std::string n = std::to_string(i + 1);
   const MeshCurveSummary& s = r.summary;
-  const double fn = closed_contact_frequencies(r.mesh, MeshDofs::one_dof, {}).front();
+  const double fn = r.f_natural;
   if (i == 0) key.add("f_mesh_natural_hz", fn, "Hz");
   key.add("f_mesh_natural_hz_" + n, fn, "Hz");
   key.add("mesh_stiffness_kc_N_per_m_" + n, r.mesh.kc, "N/m");
