@@ -52,6 +52,8 @@ class FrequencyResponseFromFile {
   void read_model();
   void natural_frequencies(Run& run) const;
   void frequency_response(Run& run) const;
+  void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
+  void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void draw(Run& run) const;
 };
@@ -170,18 +172,29 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.write("frc.csv", frc);
   run.write("bifurcations.csv", bif);
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
-  if (model_.period_doubling_depth >= 1) {
-    int merged = 0;
-    for (const auto& b : pd) merged += b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
-    run.key_numbers().add("period2_branches", double(pd.size()), "-");
-    run.key_numbers().add("period2_branches_merged", double(merged), "-");
-    run.key_numbers().add("period2_points", double(period2_points), "-");
-    for (std::size_t k = 0; k < pd.size(); ++k) {   // where each branch starts and ends (forcing omega)
-      const std::string id = std::to_string(k + 1);
-      run.key_numbers().add("period2_omega_start_" + id, pd[k].omega_start, "rad/s");
-      if (std::isfinite(pd[k].omega_end)) run.key_numbers().add("period2_omega_end_" + id, pd[k].omega_end, "rad/s");
-    }
+  if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
+  curve_key_numbers(run, hb, c);
+  if (model_.diagram.on) bifurcation_diagram(run, hb, c);
+}
+
+// How many period-2 branches, how many merged, their points, where each starts and ends.
+void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd,
+                                                    int period2_points) const {
+  KeyNumbers& key = run.key_numbers();
+  int merged = 0;
+  for (const auto& b : pd) merged += b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
+  key.add("period2_branches", double(pd.size()), "-");
+  key.add("period2_branches_merged", double(merged), "-");
+  key.add("period2_points", double(period2_points), "-");
+  for (std::size_t k = 0; k < pd.size(); ++k) {   // where each branch starts and ends (forcing omega)
+    const std::string id = std::to_string(k + 1);
+    key.add("period2_omega_start_" + id, pd[k].omega_start, "rad/s");
+    if (std::isfinite(pd[k].omega_end)) key.add("period2_omega_end_" + id, pd[k].omega_end, "rad/s");
   }
+}
+
+// The period-1 curve's key numbers: points, folds, the peak, the response at either end.
+void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
   const ResponseEvaluator ev(hb, model_.output);
   double peak = ev.summarize(c.branch.points.front().X).x_max;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);
@@ -200,7 +213,6 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
     key.add(std::string("x_min_") + name, r.x_min, "m");
     key.add(std::string("stable_") + name, st ? 1.0 : 0.0, "-");
   }
-  if (model_.diagram.on) bifurcation_diagram(run, hb, c);
 }
 
 // Step 3b (with the file's bifurcation_diagram key): the diagram by time integration over the
