@@ -22,7 +22,8 @@ CHAPTERS = [
         ("figM7_*.png", "supplement M7", "Hill's method truncated at H against Floquet on the Mathieu and Meissner stability "
          "charts. Notice where the truncated Hill tongues depart from the Floquet boundaries (large q, few harmonics)."),
         ("figM8_*.png", "supplement M8", "Arc length without scaling on the micrometre gear problem. Notice it stays stuck near "
-         "the start: displacements of 1e-6 m beside frequencies of 1e3 rad/s make the arc-length step meaningless."),
+         "the start: displacements of 1e-6 m beside a frequency unknown of thousands of rad/s (the axis is the mesh "
+         "frequency in Hz, omega / 2 pi) make the unscaled arc-length step a step in frequency alone."),
         ("figM9_*.png", "supplement M9", "Grazing: each method's error as the contact interval shrinks to zero. Notice which "
          "methods keep their accuracy at grazing and which lose it."),
     ]},
@@ -45,7 +46,8 @@ CHAPTERS = [
          "changes. Notice x(t) stays above the wall: an open-contact (linear) orbit."),
         ("fig14_*.png", "Fig. 14", "The same curve at point B, the largest response. Notice x(t) passes the wall every "
          "cycle: the contact closes for part of the period and the orbit is no longer a sine."),
-        ("fig15_*.png", "Fig. 15", "The same curve at point C, 0.05 rad/s after the last change of contact state. Notice "
+        ("fig15_*.png", "Fig. 15", "The same curve at point C, the first computed point at least 0.05 rad/s after the last change of contact "
+         "state (its omega is in the panel title). Notice "
          "the orbit is back above the wall: open again."),
         ("fig16_*.png", "Fig. 16", "Starting in contact (g = -0.5 m, F0 = 1 N), point A before separation. Notice x(t) "
          "stays in contact: the amplitude is not enough to leave the wall."),
@@ -144,8 +146,8 @@ CHAPTERS = [
          "(deflection x200). Notice each pair carries part of the load."),
         ("fig60_*.png", "Fig. 60", "STE over the mesh cycle for 100, 200, 300 N m. Notice the jumps where the second pair "
          "enters and leaves: the single-pair zone has the largest STE."),
-        ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE. Notice the mean and the first few harmonics: they are "
-         "the excitation of chapter 8."),
+        ("fig61_*.png", "Fig. 61", "Fourier coefficients of the STE (harmonics 1 and up; the mean is printed in the title). Notice "
+         "the first few harmonics: with the mean they are the excitation of chapter 8."),
         ("fig62_*.png", "Fig. 62", "The refined 14-element model with its contact node pairs."),
         ("fig63_*.png", "Fig. 63", "STE of the 14-element model. Notice its maximum at 300 N m, 13.753 um, 0.12 % below the "
          "thesis' 13.77 um (key numbers below)."),

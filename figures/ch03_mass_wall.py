@@ -53,9 +53,9 @@ def pair_title(data_dir, fig, cases, vary):
     return "Fig. %s: g = %g m, Fa = %g and %g N" % (fig, r0["gap"], r0["Fa"], r1["Fa"])
 
 
-POINT_RULE = {"A": "0.02 rad/s before the contact state first changes along the curve",
+POINT_RULE = {"A": "the last point at least 0.02 rad/s before the contact state first changes",
               "B": "the largest response on the curve",
-              "C": "0.05 rad/s after the last change of contact state"}
+              "C": "the first point at least 0.05 rad/s after the last change of contact state"}
 
 
 def time_figures(data_dir, fig_dir, label, first_fig, names):

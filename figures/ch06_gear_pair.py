@@ -12,7 +12,7 @@ mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
 import math
 
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
+from style import (read_params, BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
                    NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, plot_branch, read_csv,
                    rug_room, save)
 
@@ -96,6 +96,20 @@ def mark_bilinear_dip(ax, d, w_open, w_closed):
                 fontsize=7, arrowprops=dict(arrowstyle="->", lw=0.8))
 
 
+def separation_note(ax, d, params):
+    """Say, from this run's numbers, what the largest mesh separation is beside the gears' size:
+    the thesis' loads drive the mesh open by more than a base radius, which a real pair (its back
+    flank, its backlash) would not allow; this model has no back flank."""
+    gap = -min(d["x_min"])
+    rb = min(params["rb1"], params["rb2"])
+    if gap <= 0.0:
+        return
+    ax.text(0.01, 0.02, "largest separation -$\\Delta_{min}$ = %.3g m = %.1f x the smaller base radius (%.3g m):\n"
+            "the thesis' loads on a model without a back flank (no backlash limits the opening)"
+            % (gap, gap / rb, rb), transform=ax.transAxes, fontsize=7, va="bottom",
+            bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
+
+
 def case_figure(data_dir, fig_dir, row, name):
     label, mesh = row["label"], row["mesh"]
     d = read_csv(data_dir / ("frc_%s.csv" % label))
@@ -118,6 +132,7 @@ def case_figure(data_dir, fig_dir, row, name):
                 fontsize=7, xytext=(0, 3), textcoords="offset points", ha="right")
     if mesh == "kc":
         mark_bilinear_dip(a1, d, w_open, w_closed)
+    separation_note(a1, d, read_params(data_dir))
     what = "Fig. %d" % int(row["figure"]) if mesh == "kc" else \
         "Supplement S%d (Fig. %d's loads with the printed kc)" % (int(row["figure"]), int(row["figure"]))
     a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"

@@ -99,18 +99,13 @@ def rows(d):
     return [{k: d[k][i] for k in keys} for i in range(len(d[keys[0]]))]
 
 
-def draw(data_dir, fig_dir):
-    data_dir, fig_dir = pathlib.Path(data_dir), str(fig_dir)
-    made = []
-    D = lambda n: read(os.path.join(data_dir, n))  # noqa: E731
-    par = read_params(data_dir)
-    index = {int(r["figure"]): r for r in rows(D("deflection_cases.csv"))}
+def thickness_text(r):
+    return "constant %g mm thickness" % r["constant_thickness_mm"] if r["thickness"] == "constant" else \
+        "involute thickness"
 
-    def thickness_text(r):
-        return "constant %g mm thickness" % r["constant_thickness_mm"] if r["thickness"] == "constant" else \
-            "involute thickness"
 
-    # Figs. 48-49: one pair, constant thickness, torque_3.
+def single_pair_deflections(D, index, fig_dir, made):
+    """Figs. 48-49: one pair, constant thickness, torque_3."""
     for fig_no in (48, 49):
         r = index.get(fig_no)
         if r is None:
@@ -120,7 +115,9 @@ def draw(data_dir, fig_dir):
                           fig_dir, "fig%d_deflection_single_pair_%s.png" % (fig_no, r["nodes"]), made,
                           pairs=node_pairs(r["nodes"]))
 
-    # Figs. 50-51: exact cantilever elastic line with the FE nodes of the loaded beam.
+
+def exact_cantilevers(D, index, fig_dir, made):
+    """Figs. 50-51: exact cantilever elastic line with the FE nodes of the loaded beam."""
     for fig_no in (50, 51):
         r = index.get(fig_no)
         if r is None:
@@ -145,7 +142,9 @@ def draw(data_dir, fig_dir):
         ax.grid(alpha=0.3)
         save(fig, fig_dir, "fig%d_exact_cantilever_node%d.png" % (fig_no, node), made)
 
-    # Figs. 52-55: two fused pairs, constant thickness.
+
+def fused_pairs(D, index, fig_dir, made):
+    """Figs. 52-55: two fused pairs, constant thickness."""
     for fig_no in range(52, 56):
         r = index.get(fig_no)
         if r is None:
@@ -157,7 +156,9 @@ def draw(data_dir, fig_dir):
                           fig_dir, "fig%d_deflection_two_pairs_%s.png" % (fig_no, pairs.split(" ")[0]), made,
                           pairs=node_pairs(r["nodes"]), fused=True)
 
-    # Fig. 56: moment along the fused beam.
+
+def fused_beam_moment(D, index, fig_dir, made):
+    """Fig. 56: moment along the fused beam."""
     r = index[56]
     m = D(r["file"])
     fig, ax = plt.subplots(figsize=(7, 4))
@@ -178,7 +179,9 @@ def draw(data_dir, fig_dir):
     ax.grid(alpha=0.3)
     save(fig, fig_dir, "fig56_moment_fused_beam.png", made)
 
-    # Fig. 57: tooth profile and the stepped beam thickness.
+
+def tooth_profile(D, fig_dir, made):
+    """Fig. 57: tooth profile and the stepped beam thickness."""
     tp = D("tooth_profile.csv")
     fig, ax = plt.subplots(figsize=(5.5, 5.5))
     ax.plot([s / 2 for s in tp["thickness_mm"]], tp["height_mm"], "k-", label="involute flank, s(r)/2")
@@ -199,7 +202,9 @@ def draw(data_dir, fig_dir):
     ax.grid(alpha=0.3)
     save(fig, fig_dir, "fig57_tooth_profile.png", made)
 
-    # Figs. 58-59: deformed teeth, involute thickness, torque_3.
+
+def deformed_teeth(D, index, fig_dir, made):
+    """Figs. 58-59: deformed teeth, involute thickness, torque_3."""
     for fig_no in (58, 59):
         r = index.get(fig_no)
         if r is None:
@@ -212,25 +217,7 @@ def draw(data_dir, fig_dir):
         fig, axes = plt.subplots(1, len(beams), figsize=(max(7.5, 2.4 * len(beams)), 4.8), sharey=True)
         scale = 200.0  # deflection magnification
         for ax, (b, pts) in zip(axes, sorted(beams.items())):
-            x = [p[0] for p in pts]
-            w = [p[1] for p in pts]
-            th = [p[2] for p in pts]
-            ax.plot([t / 2 for t in th], x, color="grey", lw=0.8)
-            ax.plot([-t / 2 for t in th], x, color="grey", lw=0.8, label="undeformed")
-            ax.plot([wi * 1e-3 * scale + t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1)
-            ax.plot([wi * 1e-3 * scale - t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1,
-                    label="deformed (x%d)" % scale)
-            ax.plot([wi * 1e-3 * scale for wi in w], x, "C3.", ms=3)
-            hit = [(wi * 1e-3 * scale, xi, n) for xi, wi, _, n in pts if n in contact]
-            for u, xi, n in hit:
-                ax.plot([u], [xi], "o", ms=9, mfc="none", mec="k", mew=1.2,
-                        label=("contact node" if r["pairs"] == 1 else "fused contact node") if n == hit[0][2] else None)
-                ax.annotate("node %d" % n, (u, xi), xytext=(6, 4), textcoords="offset points", fontsize=7)
-            ax.set_title("beam %d (%s)\nmax |w| = %.2f um" % (b, "driving" if b % 2 else "driven",
-                                                               max(abs(v) for v in w)), fontsize=8)
-            ax.set_xlabel("transverse position [mm]", fontsize=8)
-            ax.set_xlim(-4.5, 4.5)
-            ax.grid(alpha=0.3)
+            deformed_tooth(ax, b, pts, contact, scale, r["pairs"])
         axes[0].set_ylabel("height above the root [mm]")
         handles, labels = axes[0].get_legend_handles_labels()
         fig.legend(handles, labels, fontsize=7, loc="lower center", ncol=3, frameon=False)   # off the teeth
@@ -241,60 +228,90 @@ def draw(data_dir, fig_dir):
         save(fig, fig_dir, "fig%d_deformed_teeth_%s.png" % (fig_no, "single" if fig_no == 58 else "two"), made,
              rect=(0, 0.07, 1, 1))
 
-    # Figs. 60/63: STE over the mesh cycle; Figs. 61/64 its Fourier coefficients.
-    cases = rows(D("cases.csv"))
 
-    def ste_figures(model, fig_ste, fig_four):
-        mine = sorted([c for c in cases if c["model"] == model], key=lambda c: c["torque_N_m"])
-        if not mine:
-            return
-        torques = [c["torque_N_m"] for c in mine]
-        label = "%d elements, %d positions per base pitch" % (mine[0]["tooth_elements"],
-                                                              mine[0]["positions_per_base_pitch"])
-        fig, ax = plt.subplots(figsize=(7, 4.2))
-        for c in mine:
-            d = D(c["file"])
-            ph = d["phase"] + [1.0]
-            ste = d["ste_um"] + [d["ste_um"][0]]
-            ax.step(ph, ste, where="post", color=torque_colour(c["torque_N_m"], torques),
-                    label="T = %g Nm" % c["torque_N_m"])
-            ax.plot(d["phase"], d["ste_um"], "k.", ms=4)
-        n = len(D(mine[0]["file"])["phase"])
-        pairs = D(mine[0]["file"])["pairs_in_contact"]
-        for j, pr in enumerate(pairs):
-            if pr == 1:
-                ax.axvspan(j / n, (j + 1) / n, color="grey", alpha=0.12, lw=0)
-        ax.set_xlabel("mesh phase (fraction of one base pitch); shaded: one pair in contact")
-        ax.set_ylabel("static transmission error [um]")
-        ax.set_title("Fig. %d: STE over one mesh cycle, involute thickness + Hertz, %s\n"
-                     "(Parker, Vijayakar & Imajo's curve of the thesis figure: data not available)"
-                     % (fig_ste, label), fontsize=9)
-        ax.set_xlim(0, 1)
-        ax.legend(fontsize=8, loc="upper left")   # above the two-pair zone, clear of the curves
-        ax.grid(alpha=0.3)
-        save(fig, fig_dir, "fig%d_ste_mesh_cycle%s.png" % (fig_ste, "" if fig_ste == 60 else "_14_nodes"), made)
+def deformed_tooth(ax, b, pts, contact, scale, pairs):
+    """One beam of Figs. 58-59: undeformed and magnified deformed outline, its contact nodes."""
+    x = [p[0] for p in pts]
+    w = [p[1] for p in pts]
+    th = [p[2] for p in pts]
+    ax.plot([t / 2 for t in th], x, color="grey", lw=0.8)
+    ax.plot([-t / 2 for t in th], x, color="grey", lw=0.8, label="undeformed")
+    ax.plot([wi * 1e-3 * scale + t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1)
+    ax.plot([wi * 1e-3 * scale - t / 2 for wi, t in zip(w, th)], x, "C3-", lw=1,
+            label="deformed (x%d)" % scale)
+    ax.plot([wi * 1e-3 * scale for wi in w], x, "C3.", ms=3)
+    hit = [(wi * 1e-3 * scale, xi, n) for xi, wi, _, n in pts if n in contact]
+    for u, xi, n in hit:
+        ax.plot([u], [xi], "o", ms=9, mfc="none", mec="k", mew=1.2,
+                label=("contact node" if pairs == 1 else "fused contact node") if n == hit[0][2] else None)
+        ax.annotate("node %d" % n, (u, xi), xytext=(6, 4), textcoords="offset points", fontsize=7)
+    ax.set_title("beam %d (%s)\nmax |w| = %.2f um" % (b, "driving" if b % 2 else "driven",
+                                                       max(abs(v) for v in w)), fontsize=8)
+    ax.set_xlabel("transverse position [mm]", fontsize=8)
+    ax.set_xlim(-4.5, 4.5)
+    ax.grid(alpha=0.3)
 
-        fig, ax = plt.subplots(figsize=(7, 4.2))
-        width = 0.8 / len(mine)
-        for i, c in enumerate(mine):
-            d = D(c["fourier_file"])
-            h = [k for k in d["harmonic"] if k > 0]
-            a = [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k > 0]
-            ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width,
-                   color=torque_colour(c["torque_N_m"], torques), label="T = %g Nm" % c["torque_N_m"])
-        ax.set_xlabel("harmonic of the mesh frequency k")
-        ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
-        ax.set_xticks(h)
-        ax.set_title("Fig. %d: Fourier coefficients of the STE (FFTW, %d samples per cycle;\n"
-                     "harmonic 0 = mean not shown), %s" % (fig_four, n, label), fontsize=9)
-        ax.legend(fontsize=8)
-        ax.grid(alpha=0.3, axis="y")
-        save(fig, fig_dir, "fig%d_ste_fourier%s.png" % (fig_four, "" if fig_four == 61 else "_14_nodes"), made)
 
-    ste_figures("first", 60, 61)
-    ste_figures("refined", 63, 64)
+def ste_cycle(D, mine, fig_ste, fig_dir, made):
+    """Figs. 60/63: the STE over the mesh cycle, one curve per torque."""
+    torques = [c["torque_N_m"] for c in mine]
+    label = model_label(mine)
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    for c in mine:
+        d = D(c["file"])
+        ph = d["phase"] + [1.0]
+        ste = d["ste_um"] + [d["ste_um"][0]]
+        ax.step(ph, ste, where="post", color=torque_colour(c["torque_N_m"], torques),
+                label="T = %g Nm" % c["torque_N_m"])
+        ax.plot(d["phase"], d["ste_um"], "k.", ms=4)
+    n = len(D(mine[0]["file"])["phase"])
+    pairs = D(mine[0]["file"])["pairs_in_contact"]
+    for j, pr in enumerate(pairs):
+        if pr == 1:
+            ax.axvspan(j / n, (j + 1) / n, color="grey", alpha=0.12, lw=0)
+    ax.set_xlabel("mesh phase (fraction of one base pitch); shaded: one pair in contact")
+    ax.set_ylabel("static transmission error [um]")
+    # Only the thesis' Fig. 60 carries Parker, Vijayakar & Imajo's curve; Fig. 63 has none.
+    note = "\n(Parker, Vijayakar & Imajo's curve of the thesis figure: data not available)" if fig_ste == 60 else ""
+    ax.set_title("Fig. %d: STE over one mesh cycle, involute thickness + Hertz, %s%s"
+                 % (fig_ste, label, note), fontsize=9)
+    ax.set_xlim(0, 1)
+    ax.legend(fontsize=8, loc="upper left")   # above the two-pair zone, clear of the curves
+    ax.grid(alpha=0.3)
+    save(fig, fig_dir, "fig%d_ste_mesh_cycle%s.png" % (fig_ste, "" if fig_ste == 60 else "_14_nodes"), made)
 
-    # Fig. 62: the refined model, contact nodes per position.
+
+def ste_fourier(D, mine, fig_four, fig_dir, made):
+    """Figs. 61/64: the STE's Fourier amplitudes k >= 1 per torque (the mean, k = 0, in the title)."""
+    torques = [c["torque_N_m"] for c in mine]
+    n = len(D(mine[0]["file"])["phase"])
+    fig, ax = plt.subplots(figsize=(7, 4.2))
+    width = 0.8 / len(mine)
+    means = []
+    for i, c in enumerate(mine):
+        d = D(c["fourier_file"])
+        h = [k for k in d["harmonic"] if k > 0]
+        a = [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k > 0]
+        means += [v for k, v in zip(d["harmonic"], d["amplitude_um"]) if k == 0]
+        ax.bar([k + (i - (len(mine) - 1) / 2) * width for k in h], a, width,
+               color=torque_colour(c["torque_N_m"], torques), label="T = %g Nm" % c["torque_N_m"])
+    ax.set_xlabel("harmonic of the mesh frequency k")
+    ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
+    ax.set_xticks(h)
+    ax.set_title("Fig. %d: Fourier coefficients of the STE (FFTW, %d samples per cycle), %s\n"
+                 "harmonic 0 (the mean, not drawn): %s um" % (fig_four, n, model_label(mine),
+                                                               ", ".join("%.3f" % m for m in means)), fontsize=9)
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3, axis="y")
+    save(fig, fig_dir, "fig%d_ste_fourier%s.png" % (fig_four, "" if fig_four == 61 else "_14_nodes"), made)
+
+
+def model_label(mine):
+    return "%d elements, %d positions per base pitch" % (mine[0]["tooth_elements"], mine[0]["positions_per_base_pitch"])
+
+
+def contact_node_scheme(D, fig_dir, made):
+    """Fig. 62: the refined model, contact nodes per position."""
     s = D("mesh_scheme.csv")
     ne, P = int(s["tooth_elements"][0]), int(s["positions_per_base_pitch"][0])
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -319,7 +336,9 @@ def draw(data_dir, fig_dir):
     ax.grid(alpha=0.3)
     save(fig, fig_dir, "fig62_model_14_nodes.png", made)
 
-    # Extra (not a thesis figure): convergence in the number of positions per base pitch.
+
+def position_convergence(D, par, fig_dir, made):
+    """Extra (not a thesis figure): convergence in the number of positions per base pitch."""
     c = D("convergence.csv")
     g = D("geometry.csv")
     eps = g["value"][g["quantity"].index("contact_ratio")]
@@ -339,6 +358,27 @@ def draw(data_dir, fig_dir):
     ax1.legend(h1 + h2, l1 + l2, fontsize=8, loc="center right")
     ax1.grid(alpha=0.3)
     save(fig, fig_dir, "ch07_extra_convergence.png", made)
+
+
+def draw(data_dir, fig_dir):
+    data_dir, fig_dir = pathlib.Path(data_dir), str(fig_dir)
+    made = []
+    D = lambda n: read(os.path.join(data_dir, n))  # noqa: E731
+    index = {int(r["figure"]): r for r in rows(D("deflection_cases.csv"))}
+    single_pair_deflections(D, index, fig_dir, made)
+    exact_cantilevers(D, index, fig_dir, made)
+    fused_pairs(D, index, fig_dir, made)
+    fused_beam_moment(D, index, fig_dir, made)
+    tooth_profile(D, fig_dir, made)
+    deformed_teeth(D, index, fig_dir, made)
+    cases = rows(D("cases.csv"))
+    for model, fig_ste, fig_four in (("first", 60, 61), ("refined", 63, 64)):
+        mine = sorted([c for c in cases if c["model"] == model], key=lambda c: c["torque_N_m"])
+        if mine:
+            ste_cycle(D, mine, fig_ste, fig_dir, made)
+            ste_fourier(D, mine, fig_four, fig_dir, made)
+    contact_node_scheme(D, fig_dir, made)
+    position_convergence(D, read_params(data_dir), fig_dir, made)
     four_beam_model(D, index, fig_dir, made)
     base_pitch_figure(D("geometry.csv"), fig_dir, made)
     tooth_axis(D, fig_dir, made)

@@ -12,6 +12,7 @@ import math
 import matplotlib.pyplot as plt
 from style import COMPARISON_COLOURS
 
+PRINTED_BN_E_PRIME_UM = "13.5"   # thesis §9 p. 80-84 (reference/ch09_backlash.json bn_E_prime_um_thesis)
 AXIS, PERP, LOA, CENTRE, TANGENT = "C1", "C0", "C2", "k", "0.55"   # the thesis' colour code of Fig. 65
 
 
@@ -104,8 +105,10 @@ def backlash_limit_figure(bg, path):
     ax.text(0.98, 0.04, "CE' = p_b - AC = %.3f mm" % CEp, transform=ax.transAxes, fontsize=8, ha="right")
     ax.set_title("Fig. 75: limit condition for the normal backlash: contact at E', the adjacent pair at A\n"
                  r"$\mu(E') = \alpha + \varepsilon + \varepsilon'$ = %.2f° (thesis %.2f°): "
-                 r"$b_n = b \cos\mu$ = %.2f µm (thesis %.2f µm), against %.2f µm at C"
-                 % (ex["mu_E_prime_deg"], th["mu_E_prime_deg"], ex["bn_E_prime_um"], th["bn_E_prime_um"], ex["bn_C_um"]),
+                 r"$b_n = b \cos\mu$ = %.2f µm (with the thesis' angles %.2f µm, printed truncated as %s µm), "
+                 "against %.2f µm at C"
+                 % (ex["mu_E_prime_deg"], th["mu_E_prime_deg"], ex["bn_E_prime_um"], th["bn_E_prime_um"],
+                    PRINTED_BN_E_PRIME_UM, ex["bn_C_um"]),
                  fontsize=9)
     ax.set_aspect("equal")
     ax.set_xlim(-1.3 * half, 1.3 * half)
