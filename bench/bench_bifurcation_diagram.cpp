@@ -1,15 +1,15 @@
 // The bifurcation diagram by time integration (issue 34 §3): the light-load gear
-// (chapters/gearhb_gear/examples/thesis_pair_light_load.json, read as gearhb_gear reads it) at
+// (programs/gearhb_gear/examples/thesis_pair_light_load.json, read as gearhb_gear reads it) at
 // its 20 N m torque, 400 speeds swept up and down over 300 .. 5000 Hz mesh frequency with the
 // library's default options, from the HB orbit at the lowest speed (the HB sweep outside the
-// timing). Target <= 30 s on 2 cores. Times go to chapters/gearhb_gear/README.md.
+// timing). Target <= 30 s on 2 cores. Times go to programs/gearhb_gear/README.md.
 #include <algorithm>
 #include <string>
 
 #include <benchmark/benchmark.h>
 
-#include "gearhb/app/gear_file.hpp"
-#include "gearhb/gears/loaded_pair.hpp"
+#include "gearhb/tools/gear_file.hpp"
+#include "gearhb/gears/pair/loaded_pair.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 
 #ifndef GEARHB_SOURCE_DIR
@@ -19,7 +19,7 @@
 using namespace gearhb;
 
 static void BM_bifurcation_diagram_light_load_gear_400_speeds(benchmark::State& state) {
-  const GearFile f = read_gear_file(std::string(GEARHB_SOURCE_DIR) + "/chapters/gearhb_gear/examples/thesis_pair_light_load.json", {});
+  const GearFile f = read_gear_file(std::string(GEARHB_SOURCE_DIR) + "/programs/gearhb_gear/examples/thesis_pair_light_load.json", {});
   const auto loaded = phase_loaded_pair(f.pair, f.phases);
   const double T = 20.0;
   const DteGear g = gear_pair_mesh(f.pair, loaded->ste(T), T, f.gear[0].inertia, f.gear[1].inertia, f.dynamics.zeta,

@@ -5,7 +5,7 @@
 //   build/bin/gearhb_bench --benchmark_filter=ch06
 #include <benchmark/benchmark.h>
 
-#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;

@@ -2,9 +2,9 @@
 // point, bifurcations located) at H = 5 and H = 20. Times go to the chapter README.
 #include <benchmark/benchmark.h>
 
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;

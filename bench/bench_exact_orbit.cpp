@@ -15,9 +15,9 @@
 #include <memory>
 #include <stdexcept>
 
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 #include "gearhb/hb/exact_orbit.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"

@@ -1,4 +1,4 @@
-// Tooth contact by finite elements (lib/gearhb/gears/fe_tooth_contact.hpp), the issue 33
+// Tooth contact by finite elements (lib/gearhb/gears/pair/fe_tooth_contact.hpp), the issue 33
 // §5 target: the FE models of a pair built and factored once (one model when both gears
 // are alike), the influence coefficients of 64 mesh phases, then STE at 3 torques.
 //   BM_fe_pair_build_and_ste/case/knots   meshing, assembly, factor, influence

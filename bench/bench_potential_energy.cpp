@@ -1,12 +1,12 @@
-// Potential-energy mesh stiffness (lib/gearhb/gears/potential_energy.hpp) of the thesis
+// Potential-energy mesh stiffness (lib/gearhb/gears/tooth/potential_energy.hpp) of the thesis
 // pair over one mesh cycle: 3 torques x 64 phases, every pair on the path of contact
 // evaluated (1 or 2 pairs, each two tooth compliances + Hertz). The PE stiffness is linear
 // (linear Hertz), so the three torques repeat the same work; they stand for the issue-20
 // benchmark's "3 torques x 64 phases". Arg: Gauss-Legendre points per tooth piece.
 #include <benchmark/benchmark.h>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/potential_energy.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
 
 using namespace gearhb;
 

@@ -6,7 +6,7 @@ For each chapter program build/bin/chNN_name:
   2. draw:    figures/chNN_name.py  (its draw(data_dir, fig_dir) function)
 Figures land in build/figures/figNN_*.png, named after the thesis figure number.
 Then, if build/bin/gearhb_gear exists, every gear-pair example of
-chapters/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
+programs/gearhb_gear/examples/ is run into build/data/gearhb_gear/<example>/ (the program
 draws its own figures there) and its figures are copied to
 build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the FE / beam /
 potential-energy comparison from those folders (build/figures/gear_methods*.png),
@@ -71,7 +71,7 @@ def main():
             print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
     gear = build / "bin" / "gearhb_gear"
     if gear.is_file() and not args.only:
-        for example in sorted((HERE.parent / "chapters" / "gearhb_gear" / "examples").glob("*.json")):
+        for example in sorted((HERE.parent / "programs" / "gearhb_gear" / "examples").glob("*.json")):
             out = build / "data" / "gearhb_gear" / example.stem
             print("[figures] %s %s --out %s" % (gear, example.name, out), flush=True)
             subprocess.run([str(gear), str(example), "--quiet", "--out", str(out)], check=True)

@@ -349,8 +349,8 @@ def gear_run_page(build, run_dir, fig_dir):
                   if (fig_dir / ("gear_%s_%s" % (stem, p.name))).exists())
     out = ["<h1>%s</h1>" % html.escape(title),
            "<p><a href='index.html'>back to the report</a>. Gear file "
-           "<code>chapters/gearhb_gear/examples/%s.json</code>, run by <code>make figures</code> into "
-           "<code>build/data/gearhb_gear/%s/</code> (README <code>chapters/gearhb_gear/README.md</code>).</p>"
+           "<code>programs/gearhb_gear/examples/%s.json</code>, run by <code>make figures</code> into "
+           "<code>build/data/gearhb_gear/%s/</code> (README <code>programs/gearhb_gear/README.md</code>).</p>"
            % (html.escape(stem), html.escape(stem))]
     prefix = "gear_%s_" % stem
     out += [figure_html(f, "gearhb_gear", gear_caption(f[len(prefix):], params), is_wide(fig_dir / f)) for f in figs]

@@ -1,4 +1,4 @@
-"""Generated tooth forms (lib/gearhb/gears/tooth_form.hpp) from the CSV that
+"""Generated tooth forms (lib/gearhb/gears/geometry/tooth_form.hpp) from the CSV that
 tests/tooth_form/write_csv.cpp writes (columns gear,x_mm,y_mm,nx,ny,segment): three teeth of
 each gear, the segments coloured, one panel a gear, and a close-up of the z = 10 pinion's
 undercut (the trochoid cutting into the involute). Not part of `make figures`; the CTest

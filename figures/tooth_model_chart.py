@@ -39,7 +39,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from style import COMPARISON_COLOURS, save  # noqa: E402
 
-EXAMPLES = pathlib.Path(__file__).resolve().parents[1] / "chapters" / "gearhb_gear" / "examples"
+EXAMPLES = pathlib.Path(__file__).resolve().parents[1] / "programs" / "gearhb_gear" / "examples"
 PAIRS = [("thesis_pair", "thesis z 50/50, m 3", "o"), ("fzg_c", "FZG C z 16/24, m 4.5", "s"),
          ("ross_pair", "ROSS z 62/62, m 2", "^")]
 BEAM_CONSISTENT = {"method": "beam", "hertz": "per_contact", "pair_hertz": "consistent",

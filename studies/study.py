@@ -13,7 +13,7 @@ done. This file holds no scheduler: only the study's meaning.
 
 A study file (JSON):
     {"name": "tip relief",                       (optional: printable text, at most 200 characters)
-     "base": "chapters/gearhb_gear/examples/thesis_pair_relief.json",   (relative to the study file)
+     "base": "programs/gearhb_gear/examples/thesis_pair_relief.json",   (relative to the study file)
      "axes": [ {"path": "gears.0.tip_relief.amount", "grid": {"from": 0, "to": 30e-6, "points": 41}},
                {"path": "gears.0.tip_relief.start.length", "values": [6.684e-3, 8.856e-3]},
                {"path": "torques.0", "random": {"from": 100, "to": 300, "samples": 5, "seed": 1}} ],

@@ -3,7 +3,7 @@
 
 Usage: gear_dynamics_vs_ch08.py GEARHB_GEAR CH08 EXAMPLE WORKDIR
 Runs chapter 8's regression subset (H = 5 at 100 / 200 / 300 N m, drive flank only) and
-gearhb_gear on chapters/gearhb_gear/examples/thesis_pair.json (the same pair, chapter 8's
+gearhb_gear on programs/gearhb_gear/examples/thesis_pair.json (the same pair, chapter 8's
 speed range, damping and H, with its 15 um backlash and the back flank modelled), then
 checks per torque, with the issue's tolerances:
   peak DTE RMS           within 0.5 %   (dte_rms_peak_um_<i> vs peak_rms_um_T<T>_H5)

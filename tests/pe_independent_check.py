@@ -1,5 +1,5 @@
 # Independent check of the potential-energy tooth compliance of
-# lib/gearhb/gears/potential_energy.hpp (bending, shear, axial, Sainsot fillet foundation),
+# lib/gearhb/gears/tooth/potential_energy.hpp (bending, shear, axial, Sainsot fillet foundation),
 # written without the library: the integrals in the centre-line coordinate x (the library
 # integrates in the pressure angle), composite Simpson with N intervals, the half thickness
 # y(x) by bisection on the involute radius. Its output is the expected values of

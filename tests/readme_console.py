@@ -30,7 +30,7 @@ several console blocks, `name@N` takes the number from the N-th block's run (1-b
 bare name from the last block that has it.
 
 The programs run in the repository's root folder, so a block may name an example file by
-its path there (`gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --set plot=0`).
+its path there (`gearhb_gear programs/gearhb_gear/examples/thesis_pair.json --set plot=0`).
 """
 import json
 import pathlib

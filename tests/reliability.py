@@ -19,7 +19,7 @@ import subprocess
 import sys
 
 BIN, SRC, WORK = (pathlib.Path(p).resolve() for p in sys.argv[1:4])
-EXAMPLES = SRC / "chapters" / "gearhb_frc" / "examples"
+EXAMPLES = SRC / "programs" / "gearhb_frc" / "examples"
 failures = []
 sys.stdout.reconfigure(errors="backslashreplace")   # a case's arguments may hold bytes that are not UTF-8
 
@@ -140,7 +140,7 @@ case("duplicate_key", ["gearhb_frc", model("duplicate", '{"name": "a", "name": "
 
 # 11. Issue 32: error lines are valid UTF-8 (run() checks every stderr), input files are
 # text of bounded lines, a file that is not what the key expects is never quoted.
-GEAR = SRC / "chapters" / "gearhb_gear" / "examples" / "thesis_pair.json"
+GEAR = SRC / "programs" / "gearhb_gear" / "examples" / "thesis_pair.json"
 def gear_file(name, text):
     path = WORK / (name + ".json")
     path.write_bytes(text)

@@ -11,7 +11,7 @@
 //
 // Delta > 0: teeth pressed together (mesh force kc Delta); Delta < 0: teeth apart.
 // The plotted coordinate is Delta (the thesis' "moto relativo"). Matrices in
-// lib/gearhb/gears/gear_pair.hpp; harmonic balance with exact contact intervals,
+// lib/gearhb/gears/pair/gear_pair.hpp; harmonic balance with exact contact intervals,
 // pseudo-arc-length continuation, Floquet stability of the corrected orbit and
 // the bifurcations along each curve (lib/gearhb/hb).
 //
@@ -38,7 +38,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
-#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/hb/response.hpp"

@@ -28,11 +28,11 @@
 #include <vector>
 
 #include "gearhb/app/study.hpp"
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/iso6336.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 
 using namespace gearhb;
 

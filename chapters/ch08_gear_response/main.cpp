@@ -13,7 +13,7 @@
 // x is the dynamic transmission error along the line of action, e(t) the loaded
 // STE of ch. 7 (periodic with the mesh period, theta = omega t = 2 pi f_mesh t),
 // me = I1 I2 / (I1 r2^2 + I2 r1^2), kc = mean of F0 / e(t), c = 2 zeta sqrt(kc me)
-// (lib/gearhb/gears/dte_model.hpp). Harmonic balance with the static term, exact
+// (lib/gearhb/gears/dynamics/dte_model.hpp). Harmonic balance with the static term, exact
 // projection of the contact law, one arc-length continuation per curve,
 // Floquet stability of every point (lib/gearhb/hb). The steps, in order (README
 // of this chapter): mesh_stiffness, gear_constants, frequency_responses (per
@@ -34,16 +34,16 @@
 #include <vector>
 
 #include "gearhb/app/case_table.hpp"
-#include "gearhb/app/gear_tables.hpp"
-#include "gearhb/app/gear_mesh_parameters.hpp"
+#include "gearhb/tools/gear_tables.hpp"
+#include "gearhb/tools/gear_mesh_parameters.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/dte_response.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
-#include "gearhb/gears/ste_file.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/dynamics/dte_response.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/pair/ste_file.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
 
@@ -56,7 +56,7 @@ constexpr double kUm = 1e6;   // m -> um
 
 // --- parameters: one struct per concern, thesis defaults (§8.1) ------------
 // (the gear pair, the STE, the mesh model (constant | parametric) and the frequency
-// range: GearMeshParameters, app/gear_mesh_parameters.hpp, shared with chapter 9)
+// range: GearMeshParameters, tools/gear_mesh_parameters.hpp, shared with chapter 9)
 struct OwnCase {
   double torque = 300.0;         // [N m]
   double pitch_radius = 0.075;   // r1 = r2 [m]

@@ -5,7 +5,7 @@
 //
 // Chapter 8's gear mesh, me x'' + c x' + max(kc (x + e(t)), 0) = F0, with the STE
 // e(t) of ch. 7 changed in the single-pair zone A'E' where it reaches the local
-// normal backlash b_n = b cos(mu) (b = 15 um nominal; lib/gearhb/gears/backlash.hpp):
+// normal backlash b_n = b cos(mu) (b = 15 um nominal; lib/gearhb/gears/pair/backlash.hpp):
 //   clip     e = min(e, b_n)                        (the thesis' reading, §9)
 //   contact  F0 = k1 e + k2 max(e - b_n, 0)          (the adjacent pair as a unilateral
 //            spring of the beam model's stiffness: the physical reading)
@@ -33,14 +33,14 @@
 #include <vector>
 
 #include "gearhb/app/case_table.hpp"
-#include "gearhb/app/gear_tables.hpp"
-#include "gearhb/app/gear_mesh_parameters.hpp"
+#include "gearhb/tools/gear_tables.hpp"
+#include "gearhb/tools/gear_mesh_parameters.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/gears/backlash.hpp"
-#include "gearhb/gears/dte_response.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/pair/backlash.hpp"
+#include "gearhb/gears/dynamics/dte_response.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 using namespace gearhb;
 

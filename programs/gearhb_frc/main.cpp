@@ -10,8 +10,8 @@
 // natural_frequencies, frequency_response, draw.
 //
 // Sample runs:
-//   build/bin/gearhb_frc chapters/gearhb_frc/examples/nlvib_ex03.json --out /tmp/ex03
-//   build/bin/gearhb_frc chapters/gearhb_frc/examples/mass_wall.json --set contacts.0.gap=-0.8
+//   build/bin/gearhb_frc programs/gearhb_frc/examples/nlvib_ex03.json --out /tmp/ex03
+//   build/bin/gearhb_frc programs/gearhb_frc/examples/mass_wall.json --set contacts.0.gap=-0.8
 // ===========================================================================
 #include <algorithm>
 #include <cmath>

@@ -34,10 +34,10 @@
 // time_integration_check per torque), iso_dynamic_factor, draw.
 //
 // Sample runs:
-//   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
-//   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c.json --set torques.0=150 --out /tmp/fzg
-//   build/bin/gearhb_gear chapters/gearhb_gear/examples/thesis_pair_light_load.json --out /tmp/rattle
-//   build/bin/gearhb_gear chapters/gearhb_gear/examples/fzg_c_fe.json --out /tmp/fzg_fe
+//   build/bin/gearhb_gear programs/gearhb_gear/examples/thesis_pair.json --out /tmp/thesis
+//   build/bin/gearhb_gear programs/gearhb_gear/examples/fzg_c.json --set torques.0=150 --out /tmp/fzg
+//   build/bin/gearhb_gear programs/gearhb_gear/examples/thesis_pair_light_load.json --out /tmp/rattle
+//   build/bin/gearhb_gear programs/gearhb_gear/examples/fzg_c_fe.json --out /tmp/fzg_fe
 // ===========================================================================
 #include <algorithm>
 #include <array>
@@ -50,16 +50,16 @@
 
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/bifurcation_input.hpp"
-#include "gearhb/app/gear_file.hpp"
+#include "gearhb/tools/gear_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/gears/iso6336.hpp"
-#include "gearhb/gears/iso6336_root.hpp"
-#include "gearhb/gears/loaded_pair.hpp"
-#include "gearhb/gears/mesh_dynamics.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
+#include "gearhb/gears/rating/iso6336_root.hpp"
+#include "gearhb/gears/pair/loaded_pair.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/hb/response.hpp"
-#include "gearhb/gears/potential_energy.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
 #define GEARHB_FIGURES_DIR ""

@@ -4,7 +4,7 @@
     x'' + 2 zeta x' + f(x) = F_m + F_a cos(Omega t),
     f(x) = x - 1 (x > 1), 0 (|x| <= 1), x + 1 (x < -1)      (dead zone of half-width 1, kc = 1)
 
-zeta = 0.05, F_m = 0.1. This is gearhb_frc's chapters/gearhb_frc/examples/clearance_oscillator.json
+zeta = 0.05, F_m = 0.1. This is gearhb_frc's programs/gearhb_frc/examples/clearance_oscillator.json
 (M = 1, C = 2 zeta, K = 0, contacts [1] and [-1] with gap -1, kc 1) and the model of
 tests/unit/test_clearance_oscillator.cpp. Nothing of gearhb is used: scipy's solve_ivp
 (DOP853, rtol 1e-11, atol 1e-12, steps at most T/200) integrates from the stated initial
@@ -13,7 +13,7 @@ the extremes of x over the last period are the largest and smallest of a 4000-po
 sample refined by the events x' = 0 (scipy's event location on the dense output).
 
 The parametric cases add Kahraman & Singh's (1991) time-varying stiffness, (1 + 0.2 cos(Omega t)) f(x):
-chapters/gearhb_frc/examples/parametric_clearance_oscillator.json (its kc_file).
+programs/gearhb_frc/examples/parametric_clearance_oscillator.json (its kc_file).
 
 Run: /usr/bin/python3 reference/scripts/clearance_oscillator_time_integration.py [--parametric]
 (--parametric: only the parametric cases).
@@ -81,7 +81,7 @@ CASES = [
 ]
 
 
-# The parametric oscillator of chapters/gearhb_frc/examples/parametric_clearance_oscillator.json
+# The parametric oscillator of programs/gearhb_frc/examples/parametric_clearance_oscillator.json
 # (Kahraman & Singh, J. Sound Vib. 146 (1991): the same with the stiffness 1 + 0.2 cos(Omega t)).
 # The range ends at Omega = 3, not 2: Omega = 2 is the principal parametric resonance of the
 # closed flank, and alpha = 0.2 = 4 zeta sits exactly on its Mathieu stability boundary (from rest

@@ -16,7 +16,7 @@ import pathlib
 import numpy as np
 from scipy.linalg import eigh
 
-EX = pathlib.Path(__file__).resolve().parents[2] / "chapters" / "gearhb_frc" / "examples"
+EX = pathlib.Path(__file__).resolve().parents[2] / "programs" / "gearhb_frc" / "examples"
 
 
 def modes(model):

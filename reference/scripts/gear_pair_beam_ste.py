@@ -3,7 +3,7 @@
 
 Run:  /usr/bin/python3 reference/scripts/gear_pair_beam_ste.py
 Prints "example key value" for the STE key numbers of every example file in
-chapters/gearhb_gear/examples/ with model.method beam (the potential-energy files are
+programs/gearhb_gear/examples/ with model.method beam (the potential-energy files are
 gear_pair_pe_ste.py's) (and of thesis_pair on ch. 7's 8 node positions,
 as "thesis_pair_p8"). Nothing here calls gearhb: the same model, written again
 with numpy (dense FE) and scipy (brentq), to check the C++ implementation:
@@ -33,7 +33,7 @@ import pathlib
 import numpy as np
 from scipy.optimize import brentq
 
-EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "chapters" / "gearhb_gear" / "examples"
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "programs" / "gearhb_gear" / "examples"
 
 
 def inv(a):

@@ -38,7 +38,7 @@ import json
 import math
 import pathlib
 
-EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "chapters" / "gearhb_gear" / "examples"
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "programs" / "gearhb_gear" / "examples"
 
 
 def inv(a):

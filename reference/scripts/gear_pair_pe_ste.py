@@ -3,7 +3,7 @@
 
 Run:  /usr/bin/python3 reference/scripts/gear_pair_pe_ste.py        (about 10 s)
 Prints "example key value" for the STE key numbers of every example file in
-chapters/gearhb_gear/examples/ whose model.method is potential_energy. Nothing here calls
+programs/gearhb_gear/examples/ whose model.method is potential_energy. Nothing here calls
 gearhb or shares code with it:
 
   * the tooth compliance (bending, shear 1.2/(G A), axial compression, Sainsot et al. 2004
@@ -31,7 +31,7 @@ import numpy as np
 
 from gear_pair_beam_ste import relief   # the tip relief at a roll length (same folder, no gearhb)
 
-EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "chapters" / "gearhb_gear" / "examples"
+EXAMPLES = pathlib.Path(__file__).resolve().parents[2] / "programs" / "gearhb_gear" / "examples"
 SAINSOT = [[-5.574e-5, -1.9986e-3, -2.3015e-4, 4.7702e-3, 0.0271, 6.8045],
            [60.111e-5, 28.100e-3, -83.431e-4, -9.9256e-3, 0.1624, 0.9086],
            [-50.952e-5, 185.50e-3, 0.0538e-4, 53.300e-3, 0.2895, 0.9236],

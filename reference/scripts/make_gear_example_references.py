@@ -289,7 +289,7 @@ FE_SOURCE = ("reference/fe_tooth_contact.md section 1: Richardson limit of the F
 FE_WHY = ("the default mesh's discretisation error: measured 0.02-0.05 % against the limit (observed orders "
           "2.8-3.9); 0.5 % is the bound the default mesh is held to (issue 33 asks for 1 %)")
 for name, (geo_name, k_mean, k_single) in FE_LIMITS.items():
-    f = json.load(open(HERE.parents[1] / "chapters" / "gearhb_gear" / "examples" / (name + ".json")))
+    f = json.load(open(HERE.parents[1] / "programs" / "gearhb_gear" / "examples" / (name + ".json")))
     F = f["torques"][2] / GEO[geo_name]["base_radius_1_m"]
     n = {"method_fe": entry("method_fe", 1.0, "the file's model.method", {"abs": 0}, "a flag"),
          "mesh_stiffness_mean_N_per_m_3": entry("mesh_stiffness_mean_N_per_m_3", k_mean, FE_SOURCE, {"rel": 5e-3},

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <cstdio>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/potential_energy.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
 
 using namespace gearhb;
 

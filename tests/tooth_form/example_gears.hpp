@@ -1,7 +1,7 @@
 #pragma once
 // The gears of issue 33 §1 for the tooth-form tests and the CSV writer: ha* = 1,
 // hf* = 1.25, alpha = 20 deg (the basic rack's rho_f* is an option of tooth_form).
-#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
 
 namespace tooth_form_examples {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 #include "example_gears.hpp"
 
 using namespace gearhb;

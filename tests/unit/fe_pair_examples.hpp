@@ -1,11 +1,11 @@
 #pragma once
 // The three pairs of issue 33's table for the FE tooth-contact tests and benchmark, as in
-// chapters/gearhb_gear/examples/{thesis_pair,fzg_c,ross_pair}.json.
+// programs/gearhb_gear/examples/{thesis_pair,fzg_c,ross_pair}.json.
 #include <array>
 #include <vector>
 
 #include "../tooth_form/example_gears.hpp"
-#include "gearhb/gears/fe_tooth_contact.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
 
 namespace fe_pair_examples {
 

@@ -1,12 +1,12 @@
-// Backlash (lib/gearhb/gears/backlash.hpp, thesis §9) against independent values:
+// Backlash (lib/gearhb/gears/pair/backlash.hpp, thesis §9) against independent values:
 // the normal-backlash formula, the geometry of §9 with both readings of T2C, the
 // clip, and the contact reading against a two-spring case solved by hand.
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/backlash.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/pair/backlash.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 using namespace gearhb;
 

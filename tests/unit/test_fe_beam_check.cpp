@@ -24,12 +24,12 @@
 #include "gearhb/fe/linear_solver.hpp"
 #include "gearhb/fe/mesh.hpp"
 #include "gearhb/fe/p2_element.hpp"
-#include "gearhb/gears/coupled_load_sharing.hpp"
-#include "gearhb/gears/fe_tooth_contact.hpp"
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/pair/coupled_load_sharing.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 #include "fe_pair_examples.hpp"
 
 // Everything in a named namespace: the unit tests compile as unity batches

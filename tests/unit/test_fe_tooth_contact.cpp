@@ -12,12 +12,12 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/coupled_load_sharing.hpp"
-#include "gearhb/gears/fe_tooth_contact.hpp"
-#include "gearhb/gears/iso6336_root.hpp"
-#include "gearhb/gears/loaded_pair.hpp"
-#include "gearhb/gears/potential_energy.hpp"
-#include "gearhb/gears/load_sharing.hpp"
+#include "gearhb/gears/pair/coupled_load_sharing.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
+#include "gearhb/gears/rating/iso6336_root.hpp"
+#include "gearhb/gears/pair/loaded_pair.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/gears/pair/load_sharing.hpp"
 #include "fe_pair_examples.hpp"
 
 using namespace gearhb;

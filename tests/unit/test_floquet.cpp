@@ -16,7 +16,7 @@
 #include <gtest/gtest.h>
 
 #include "gearhb/core/linear_dynamics.hpp"
-#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/time_integration.hpp"

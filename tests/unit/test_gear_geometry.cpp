@@ -15,8 +15,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
 
 using namespace gearhb;
 

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/core/newton.hpp"

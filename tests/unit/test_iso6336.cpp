@@ -1,4 +1,4 @@
-// Unit tests of lib/gearhb/gears/iso6336 (ISO 6336-1:2006 method B mesh stiffness) against
+// Unit tests of lib/gearhb/gears/rating/iso6336 (ISO 6336-1:2006 method B mesh stiffness) against
 // ISO/TR 6336-30:2017 Example 01 and hand-computed values.
 //
 // Example 01 (single helical stage): m_n = 8 mm, alpha_n = 20 deg, z = 17 / 103,
@@ -28,7 +28,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
 
 using namespace gearhb;
 

@@ -1,4 +1,4 @@
-// Unit tests of lib/gearhb/gears/iso6336_root (ISO 6336-3:2019 method B tooth-root geometry
+// Unit tests of lib/gearhb/gears/rating/iso6336_root (ISO 6336-3:2019 method B tooth-root geometry
 // of an external spur gear, and the same section measured on the generated tooth form).
 //
 // The real check is the agreement of two computations of one geometry: ISO's closed forms
@@ -19,7 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/iso6336_root.hpp"
+#include "gearhb/gears/rating/iso6336_root.hpp"
 #include "../tooth_form/example_gears.hpp"
 
 using namespace gearhb;

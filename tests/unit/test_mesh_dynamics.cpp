@@ -1,4 +1,4 @@
-// The gear pair over its speed range (gears/mesh_dynamics.hpp, gears/dte_model.hpp with two
+// The gear pair over its speed range (gears/dynamics/mesh_dynamics.hpp, gears/dynamics/dte_model.hpp with two
 // flanks, the gap-amplitude start of hb/first_point.hpp). Each check names its independent truth.
 #include <cmath>
 
@@ -6,7 +6,7 @@
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/newton.hpp"
-#include "gearhb/gears/mesh_dynamics.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/time_integration.hpp"
 

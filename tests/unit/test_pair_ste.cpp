@@ -1,16 +1,16 @@
-// The gear pair from its drawing (issue 20): load sharing (lib/gearhb/gears/load_sharing)
+// The gear pair from its drawing (issue 20): load sharing (lib/gearhb/gears/pair/load_sharing)
 // and the pair STE (ste_continuous.hpp PairSteModel) against independent values.
 #include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/load_sharing.hpp"
-#include "gearhb/gears/potential_energy.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/pair/load_sharing.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 using namespace gearhb;
 

@@ -1,6 +1,6 @@
 // The time-varying contact stiffness (hb/contact.hpp stiffness_profile), its
 // harmonic balance and Floquet multipliers, the parametric gear-mesh model
-// (gears/dte_model.hpp) and the first guess of a system without a spring to
+// (gears/dynamics/dte_model.hpp) and the first guess of a system without a spring to
 // ground (K = 0), against independent values:
 //  - Gauss-Legendre moments of a weighted indicator: closed-form integrals of
 //    (2 + cos t) cos(m t) over an interval;
@@ -21,7 +21,7 @@
 
 #include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/core/newton.hpp"
-#include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/time_integration.hpp"

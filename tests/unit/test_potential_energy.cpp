@@ -1,4 +1,4 @@
-// Unit tests of lib/gearhb/gears/potential_energy (the potential-energy mesh stiffness):
+// Unit tests of lib/gearhb/gears/tooth/potential_energy (the potential-energy mesh stiffness):
 // closed forms of the integration kernel, convergence of the quadrature, the tooth
 // geometry against gear_geometry's independent tooth thickness, Hertz by hand, and the
 // thesis and ROSS gears against the published / cross-code numbers they are compared with.
@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/potential_energy.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
 
 using namespace gearhb;
 

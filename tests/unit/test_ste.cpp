@@ -8,8 +8,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/ste.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/pair/ste.hpp"
 
 using namespace gearhb;
 

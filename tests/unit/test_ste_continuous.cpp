@@ -6,11 +6,11 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
-#include "gearhb/gears/ste_file.hpp"
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/pair/ste_file.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 
 using namespace gearhb;
 

@@ -1,4 +1,4 @@
-// Unit tests of lib/gearhb/gears/tooth_form (the generated tooth form of an external spur
+// Unit tests of lib/gearhb/gears/geometry/tooth_form (the generated tooth form of an external spur
 // gear). Expected values come from closed forms written out here (ISO 21771, Niemann &
 // Winter §21) or from an independent computation: the rack cut simulated by brute force
 // (`RackCut`: the basic rack's tooth as a region, rolled on the pitch circle; a point of the
@@ -15,9 +15,9 @@
 
 #include <gtest/gtest.h>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/potential_energy.hpp"
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 #include "../tooth_form/example_gears.hpp"
 
 using namespace gearhb;

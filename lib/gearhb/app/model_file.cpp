@@ -11,7 +11,6 @@
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/text_file.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
 
 namespace gearhb {
 

@@ -183,4 +183,15 @@ std::vector<double> harmonic_amplitudes(const std::vector<double>& period_sample
   return amp;
 }
 
+Eigen::VectorXd periodic_fourier(const std::vector<double>& samples, int H) {
+  const int N = int(samples.size());
+  if (N < 4 || H < 0) throw std::invalid_argument("periodic_fourier: need >= 4 samples and H >= 0");
+  const int Hc = std::min(H, (N - 2) / 2);
+  Aft aft(Hc, N);
+  const Eigen::VectorXd c = aft.to_frequency(Eigen::Map<const Eigen::VectorXd>(samples.data(), N));
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(2 * H + 1);
+  out.head(c.size()) = c;
+  return out;
+}
+
 }  // namespace gearhb

@@ -82,4 +82,9 @@ Eigen::VectorXd reflected_series(const Eigen::VectorXd& c, double psi);
 // period (k = 0 gives |mean|). Convenience for spectra of measured signals.
 std::vector<double> harmonic_amplitudes(const std::vector<double>& period_samples, int H);
 
+// Real Fourier coefficients [a0, a1, b1, ..., aH, bH] of one uniformly sampled
+// period, e(phase) = a0 + sum a_k cos(2 pi k phase) + b_k sin(2 pi k phase); the
+// harmonics above what the samples carry (N < 2H + 2) are zero.
+Eigen::VectorXd periodic_fourier(const std::vector<double>& samples, int H);
+
 }  // namespace gearhb

@@ -6,9 +6,36 @@
 #include <utility>
 #include <vector>
 
-#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
+
+Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega) {
+  // A candidate that is not finite (the open-contact solution of a system with a
+  // free rigid-body mode, K singular, under a static load) or whose residual is
+  // not finite is skipped.
+  Eigen::VectorXd best;
+  double r_best = INFINITY;
+  Eigen::VectorXd R;
+  for (bool closed : {false, true}) {
+    if (closed && hb.contacts().empty()) break;
+    Eigen::VectorXd X = closed ? hb.closed_contact_solution(omega) : hb.open_contact_solution(omega);
+    if (!X.allFinite()) continue;
+    hb.evaluate(X, omega, R, nullptr, nullptr);
+    const double r = R.norm();
+    if (std::isfinite(r) && (best.size() == 0 || r < r_best)) {
+      best = std::move(X);
+      r_best = r;
+    }
+  }
+  if (best.size() == 0) {
+    std::ostringstream os;
+    os << "linear_first_guess: neither the open- nor the closed-contact linear solution is finite at omega = "
+       << omega << " (a free rigid-body mode under a static load with no contact to hold it, or loads so large that the response overflows)";
+    throw std::invalid_argument(os.str());
+  }
+  return best;
+}
 
 const char* to_string(FirstPointMethod m) {
   switch (m) {
@@ -109,7 +136,7 @@ FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scali
   // 1. Newton from the better of the open and all-closed linear solutions.
   std::string step1;
   try {
-    Eigen::VectorXd X = linear_first_guess(hb, omega);
+    Eigen::VectorXd X = opt.linear_guess.size() ? opt.linear_guess : linear_first_guess(hb, omega);
     ++fp.newton_solves;
     const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
     if (r.converged) {

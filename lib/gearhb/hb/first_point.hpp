@@ -16,7 +16,7 @@
 // The design, in the order tried (each step only if the previous one failed, so a
 // model that started before starts exactly as before):
 //  1. Newton from linear_first_guess (the better of the open and all-closed linear
-//     solutions; frequency_sweep.hpp).
+//     solutions; below).
 //  2. Newton from the linear solution of every other contact set S (the contacts of
 //     S permanently closed, the others removed; HarmonicBalance::contact_set_solution),
 //     in increasing order of its harmonic-balance residual. A set that the response
@@ -55,6 +55,9 @@ struct FirstPointOptions {
   // Step 3's continuation (omega_start / omega_end are set to 0 and 1; its scaled
   // arc length measures lambda in units of 1). `regime` and the step sizes are used.
   ContinuationOptions continuation;
+  // Step 1's guess if the caller has it already (the sweep tried it first); empty:
+  // linear_first_guess computes it.
+  Eigen::VectorXd linear_guess;
 };
 
 enum class FirstPointMethod { none, linear_guess, contact_set, amplitude_continuation };
@@ -69,6 +72,12 @@ struct FirstPoint {
   int homotopy_points = 0;           // points of step 3's branch
   std::string failure;               // why not (empty if found)
 };
+
+// Linear first guess at omega: the open- or closed-contact solution, whichever
+// has the smaller residual; a non-finite one (the open solution of a system with
+// K singular, a free rigid-body mode, under a static load) is skipped. Throws
+// std::invalid_argument if neither is finite.
+Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
 
 // The first point at omega (see above); x scaling s as for the sweep (s.omega is not used).
 FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scaling& s,

@@ -14,33 +14,6 @@
 
 namespace gearhb {
 
-Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega) {
-  // A candidate that is not finite (the open-contact solution of a system with a
-  // free rigid-body mode, K singular, under a static load) or whose residual is
-  // not finite is skipped.
-  Eigen::VectorXd best;
-  double r_best = INFINITY;
-  Eigen::VectorXd R;
-  for (bool closed : {false, true}) {
-    if (closed && hb.contacts().empty()) break;
-    Eigen::VectorXd X = closed ? hb.closed_contact_solution(omega) : hb.open_contact_solution(omega);
-    if (!X.allFinite()) continue;
-    hb.evaluate(X, omega, R, nullptr, nullptr);
-    const double r = R.norm();
-    if (std::isfinite(r) && (best.size() == 0 || r < r_best)) {
-      best = std::move(X);
-      r_best = r;
-    }
-  }
-  if (best.size() == 0) {
-    std::ostringstream os;
-    os << "linear_first_guess: neither the open- nor the closed-contact linear solution is finite at omega = "
-       << omega << " (a free rigid-body mode under a static load with no contact to hold it, or loads so large that the response overflows)";
-    throw std::invalid_argument(os.str());
-  }
-  return best;
-}
-
 const char* to_string(BifurcationType t) {
   switch (t) {
     case BifurcationType::fold: return "fold";
@@ -361,14 +334,15 @@ bool trace_branch(const HarmonicBalance& hb, const SweepOptions& opt, const Cont
     return opt.natural ? natural_continuation(hb, X0, c.scaling, co) : arc_length_continuation(hb, X0, c.scaling, co);
   };
   bool started = false;
+  FirstPointOptions fo;
   try {
-    c.branch = run(linear_first_guess(hb, co.omega_start));
+    fo.linear_guess = linear_first_guess(hb, co.omega_start);
+    c.branch = run(fo.linear_guess);
     started = !c.branch.points.empty();
   } catch (const std::invalid_argument&) {
     // neither linear guess is finite (K singular under a static load): find_first_point
   }
   if (!started) {
-    FirstPointOptions fo;
     fo.newton.tolerance = co.tolerance;
     fo.continuation = co;
     fo.continuation.progress = nullptr;

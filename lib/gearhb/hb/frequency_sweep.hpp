@@ -123,12 +123,6 @@ struct FrequencyCurve {
 // arc-length branch (a natural branch that stopped at a fold is returned as it is).
 FrequencyCurve require_complete(FrequencyCurve c, const std::string& label);
 
-// Linear first guess at omega: the open- or closed-contact solution, whichever
-// has the smaller residual; a non-finite one (the open solution of a system with
-// K singular, a free rigid-body mode, under a static load) is skipped. Throws
-// std::invalid_argument if neither is finite.
-Eigen::VectorXd linear_first_guess(const HarmonicBalance& hb, double omega);
-
 // Continue `hb` over the range; `label` names the case in the failure report.
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
                                const std::string& label);

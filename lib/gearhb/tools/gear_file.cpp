@@ -1,4 +1,4 @@
-#include "gearhb/app/gear_file.hpp"
+#include "gearhb/tools/gear_file.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -45,11 +45,11 @@
 #include <nlohmann/json.hpp>
 
 #include "gearhb/app/bifurcation_input.hpp"
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/fe_tooth_contact.hpp"
-#include "gearhb/gears/mesh_dynamics.hpp"
-#include "gearhb/gears/potential_energy.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {

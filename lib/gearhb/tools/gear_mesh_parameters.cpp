@@ -1,4 +1,4 @@
-#include "gearhb/app/gear_mesh_parameters.hpp"
+#include "gearhb/tools/gear_mesh_parameters.hpp"
 
 #include <cmath>
 

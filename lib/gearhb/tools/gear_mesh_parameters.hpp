@@ -3,12 +3,12 @@
 // which builds on it), registered once for both chapters: the gear pair (I1, I2,
 // zeta), the STE of ch. 7's model (samples, reading), the mesh model (the thesis'
 // constant kc with the STE as excitation, or the parametric k(t) = F0 / e(t),
-// gears/dte_model.hpp) and the mesh-frequency range.
+// gears/dynamics/dte_model.hpp) and the mesh-frequency range.
 #include <string>
 
 #include "gearhb/app/cli.hpp"
 #include "gearhb/app/solver_settings.hpp"
-#include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
 
 namespace gearhb {
 

@@ -1,4 +1,4 @@
-#include "gearhb/app/gear_tables.hpp"
+#include "gearhb/tools/gear_tables.hpp"
 
 #include <cmath>
 #include <stdexcept>

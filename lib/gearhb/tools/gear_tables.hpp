@@ -8,7 +8,7 @@
 
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
-#include "gearhb/gears/dte_response.hpp"
+#include "gearhb/gears/dynamics/dte_response.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {

@@ -1,4 +1,4 @@
-#include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -17,7 +17,7 @@
 // gap e0 and gap harmonics [0, a1, b1, ...]: penetration u = e(theta) + x.
 // The model has no spring to ground (the shafts are rigid in torsion): K = 0,
 // the open-contact linear solution does not exist and the sweep starts from the
-// closed one (hb/frequency_sweep.hpp linear_first_guess).
+// closed one (hb/first_point.hpp linear_first_guess).
 //
 // The parametric model it approximates (Ozguven & Houser; README of chapter 8):
 //
@@ -30,7 +30,7 @@
 //     profile s = F0 / (kc e(theta)) (hb/contact.hpp stiffness_profile), e the STE
 //     truncated to the H harmonics of the balance as in the constant model.
 //
-// Both flanks (gearhb_gear; README of chapters/gearhb_gear "Both flanks"). With a finite
+// Both flanks (gearhb_gear; README of programs/gearhb_gear "Both flanks"). With a finite
 // normal backlash b_n the back flanks touch where the drive-flank mesh deflection u (u = x + e
 // for the constant model, u = d for the parametric one) falls below -(b_n + g_b(theta)):
 //
@@ -44,7 +44,7 @@
 // flanks' no-load transmission error g (`nlte`) read at the mirrored mesh phase psi - theta:
 // the back flanks mesh on the second line of action, as the drive flanks do in reverse, so the
 // back contact passes the same configurations in the opposite order (phase psi - theta; psi from
-// the tooth geometry, gears/mesh_dynamics.hpp back_flank_phase). The parametric model's back
+// the tooth geometry, gears/dynamics/mesh_dynamics.hpp back_flank_phase). The parametric model's back
 // stiffness is the drive one at that phase, k(psi - theta).
 //
 // Tip relief (`nlte`, empty = none): the parametric model then reads the elastic stiffness

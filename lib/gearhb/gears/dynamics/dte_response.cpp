@@ -1,4 +1,4 @@
-#include "gearhb/gears/dte_response.hpp"
+#include "gearhb/gears/dynamics/dte_response.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <string>
 
 #include "gearhb/core/linear_dynamics.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 

@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "gearhb/gears/dte_model.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {

@@ -1,4 +1,4 @@
-#include "gearhb/gears/mesh_dynamics.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,6 +1,6 @@
 #pragma once
 // The dynamics of a spur gear pair from its drawing (gearhb_gear; README of
-// chapters/gearhb_gear, "The pair over its speed range"): the mesh model a scene needs,
+// programs/gearhb_gear, "The pair over its speed range"): the mesh model a scene needs,
 // both flanks, and what a gear engineer reads off each periodic orbit.
 //
 // Models (one DteGear: F0, me, kc, c, the STE e(theta), the no-load transmission error g,
@@ -50,10 +50,10 @@
 
 #include <Eigen/Dense>
 
-#include "gearhb/gears/dte_model.hpp"
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/iso6336.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/dynamics/dte_model.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,4 +1,4 @@
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 
 #include <algorithm>
 #include <cmath>

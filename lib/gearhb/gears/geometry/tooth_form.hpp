@@ -76,7 +76,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
 
 namespace gearhb {
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/backlash.hpp"
+#include "gearhb/gears/pair/backlash.hpp"
 
 #include <algorithm>
 #include <cmath>

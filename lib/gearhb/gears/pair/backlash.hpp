@@ -43,9 +43,9 @@
 //    Solved in closed form (two_spring_deflection).
 #include <vector>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/ste.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/pair/ste.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 namespace gearhb {
 

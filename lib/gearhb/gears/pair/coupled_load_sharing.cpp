@@ -1,4 +1,4 @@
-#include "gearhb/gears/coupled_load_sharing.hpp"
+#include "gearhb/gears/pair/coupled_load_sharing.hpp"
 
 #include <cmath>
 #include <stdexcept>

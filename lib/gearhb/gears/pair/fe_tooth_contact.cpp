@@ -1,4 +1,4 @@
-#include "gearhb/gears/fe_tooth_contact.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
 
 #include <algorithm>
 #include <array>
@@ -9,8 +9,8 @@
 #include "gearhb/fe/elasticity.hpp"
 #include "gearhb/fe/gmsh_mesher.hpp"
 #include "gearhb/fe/p2_element.hpp"
-#include "gearhb/gears/coupled_load_sharing.hpp"
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/pair/coupled_load_sharing.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 
 namespace gearhb {
 

@@ -72,8 +72,8 @@
 
 #include "gearhb/fe/linear_solver.hpp"
 #include "gearhb/fe/mesh.hpp"
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 namespace gearhb {
 

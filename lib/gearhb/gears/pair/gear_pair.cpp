@@ -1,5 +1,5 @@
 // 6-DOF spur-gear pair (thesis ch. 6): see gear_pair.hpp.
-#include "gearhb/gears/gear_pair.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 
 #include <cmath>
 

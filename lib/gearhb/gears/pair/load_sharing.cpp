@@ -1,4 +1,4 @@
-#include "gearhb/gears/load_sharing.hpp"
+#include "gearhb/gears/pair/load_sharing.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "gearhb/core/gsl_errors.hpp"
-#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
 
 namespace gearhb {
 

@@ -30,7 +30,7 @@
 // No penalty and no regularisation: the open/closed state of each pair is exact.
 #include <vector>
 
-#include "gearhb/gears/ste.hpp"
+#include "gearhb/gears/pair/ste.hpp"
 
 namespace gearhb {
 

@@ -1,8 +1,8 @@
-#include "gearhb/gears/loaded_pair.hpp"
+#include "gearhb/gears/pair/loaded_pair.hpp"
 
 #include <stdexcept>
 
-#include "gearhb/gears/coupled_load_sharing.hpp"
+#include "gearhb/gears/pair/coupled_load_sharing.hpp"
 
 namespace gearhb {
 

@@ -17,8 +17,8 @@
 #include <memory>
 #include <vector>
 
-#include "gearhb/gears/fe_tooth_contact.hpp"
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/pair/fe_tooth_contact.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 namespace gearhb {
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/ste.hpp"
+#include "gearhb/gears/pair/ste.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -8,7 +8,7 @@
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/gsl_errors.hpp"
-#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
 
 namespace gearhb {
 

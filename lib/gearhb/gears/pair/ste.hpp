@@ -37,8 +37,8 @@
 
 #include <Eigen/Dense>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 
 namespace gearhb {
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/ste_continuous.hpp"
+#include "gearhb/gears/pair/ste_continuous.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -6,10 +6,10 @@
 #include <string>
 
 #include "gearhb/core/fourier.hpp"
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/hertz.hpp"
-#include "gearhb/gears/load_sharing.hpp"
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
+#include "gearhb/gears/pair/load_sharing.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 
 namespace gearhb {
 
@@ -164,17 +164,6 @@ std::vector<double> ste_values(const std::vector<StePoint>& cycle) {
   std::vector<double> v;
   for (const auto& p : cycle) v.push_back(p.ste);
   return v;
-}
-
-Eigen::VectorXd periodic_fourier(const std::vector<double>& samples, int H) {
-  const int N = int(samples.size());
-  if (N < 4 || H < 0) throw std::invalid_argument("periodic_fourier: need >= 4 samples and H >= 0");
-  const int Hc = std::min(H, (N - 2) / 2);
-  Aft aft(Hc, N);
-  const Eigen::VectorXd c = aft.to_frequency(Eigen::Map<const Eigen::VectorXd>(samples.data(), N));
-  Eigen::VectorXd out = Eigen::VectorXd::Zero(2 * H + 1);
-  out.head(c.size()) = c;
-  return out;
 }
 
 double mean_stiffness(const std::vector<double>& ste, double F) {

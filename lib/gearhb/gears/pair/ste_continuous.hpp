@@ -46,7 +46,7 @@
 
 #include <Eigen/Dense>
 
-#include "gearhb/gears/ste.hpp"
+#include "gearhb/gears/pair/ste.hpp"
 
 namespace gearhb {
 
@@ -96,11 +96,6 @@ std::vector<StePoint> ste_continuous(const SteModel& m, double torque, int sampl
 // The STE values of a cycle (ch. 7's positions or the continuous points) [m].
 std::vector<double> ste_values(const std::vector<MeshPosition>& cycle);
 std::vector<double> ste_values(const std::vector<StePoint>& cycle);
-
-// Real Fourier coefficients [a0, a1, b1, ..., aH, bH] of one uniformly sampled
-// period, e(phase) = a0 + sum a_k cos(2 pi k phase) + b_k sin(2 pi k phase); the
-// harmonics above what the samples carry (N < 2H + 2) are zero.
-Eigen::VectorXd periodic_fourier(const std::vector<double>& samples, int H);
 
 // Mean over the samples of F / e [N/m] (thesis §8.1: k = (T/r)/V, misprinted (T/r) V).
 double mean_stiffness(const std::vector<double>& ste, double F);

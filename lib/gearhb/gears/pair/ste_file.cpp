@@ -1,4 +1,4 @@
-#include "gearhb/gears/ste_file.hpp"
+#include "gearhb/gears/pair/ste_file.hpp"
 
 #include "gearhb/core/text_file.hpp"
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/iso6336.hpp"
+#include "gearhb/gears/rating/iso6336.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -7,7 +7,7 @@
 #include <stdexcept>
 #include <string>
 
-#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
 
 namespace gearhb {
 

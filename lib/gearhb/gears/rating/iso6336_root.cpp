@@ -1,4 +1,4 @@
-#include "gearhb/gears/iso6336_root.hpp"
+#include "gearhb/gears/rating/iso6336_root.hpp"
 
 #include <cmath>
 #include <stdexcept>

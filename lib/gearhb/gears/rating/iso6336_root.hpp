@@ -60,8 +60,8 @@
 //    F_t the nominal tangential load at the reference circle, b the face width.
 #include <Eigen/Core>
 
-#include "gearhb/gears/gear_geometry.hpp"
-#include "gearhb/gears/tooth_form.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
+#include "gearhb/gears/geometry/tooth_form.hpp"
 
 namespace gearhb {
 

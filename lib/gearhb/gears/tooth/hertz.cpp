@@ -1,4 +1,4 @@
-#include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/tooth/hertz.hpp"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "gearhb/gears/potential_energy.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
 
 #include <gsl/gsl_integration.h>
 
@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "gearhb/core/gsl_errors.hpp"
-#include "gearhb/gears/gear_geometry.hpp"
+#include "gearhb/gears/geometry/gear_geometry.hpp"
 
 namespace gearhb {
 

@@ -1,4 +1,4 @@
-#include "gearhb/gears/tooth_fe.hpp"
+#include "gearhb/gears/tooth/tooth_fe.hpp"
 
 #include <algorithm>
 #include <cmath>
