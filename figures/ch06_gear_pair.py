@@ -96,18 +96,15 @@ def mark_bilinear_dip(ax, d, w_open, w_closed):
                 fontsize=7, arrowprops=dict(arrowstyle="->", lw=0.8))
 
 
-def separation_note(ax, d, params):
-    """Say, from this run's numbers, what the largest mesh separation is beside the gears' size:
-    the thesis' loads drive the mesh open by more than a base radius, which a real pair (its back
-    flank, its backlash) would not allow; this model has no back flank."""
-    gap = -min(d["x_min"])
-    rb = min(params["rb1"], params["rb2"])
-    if gap <= 0.0:
-        return
-    ax.text(0.01, 0.02, "largest separation -$\\Delta_{min}$ = %.3g m = %.1f x the smaller base radius (%.3g m):\n"
-            "the thesis' loads on a model without a back flank (no backlash limits the opening)"
-            % (gap, gap / rb, rb), transform=ax.transAxes, fontsize=7, va="bottom",
-            bbox=dict(boxstyle="round", fc="white", ec="0.6", alpha=0.9))
+def separation_note(d, params):
+    """A title line, from this run's numbers, where the mesh opens wider than a base radius: the
+    thesis' loads drive this model (no back flank, so no backlash limits the opening) to
+    separations no real pair could reach."""
+    gap, rb = -min(d["x_min"]), min(params["rb1"], params["rb2"])
+    if gap <= rb:
+        return ""
+    return ("\nlargest separation $-\\Delta_{min}$ = %.3g m = %.1f x the smaller base radius (%.3g m):\nthe thesis' "
+            "loads on a model without a back flank" % (gap, gap / rb, rb))
 
 
 def case_figure(data_dir, fig_dir, row, name):
@@ -132,11 +129,10 @@ def case_figure(data_dir, fig_dir, row, name):
                 fontsize=7, xytext=(0, 3), textcoords="offset points", ha="right")
     if mesh == "kc":
         mark_bilinear_dip(a1, d, w_open, w_closed)
-    separation_note(a1, d, read_params(data_dir))
     what = "Fig. %d" % int(row["figure"]) if mesh == "kc" else \
         "Supplement S%d (Fig. %d's loads with the printed kc)" % (int(row["figure"]), int(row["figure"]))
-    a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m"
-                 % (what, row["Fi"], row["Fa"], row["kc"]), fontsize=9)
+    a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m%s"
+                 % (what, row["Fi"], row["Fa"], row["kc"], separation_note(d, read_params(data_dir))), fontsize=9)
     if zoom:
         az = axes[1]
         delta_panel(az, data_dir, label, d, w_open, w_closed)

@@ -298,7 +298,7 @@ def ste_fourier(D, mine, fig_four, fig_dir, made):
     ax.set_xlabel("harmonic of the mesh frequency k")
     ax.set_ylabel("amplitude sqrt(a_k^2 + b_k^2) [um]")
     ax.set_xticks(h)
-    ax.set_title("Fig. %d: Fourier coefficients of the STE (FFTW, %d samples per cycle), %s\n"
+    ax.set_title("Fig. %d: Fourier coefficients of the STE (FFTW, %d samples per cycle),\n%s; "
                  "harmonic 0 (the mean, not drawn): %s um" % (fig_four, n, model_label(mine),
                                                                ", ".join("%.3f" % m for m in means)), fontsize=9)
     ax.legend(fontsize=8)

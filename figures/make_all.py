@@ -14,7 +14,8 @@ figures/tooth_model_chart.py the tooth models' error against cost
 (build/figures/gear_tooth_models.png, build/data/gearhb_gear/tooth_models/tooth_models.csv) and
 figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png);
 build/figures/index.html (figures/report.py)
-links them all.
+links them all. build/figures/timings.csv records each step's wall time of this run (the only
+timings the READMEs point to; `make bench` measures the library's).
 """
 import argparse
 import concurrent.futures
@@ -57,6 +58,8 @@ def main():
         subprocess.run([str(exe), "--quiet", "--out", str(data_dir)], check=True)
         return exe, data_dir, time.time() - t0
 
+    timings = [("make_figures_start", 0.0)]
+    start = time.time()
     with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
         for fut in concurrent.futures.as_completed([pool.submit(run, exe) for exe in chapters]):
             exe, data_dir, secs = fut.result()
@@ -68,13 +71,16 @@ def main():
             mod = importlib.util.module_from_spec(spec)
             spec.loader.exec_module(mod)
             made = mod.draw(data_dir, fig_dir)
+            timings.append((exe.name, secs))
             print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
     gear = build / "bin" / "gearhb_gear"
     if gear.is_file() and not args.only:
         for example in sorted((HERE.parent / "programs" / "gearhb_gear" / "examples").glob("*.json")):
             out = build / "data" / "gearhb_gear" / example.stem
             print("[figures] %s %s --out %s" % (gear, example.name, out), flush=True)
+            t0 = time.time()
             subprocess.run([str(gear), str(example), "--quiet", "--out", str(out)], check=True)
+            timings.append(("gearhb_gear " + example.stem, time.time() - t0))
             for png in sorted(out.glob("*.png")):
                 shutil.copy(png, fig_dir / ("gear_%s_%s" % (example.stem, png.name)))
         # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
@@ -84,12 +90,17 @@ def main():
         # Which tooth model a scene needs: error against cost (figures/tooth_model_chart.py; about
         # a minute: FE runs at five mesh sizes per pair).
         import tooth_model_chart
+        t0 = time.time()
         for png in tooth_model_chart.draw(gear, build / "data" / "gearhb_gear" / "tooth_models", fig_dir):
             print("[figures]   %s" % png, flush=True)
+        timings.append(("tooth_model_chart", time.time() - t0))
         # One DOF against six (figures/gear_models.py) from the dynamics examples.
         import gear_models
         for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):
             print("[figures]   %s" % png, flush=True)
+    timings[0] = ("make_figures_total", time.time() - start)
+    with open(fig_dir / "timings.csv", "w") as f:
+        f.write("step,wall_s\n" + "".join("%s,%.1f\n" % t for t in timings))
     import report
     print("[figures] report: %s" % report.write(build))
 

@@ -105,7 +105,7 @@ def backlash_limit_figure(bg, path):
     ax.text(0.98, 0.04, "CE' = p_b - AC = %.3f mm" % CEp, transform=ax.transAxes, fontsize=8, ha="right")
     ax.set_title("Fig. 75: limit condition for the normal backlash: contact at E', the adjacent pair at A\n"
                  r"$\mu(E') = \alpha + \varepsilon + \varepsilon'$ = %.2f° (thesis %.2f°): "
-                 r"$b_n = b \cos\mu$ = %.2f µm (with the thesis' angles %.2f µm, printed truncated as %s µm), "
+                 r"$b_n = b \cos\mu$ = %.2f µm" "\n(with the thesis' angles %.2f µm, printed truncated as %s µm), "
                  "against %.2f µm at C"
                  % (ex["mu_E_prime_deg"], th["mu_E_prime_deg"], ex["bn_E_prime_um"], th["bn_E_prime_um"],
                     PRINTED_BN_E_PRIME_UM, ex["bn_C_um"]),
@@ -117,7 +117,7 @@ def backlash_limit_figure(bg, path):
     ax.set_yticks([])
     handles, labels = ax.get_legend_handles_labels()
     fig.legend(handles, labels, fontsize=7.5, loc="lower center", ncol=1, frameon=True)
-    fig.subplots_adjust(left=0.03, right=0.97, top=0.88, bottom=0.24)
+    fig.subplots_adjust(left=0.03, right=0.97, top=0.85, bottom=0.24)
     fig.savefig(path, dpi=120)
     plt.close(fig)
     return path

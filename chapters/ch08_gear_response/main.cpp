@@ -364,6 +364,7 @@ void GearResponse::own_case(Run& run) const {
   const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_), mesh_model(gear_));
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", mesh_response_table(hb, c));
+  run.write("bifurcations.csv", bifurcation_table(c));
   run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, mesh_model(gear_), hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
@@ -374,6 +375,8 @@ void GearResponse::own_case(Run& run) const {
   key.add("fn", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");
   key.add("mean_force_rel_dev", rep.mean_force_rel_dev, "-");
   key.add("points", double(c.branch.points.size()), "-");
+  key.add("folds", double(c.branch.folds.size()), "-");
+  key.add("bifurcations", double(c.bifurcations.size()), "-");
 }
 
 }  // namespace
