@@ -195,11 +195,12 @@ def sampled_aft(data_dir, fig_dir):
         ax, zoom = grid[0][col], grid[1][col]
         f = read_csv(data_dir / ("folds_%s.csv" % sc))
         folds = {f["setting"][i]: (int(f["folds"][i]), int(f["complete"][i])) for i in range(len(f["setting"]))}
-        ref = read_csv(data_dir / ("curve_%s_hb_exact_H20.csv" % sc))
+        ref = read_csv(data_dir / ("curve_%s_hb_exact_H10.csv" % sc))   # the same H as the sampled curves
         curves = []
         for a in (ax, zoom):
             a.plot(ref["omega"], ref["x_max"], color="k", lw=2.2, alpha=0.4,
-                   label="exact projection H = 20: %d folds" % folds["hb_exact_H20"][0])
+                   label="exact projection H = 10: %d folds (H = 20: %d)" % (folds["hb_exact_H10"][0],
+                                                                              folds["hb_exact_H20"][0]))
         for j, N in enumerate((2, 4, 8, 32)):
             tag = "hb_sampled_H10_N%d" % N
             d = read_csv(data_dir / ("curve_%s_%s.csv" % (sc, tag)))
@@ -229,11 +230,14 @@ def sampled_aft(data_dir, fig_dir):
 
 def harmonics(data_dir, fig_dir, params):
     fig, ax = plt.subplots(figsize=(7.5, 4.6))
-    for H, color in ((1, "C7"), (3, "C1"), (5, "C3"), (20, "k")):
+    # H = 20 first, wide and light, as the converged reference; the others thin on top, so H = 5
+    # (on H = 20 within the line width but for the small-amplitude end) stays visible.
+    for H, color, lw, alpha in ((20, "k", 5.0, 0.25), (1, "C7", 1.3, 1.0), (3, "C1", 1.3, 1.0), (5, "C3", 1.0, 1.0)):
         d = read_csv(data_dir / ("curve_gear_300Nm_hb_exact_H%d.csv" % H))
         fhz = {"omega": [w / (2 * math.pi) for w in d["omega"]], "x_max": [x * 1e6 for x in d["x_max"]],
                "stable": d["stable"]}
-        plot_branch(ax, fhz, color=color, label="H = %d" % H)
+        plot_branch(ax, fhz, color=color, label="H = %d%s" % (H, " (reference, wide)" if H == 20 else ""),
+                    lw=lw, alpha=alpha)
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("x_max (DTE) [um]")
     ax.set_title("Gear at %.0f N m, STE with %d harmonics: too few harmonics miss the superharmonic resonances"

@@ -121,20 +121,26 @@ def time_history(data_dir, fig_dir, kn, cases):
 
 
 def convergence(data_dir, fig_dir, params, cases):
-    fig, ax = plt.subplots(figsize=(8, 5))
+    fig, ax = plt.subplots(figsize=(10.5, 5))
+    unresolved = []
     for lb, row in cases.items():
         if row["torque"] != 300.0 or row["model"] != "constant":
             continue
         H = int(row["H"])
         d = read_csv(data_dir / ("frc_%s.csv" % lb))
+        bad = untrusted_stability(d, x="f_mesh_hz")   # the same rule as Figs. 69-70
+        if bad:
+            unresolved.append(H)
         plot_branch(ax, d, y="x_rms_ac", x="f_mesh_hz", color=H_COLORS.get(H, COMPARISON_COLOURS[4]), scale=UM, values="hb",
-                    label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
+                    unresolved=bad, label="H = %d (peak %.2f um at %.0f Hz)" % (H, row["peak_rms_um"], row["peak_f_hz"]))
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("RMS of the oscillating part of x  [um]")
     ax.set_xlim(params["f_min_hz"], params["f_max_hz"])
     ax.set_title("Supplement: H-convergence of the 300 N m curve (STE truncated to H harmonics)")
     h, _ = ax.get_legend_handles_labels()
-    ax.legend(handles=h + style_legend([]), loc="upper left", fontsize=8)
+    extra = [unresolved_handle(" and ".join(map(str, unresolved)))] if unresolved else []
+    # right of the axes: inside, it would cover the peaks the figure compares
+    ax.legend(handles=h + style_legend(extra), loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7.5)
     return save(fig, fig_dir / "fig70s_H_convergence.png")
 
 

@@ -90,7 +90,8 @@ def runs(flags):
     return out
 
 
-def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, values=None, unresolved=()):
+def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, values=None, unresolved=(), lw=1.4,
+                alpha=1.0):
     """One continuation branch: solid where stable, dashed where unstable, grey (UNRESOLVED)
     at the indices `unresolved` (a stability label that is not trusted).
     Consecutive runs share their end point so the curve stays connected.
@@ -106,7 +107,7 @@ def plot_branch(ax, d, y="x_max", color="C0", label=None, x="omega", scale=1.0, 
             ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=UNRESOLVED, ls="-", lw=2.4, alpha=0.9, zorder=3)
             continue
         ax.plot(xs[i0:j1 + 1], ys[i0:j1 + 1], color=color, ls="-" if flag else "--",
-                lw=1.4, label=label if first else None)
+                lw=lw, alpha=alpha, label=label if first else None)
         first = False
     note_values(ax, exact)
     if exact:   # points with no exact value: their HB value, marked (one legend entry per axes)
@@ -159,9 +160,10 @@ def untrusted_stability(d, x="omega"):
 
 
 def unresolved_handle(H):
+    """H: the harmonics (an int, or a text such as "1 and 5") whose stability is not resolved."""
     from matplotlib.lines import Line2D
-    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %d: the shooting correction\n"
-                  "fails or the label flips between folds (the %d-harmonic orbit is too far from the exact one)" % (H, H))
+    return Line2D([], [], color=UNRESOLVED, lw=2.4, label="stability not resolved at H = %s:\nthe shooting correction fails or the label\n"
+                  "flips between folds (the H-harmonic orbit\nis too far from the exact one)" % H)
 
 
 # The thesis' torques in every chapter (N m) and their colours: blue, orange, red.

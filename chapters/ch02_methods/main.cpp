@@ -103,7 +103,8 @@ const char* family_name(Family f) {
 const std::vector<Setting> kSettings = {
     {Family::hb_exact, 1, 0, 0, true, true},     {Family::hb_exact, 2, 0, 0, false, false},
     {Family::hb_exact, 3, 0, 0, true, true},     {Family::hb_exact, 5, 0, 0, false, true},
-    {Family::hb_exact, 8, 0, 0, true, false},    {Family::hb_exact, 12, 0, 0, false, false},
+    {Family::hb_exact, 8, 0, 0, true, false},    {Family::hb_exact, 10, 0, 0, false, true},
+    {Family::hb_exact, 12, 0, 0, false, false},
     {Family::hb_exact, 20, 0, 0, true, true},    {Family::hb_exact, 30, 0, 0, false, false},
     {Family::hb_exact, 40, 0, 0, false, false},
     {Family::hb_sampled, 10, 2, 0, true, true},  {Family::hb_sampled, 10, 4, 0, false, true},
