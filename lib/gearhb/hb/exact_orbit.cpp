@@ -82,40 +82,55 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
   std::vector<FlowSegment> segments;
   Eigen::VectorXd xT, vT;
   flow_.follow(x0, v0, omega, shooting_nodes(hb, X, omega, steps), xT, vT, segments);
-  // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them: for a
-  // diagonalised propagator sub-pieces that grow as its damped modes decay (sub_piece_starts)
-  // and all nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0); for a Pade propagator
-  // uniform sub-pieces and the maps exp(A_S x_j h), kept per (S, h) (the uniform steps share them).
-  const auto rule = unit_rule();
+  // 2. sub-pieces with h x rate <= 1, and the quadrature nodes on them
+  split_into_pieces(segments);
+  if (pieces_.empty()) throw std::runtime_error("ExactOrbit: no piece of the orbit at omega = " + std::to_string(omega));
+  place_nodes();
+  if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
+  // 3. how periodic, and whether every node lies in its piece's contact state
+  check(hb, x0, v0, xT, vT);
+}
+
+// Step 2a: for a diagonalised propagator sub-pieces that grow as its damped modes decay
+// (sub_piece_starts); for a Pade propagator uniform sub-pieces, each started by the map
+// exp(A_S h / m), kept per (S, h / m) (the uniform steps share them).
+void ExactOrbit::split_into_pieces(const std::vector<FlowSegment>& segments) {
   std::map<std::pair<unsigned, double>, Eigen::MatrixXd> step_maps;
   auto step_of = [&](unsigned S, double h) -> const Eigen::MatrixXd& {
     auto it = step_maps.find({S, h});
-    if (it == step_maps.end()) it = step_maps.emplace(std::make_pair(S, h), flow_.exponential(S, omega, h)).first;
+    if (it == step_maps.end()) it = step_maps.emplace(std::make_pair(S, h), flow_.exponential(S, omega_, h)).first;
     return it->second;
   };
   for (const auto& sg : segments) {
-    if (flow_.spectral(sg.state, omega)) {
-      const std::vector<double> s = sub_piece_starts(flow_.eigenvalues(sg.state, omega), sg.h);
+    if (flow_.spectral(sg.state, omega_)) {
+      const std::vector<double> s = sub_piece_starts(flow_.eigenvalues(sg.state, omega_), sg.h);
       for (std::size_t j = 0; j < s.size(); ++j) {
         const double end = j + 1 < s.size() ? s[j + 1] : sg.h;
-        pieces_.push_back({sg.t0 + s[j], end - s[j], sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega, s[j], sg.z0)});
+        pieces_.push_back({sg.t0 + s[j], end - s[j], sg.state, j == 0 ? sg.z0 : flow_.advance(sg.state, omega_, s[j], sg.z0)});
       }
       continue;
     }
-    const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega))), 1, kMaxSubPieces);
+    const int m = std::clamp(int(std::ceil(sg.h * flow_.rate(sg.state, omega_))), 1, kMaxSubPieces);
     Eigen::VectorXd z = sg.z0;
     for (int j = 0; j < m; ++j) {
       if (j > 0) z = step_of(sg.state, sg.h / m) * z;
       pieces_.push_back({sg.t0 + sg.h * j / m, sg.h / m, sg.state, z});
     }
   }
-  if (pieces_.empty()) throw std::runtime_error("ExactOrbit: no piece of the orbit at omega = " + std::to_string(omega));
+}
+
+// Step 2b: the state at the Gauss nodes of every piece: a diagonalised propagator gives all
+// nodes of a piece in one product V (e^{lambda s_j} o V^-1 z0); a Pade one the maps
+// exp(A_S x_j h), kept per (S, h). The oscillator rows [1, cos k omega t, sin k omega t] in
+// closed form.
+void ExactOrbit::place_nodes() {
+  const auto rule = unit_rule();
   std::map<std::pair<unsigned, double>, std::vector<Eigen::MatrixXd>> maps;
   auto maps_of = [&](unsigned S, double h) -> const std::vector<Eigen::MatrixXd>& {
     auto it = maps.find({S, h});
     if (it != maps.end()) return it->second;
     std::vector<Eigen::MatrixXd> E;
-    for (const auto& node : rule) E.push_back(flow_.exponential(S, omega, node.first * h).topRows(2 * n_));
+    for (const auto& node : rule) E.push_back(flow_.exponential(S, omega_, node.first * h).topRows(2 * n_));
     return maps.emplace(std::make_pair(S, h), std::move(E)).first->second;
   };
   const Eigen::Index R = Eigen::Index(rule.size()), N = Eigen::Index(pieces_.size()) * R;
@@ -132,29 +147,32 @@ ExactOrbit::ExactOrbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, doub
       w_[c0 + j] = rule[std::size_t(j)].second * p.h;
       state_.push_back(p.state);
     }
-    if (flow_.spectral(p.state, omega)) {
-      z_.block(0, c0, 2 * n_, R) = flow_.advance_xv(p.state, omega, s, p.z0);
+    if (flow_.spectral(p.state, omega_)) {
+      z_.block(0, c0, 2 * n_, R) = flow_.advance_xv(p.state, omega_, s, p.z0);
     } else {
       const auto& E = maps_of(p.state, p.h);
       for (Eigen::Index j = 0; j < R; ++j) z_.block(0, c0 + j, 2 * n_, 1).noalias() = E[std::size_t(j)] * p.z0;
     }
   }
-  // the oscillator rows [1, cos k omega t, sin k omega t] in closed form
   const auto& harmonics = flow_.oscillator_harmonics();
   z_.row(2 * n_).setOnes();
   for (std::size_t j = 0; j < harmonics.size(); ++j) {
-    const Eigen::ArrayXd th = harmonics[j] * omega * t_.array();
+    const Eigen::ArrayXd th = harmonics[j] * omega_ * t_.array();
     z_.row(2 * n_ + 1 + 2 * Eigen::Index(j)) = th.cos().matrix().transpose();
     z_.row(2 * n_ + 2 + 2 * Eigen::Index(j)) = th.sin().matrix().transpose();
   }
-  if (!z_.allFinite()) throw std::runtime_error("ExactOrbit: the orbit is not finite at omega = " + std::to_string(omega));
-  // 3. how periodic, and whether every node lies in its piece's contact state
+}
+
+// Step 3: the period mismatch (scaled as the shooting residual: displacements by max |x|,
+// velocities by omega max |x|) and whether every node's penetration has its piece's sign.
+void ExactOrbit::check(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                       const Eigen::VectorXd& xT, const Eigen::VectorXd& vT) {
   const double xs = z_.topRows(n_).cwiseAbs().maxCoeff();
   // scaled as the shooting residual: displacements by max |x|, velocities by omega max |x|
-  mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff(), (vT - v0).cwiseAbs().maxCoeff() / omega) / std::max(xs, 1e-300);
+  mismatch_ = std::max((xT - x0).cwiseAbs().maxCoeff(), (vT - v0).cwiseAbs().maxCoeff() / omega_) / std::max(xs, 1e-300);
   for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
     double scale = 0.0, wrong = 0.0;
-    for (Eigen::Index j = 0; j < N; ++j) {
+    for (Eigen::Index j = 0; j < z_.cols(); ++j) {
       const double u = flow_.penetration(i, z_.col(j));
       scale = std::max(scale, std::fabs(u));
       const bool closed = state_[std::size_t(j)] >> i & 1u;

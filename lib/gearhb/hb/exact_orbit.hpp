@@ -79,6 +79,10 @@ class ExactOrbit {
   double mismatch_ = 0.0;
   bool consistent_ = true;
   double extremum(const Piece& p, const Eigen::VectorXd& q, double lo, double hi) const;
+  void split_into_pieces(const std::vector<FlowSegment>& segments);   // the constructor's steps
+  void place_nodes();
+  void check(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, const Eigen::VectorXd& xT,
+             const Eigen::VectorXd& vT);
 };
 
 // Whether a point of a frequency curve has exact measures (the tables' `exact` column):
