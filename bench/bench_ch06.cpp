@@ -67,15 +67,15 @@ static void BM_ch06_bordered_solve(benchmark::State& state) {
   const double w = 9000.0;
   const Scaling s = hb.scaling(2000.0, 62000.0);
   const Eigen::VectorXd X = 20.0 * hb.closed_contact_solution(w);   // intermittent contact
-  Eigen::VectorXd row = Eigen::VectorXd::Ones(hb.size() + 1), rhs = row, dy, R, dRdw;
+  Eigen::VectorXd row = Eigen::VectorXd::Ones(hb.size() + 1), rhs = row, dy, R, dRdomega;
   Eigen::MatrixXd J;
   for (auto _ : state) {
     if (state.range(1)) {
-      const auto lin = hb.linearize(X, w, s, R, dRdw);
+      const auto lin = hb.linearize(X, w, s, R, dRdomega);
       if (!lin->solve_bordered(row, rhs, dy) || !lin->last_solve_structured()) state.SkipWithError("not condensed");
     } else {
-      hb.evaluate(X, w, R, &J, &dRdw);
-      DenseLinearization(J, dRdw, s).solve_bordered(row, rhs, dy);
+      hb.evaluate(X, w, R, &J, &dRdomega);
+      DenseLinearization(J, dRdomega, s).solve_bordered(row, rhs, dy);
     }
     benchmark::DoNotOptimize(dy.data());
   }

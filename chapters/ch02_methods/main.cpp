@@ -581,14 +581,14 @@ void Methods::cost_growth(Run& run) const {
       const Scaling sc = hb.scaling(0.5 * omega, 2.0 * omega);
       const VectorXd X = hb.open_contact_solution(omega) * 3.0;
       const VectorXd border = VectorXd::Ones(hb.size() + 1);
-      VectorXd R, dX, dRdw;
+      VectorXd R, dX, dRdomega;
       MatrixXd J;
       const double dense = seconds_per_call([&] {
         hb.evaluate(X, omega, R, &J, nullptr);
         dX = J.partialPivLu().solve(R);
       });
       const double condensed = seconds_per_call([&] {
-        const auto lin = hb.linearize(X, omega, sc, R, dRdw);
+        const auto lin = hb.linearize(X, omega, sc, R, dRdomega);
         lin->solve_bordered(border, border, dX);
       });
       t.add_row({long(n), long(H), long(unknowns), dense, condensed});
@@ -734,7 +734,7 @@ void Methods::unscaled_newton(Run& run) const {
     for (const auto& p : br.points) b.add_row({std::string(s == &scaled ? "automatic" : "none"), p.omega, ev.summarize(p.X).x_max});
     key.add(std::string("arclength_complete_") + (s == &scaled ? "scaled" : "unscaled"), br.complete ? 1.0 : 0.0, "-");
     key.add(std::string("arclength_reached_hz_") + (s == &scaled ? "scaled" : "unscaled"),
-            br.points.empty() ? 0.0 : br.points.back().omega / (2 * M_PI), "Hz");
+            br.points.empty() ? 0.0 : hz(br.points.back().omega), "Hz");
     run.say(std::string("gear arc length, ") + (s == &scaled ? "automatic scaling: " : "no scaling: ") + br.summary());
   }
   run.write("unscaled_arclength.csv", b);

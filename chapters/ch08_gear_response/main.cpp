@@ -225,10 +225,10 @@ void GearResponse::gear_constants(Run& run) const {
   key.add("me", g.me, "kg");
   key.add("kc_used_T300", g.kc, "N/m");
   key.add("c_T300", g.c, "N s/m");
-  key.add("fn_T300", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");
+  key.add("fn_T300", hz(std::sqrt(g.kc / g.me)), "Hz");
   run.say("me = " + std::to_string(g.me) + " kg, kc(300 N m) = " + std::to_string(g.kc * 1e-6) +
           " MN/m, c = " + std::to_string(g.c) + " N s/m, fn = " +
-          std::to_string(std::sqrt(g.kc / g.me) / (2 * M_PI)) + " Hz");
+          std::to_string(hz(std::sqrt(g.kc / g.me))) + " Hz");
 }
 
 // Step 3 (Figs. 69-70, H-convergence): one continuation per case of the table.
@@ -372,7 +372,7 @@ void GearResponse::own_case(Run& run) const {
   key.add("me", g.me, "kg");
   key.add("kc", g.kc, "N/m");
   key.add("c", g.c, "N s/m");
-  key.add("fn", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");
+  key.add("fn", hz(std::sqrt(g.kc / g.me)), "Hz");
   key.add("mean_force_rel_dev", rep.mean_force_rel_dev, "-");
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");

@@ -392,7 +392,7 @@ void BacklashChapter::own_case(Run& run) const {
   run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
-  run.key_numbers().add("fn", std::sqrt(g.kc / g.me) / (2 * M_PI), "Hz");
+  run.key_numbers().add("fn", hz(std::sqrt(g.kc / g.me)), "Hz");
 }
 
 }  // namespace

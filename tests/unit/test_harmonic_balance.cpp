@@ -92,9 +92,9 @@ TEST(HarmonicBalance, JacobianMatchesFiniteDifferences) {
   VectorXd X = VectorXd::Zero(hb.size());
   X << 0.05, 0.9, 0.2, 0.03, -0.02, 0.01, 0.004, -0.003, 0.002;
   const double w = 1.04;
-  VectorXd R, dRdw;
+  VectorXd R, dRdomega;
   MatrixXd J;
-  hb.evaluate(X, w, R, &J, &dRdw);
+  hb.evaluate(X, w, R, &J, &dRdomega);
   const double h = 1e-7;   // central differences: error O(h^2) away from kinks
   VectorXd Rp, Rm;
   for (int j = 0; j < hb.size(); ++j) {
@@ -108,7 +108,7 @@ TEST(HarmonicBalance, JacobianMatchesFiniteDifferences) {
   }
   hb.evaluate(X, w + h, Rp, nullptr, nullptr);
   hb.evaluate(X, w - h, Rm, nullptr, nullptr);
-  EXPECT_LT(((Rp - Rm) / (2 * h) - dRdw).cwiseAbs().maxCoeff(), 1e-6);
+  EXPECT_LT(((Rp - Rm) / (2 * h) - dRdomega).cwiseAbs().maxCoeff(), 1e-6);
 }
 
 TEST(Continuation, ContactBranchHasExactlyTwoFoldsAndIsComplete) {

@@ -17,12 +17,12 @@ namespace {
 // max |dy_condensed - dy_dense| / max |dy_dense| for a random border row and right-hand side
 double condensed_vs_dense(const HarmonicBalance& hb, const Eigen::VectorXd& X, double w, const Scaling& s,
                           unsigned seed, bool expect_condensed = true) {
-  Eigen::VectorXd R, dRdw, R2;
-  const auto lin = hb.linearize(X, w, s, R, dRdw);
+  Eigen::VectorXd R, dRdomega, R2;
+  const auto lin = hb.linearize(X, w, s, R, dRdomega);
   Eigen::MatrixXd J;
   hb.evaluate(X, w, R2, &J, nullptr);
   EXPECT_LE((R - R2).cwiseAbs().maxCoeff(), 1e-14 * (1.0 + R.cwiseAbs().maxCoeff()));
-  const DenseLinearization dense(J, dRdw, s);
+  const DenseLinearization dense(J, dRdomega, s);
   std::mt19937 gen(seed);
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   Eigen::VectorXd row(hb.size() + 1), rhs(hb.size() + 1), a, b;

@@ -23,13 +23,6 @@ Table frequency_response_table(const HarmonicBalance& hb, const Branch& b,
 
 namespace {
 
-// The common columns of every frequency-response table (lib/README "Output files").
-std::vector<std::string> common_columns() {
-  return {"omega", "x_max", "x_min", "x_rms_ac", "x_h1", "x_mean", "stable", "contact",
-          "floquet_modulus", "floquet_angle", "hb_orbit_error",
-          "x_max_exact", "x_min_exact", "x_rms_ac_exact", "x_h1_exact", "x_mean_exact", "exact", "period", "branch"};
-}
-
 // The exact twins of x_max, x_min, x_rms_ac, x_h1, x_mean: empty unless status ok.
 std::vector<Table::Cell> exact_cells(const ExactPoint& e, std::size_t k, bool with_rms_mean = true) {
   const bool ok = e.status == ExactStatus::ok;
@@ -41,18 +34,21 @@ std::vector<Table::Cell> exact_cells(const ExactPoint& e, std::size_t k, bool wi
   return r;
 }
 
-// Point i's common cells; `e` holds the exact measures of q first. omega is written as the
-// forcing frequency: label.period x the point's (the base frequency of a period-p model).
+// Point i's frequency and common cells (app/schema.hpp); `e` holds the exact measures of q
+// first. omega is written as the forcing frequency: label.period x the point's (the base
+// frequency of a period-p model).
 std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const FrequencyCurve& c, std::size_t i,
-                                    const ExactPoint& e, const std::string& contact, const BranchLabel& label = {}) {
+                                    const ExactPoint& e, const std::string& contact, const BranchLabel& label = {},
+                                    const ResponseLayout& layout = {}) {
   const auto& P = c.branch.points;
   const auto r = ev.summarize(P[i].X);
   const bool fl = c.floquet.size() == P.size();
-  std::vector<Table::Cell> row{label.period * P[i].omega, r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+  std::vector<Table::Cell> row = frequency_cells(layout.axis, label.period * P[i].omega, layout.teeth_1);
+  row.insert(row.end(), {r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
                                contact.empty() ? std::string(to_string(r.contact)) : contact,
                                cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
                                // NaN where no corrected orbit exists (a time-varying stiffness)
-                               cell(fl && std::isfinite(c.floquet[i].orbit_error), fl ? c.floquet[i].orbit_error : 0.0)};
+                               cell(fl && std::isfinite(c.floquet[i].orbit_error), fl ? c.floquet[i].orbit_error : 0.0)});
   const auto ex = exact_cells(e, 0);
   row.insert(row.end(), ex.begin(), ex.end());
   row.push_back(std::string(to_string(e.status)));
@@ -65,7 +61,7 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
 Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& output,
                          const RowProgress& progress, const BranchLabel& label) {
   const int n = hb.dofs();
-  std::vector<std::string> columns = common_columns();
+  std::vector<std::string> columns = columns_of(frequency_columns(FrequencyAxis::omega), response_columns());
   std::vector<ResponseEvaluator> dof;
   std::vector<Eigen::VectorXd> qs{output};
   for (int i = 0; i < n; ++i) {
@@ -100,21 +96,20 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
 
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const RowProgress& progress) {
-  return frequency_response_table(hb, c, q, {}, {}, {}, progress);
+  return frequency_response_table(hb, c, q, {}, {}, {}, progress, {});
 }
 
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label,
-                               const RowProgress& progress) {
+                               const RowProgress& progress, const ResponseLayout& layout) {
   ResponseEvaluator ev(hb, q);
-  std::vector<std::string> columns = common_columns();
-  columns.insert(columns.end(), extra.begin(), extra.end());
-  Table t(columns);
+  Table t(columns_of(frequency_columns(layout.axis), response_columns(), extra));
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     if (progress) progress(i);
-    std::vector<Table::Cell> row = common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "");
+    std::vector<Table::Cell> row =
+        common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "", {}, layout);
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);
       row.insert(row.end(), more.begin(), more.end());
@@ -138,26 +133,15 @@ Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label, const
 }
 
 Table time_integration_table(const TimeIntegrationCheck& check) {
-  Table t({"omega", "x_max_hb", "x_max_time_integration", "rel_diff", "periods", "contact"});
+  Table t(check_columns(FrequencyAxis::omega, {"x_max"}));
   for (const auto& r : check.rows)
-    t.add_row({r.omega, r.x_max_hb, r.x_max_time_integration, r.rel_diff, long(r.periods),
-               std::string(to_string(r.contact))});
+    t.add_row({r.omega, std::string(to_string(r.contact)), r.x_max_hb, r.x_max_time_integration, r.rel_diff,
+               long(r.periods)});
   return t;
 }
 
-double hz(double omega) { return omega / (2 * M_PI); }
-
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c) {
-  const ResponseEvaluator ev(hb, Eigen::VectorXd::Constant(1, 1.0));
-  std::vector<std::string> columns{"f_mesh_hz"};
-  for (const auto& name : common_columns()) columns.push_back(name);
-  Table t(columns);
-  for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
-    std::vector<Table::Cell> row{hz(c.branch.points[i].omega)};
-    for (auto& x : common_row(ev, c, i, exact_point(hb, c, i, {Eigen::VectorXd::Constant(1, 1.0)}), "")) row.push_back(x);
-    t.add_row(std::move(row));
-  }
-  return t;
+  return frequency_response_table(hb, c, Eigen::VectorXd::Constant(1, 1.0), {}, {}, {}, {}, {FrequencyAxis::mesh});
 }
 
 }  // namespace gearhb

@@ -8,7 +8,9 @@
 
 #include <Eigen/Dense>
 
+#include "gearhb/core/units.hpp"
 #include "gearhb/app/output.hpp"
+#include "gearhb/app/schema.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
@@ -41,6 +43,12 @@ struct BranchLabel {
 // orbit: `progress` (if given) is called before each row with its point (e.g. to show
 // progress, RowProgress).
 using RowProgress = std::function<void(std::size_t point)>;
+// The frequency columns a table starts with (app/schema.hpp): omega alone, or a gear mesh's
+// omega, f_mesh_hz (and speed_rpm of gear 1, z1 = teeth_1).
+struct ResponseLayout {
+  FrequencyAxis axis = FrequencyAxis::omega;
+  double teeth_1 = 0.0;
+};
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const RowProgress& progress = {});
 // The same with a program's own columns after the common ones: `extra` names them and
@@ -50,7 +58,7 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label = {},
-                               const RowProgress& progress = {});
+                               const RowProgress& progress = {}, const ResponseLayout& layout = {});
 // The frequency response of a model file (gearhb_frc): the common columns for the output
 // coordinate, then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n, then
 // q<i>_max_exact, q<i>_min_exact, q<i>_h1_exact, then contact_<j> for every contact j =
@@ -67,13 +75,11 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
 // bifurcation i, empty where none or `starts` is empty).
 Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, const std::vector<int>& starts = {});
 
-// The harmonic-balance vs time-integration comparison, one row per compared point.
+// The harmonic-balance vs time-integration comparison, one row per compared point:
+// check_columns(omega, {"x_max"}) (app/schema.hpp).
 Table time_integration_table(const TimeIntegrationCheck& check);
 
-// An angular frequency omega [rad/s] in Hz, omega / (2 pi) (a mesh frequency f_mesh_hz).
-double hz(double omega);
-
-// The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: f_mesh_hz,
-// then the common columns of the mesh deflection.
+// The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: omega,
+// f_mesh_hz, then the common columns of the mesh deflection (app/schema.hpp).
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);
 }  // namespace gearhb

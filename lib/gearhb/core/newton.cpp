@@ -5,11 +5,11 @@
 
 namespace gearhb {
 
-DenseLinearization::DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdw, const Scaling& s) {
+DenseLinearization::DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdomega, const Scaling& s) {
   const Eigen::Index n = J.rows();
   A_.resize(n + 1, n + 1);
   A_.topLeftCorner(n, n) = (J * s.x.asDiagonal()) / s.residual;
-  A_.block(0, n, n, 1) = dRdw * (s.omega / s.residual);
+  A_.block(0, n, n, 1) = dRdomega * (s.omega / s.residual);
   A_.row(n).setZero();
 }
 
@@ -23,10 +23,10 @@ bool DenseLinearization::solve_bordered(const Eigen::VectorXd& row, const Eigen:
 
 std::unique_ptr<Linearization> ParametricProblem::linearize(const Eigen::VectorXd& X, double omega,
                                                             const Scaling& s, Eigen::VectorXd& R,
-                                                            Eigen::VectorXd& dRdw) const {
+                                                            Eigen::VectorXd& dRdomega) const {
   Eigen::MatrixXd J;
-  evaluate(X, omega, R, &J, &dRdw);
-  return std::make_unique<DenseLinearization>(std::move(J), dRdw, s);
+  evaluate(X, omega, R, &J, &dRdomega);
+  return std::make_unique<DenseLinearization>(std::move(J), dRdomega, s);
 }
 
 NewtonReport newton_solve(const ParametricProblem& p, Eigen::VectorXd& X, double omega,

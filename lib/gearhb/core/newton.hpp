@@ -41,7 +41,7 @@ class Linearization {
 // with partial pivoting.
 class DenseLinearization : public Linearization {
  public:
-  DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdw, const Scaling& s);
+  DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdomega, const Scaling& s);
   bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override;
 
  private:
@@ -55,13 +55,13 @@ class ParametricProblem {
   virtual int size() const = 0;
   // R(X, omega); if requested also dR/dX (size x size) and dR/domega.
   virtual void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
-                        Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw) const = 0;
+                        Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdomega) const = 0;
   // R and dR/domega at (X, omega), and the linearisation there for the bordered
   // solves of continuation. The default is DenseLinearization of evaluate's
   // Jacobian; a problem whose Jacobian has structure may solve faster
   // (HarmonicBalance: condensation on the contact coordinates).
   virtual std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
-                                                   Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const;
+                                                   Eigen::VectorXd& R, Eigen::VectorXd& dRdomega) const;
 };
 
 struct NewtonOptions {

@@ -26,9 +26,9 @@ struct Scaled {
   const ParametricProblem& p;
   const Scaling& s;
   int n;
-  Eigen::VectorXd R, dRdw;
+  Eigen::VectorXd R, dRdomega;
   std::unique_ptr<Linearization> lin;
-  Scaled(const ParametricProblem& prob, const Scaling& sc) : p(prob), s(sc), n(prob.size()), R(n), dRdw(n) {}
+  Scaled(const ParametricProblem& prob, const Scaling& sc) : p(prob), s(sc), n(prob.size()), R(n), dRdomega(n) {}
   Eigen::VectorXd X(const Eigen::VectorXd& y) const { return s.x.cwiseProduct(y.head(n)); }
   double omega(const Eigen::VectorXd& y) const { return y[n] * s.omega; }
   Eigen::VectorXd y(const Eigen::VectorXd& X, double omega) const {
@@ -39,7 +39,7 @@ struct Scaled {
   }
   // Linearises at y; returns max|R|/r.
   double eval(const Eigen::VectorXd& y) {
-    lin = p.linearize(X(y), omega(y), s, R, dRdw);
+    lin = p.linearize(X(y), omega(y), s, R, dRdomega);
     return R.cwiseAbs().maxCoeff() / s.residual;
   }
 };

@@ -63,10 +63,10 @@ class AmplitudeHomotopy : public ParametricProblem {
   }
   int size() const override { return hb_.size(); }
   void evaluate(const Eigen::VectorXd& X, double lambda, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
-                Eigen::VectorXd* dRdw) const override {
-    hb_.evaluate_gap_scaled(X, w_, lambda, R, dRdX, dRdw);
+                Eigen::VectorXd* dRdomega) const override {
+    hb_.evaluate_gap_scaled(X, w_, lambda, R, dRdX, dRdomega);
     R += (1.0 - lambda) * fper_;
-    if (dRdw) *dRdw -= fper_;
+    if (dRdomega) *dRdomega -= fper_;
   }
   bool forced() const { return fper_.cwiseAbs().maxCoeff() > 0.0 || hb_.gaps_vary(); }
 

@@ -61,7 +61,7 @@ HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact
 }
 
 void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
-                                   Eigen::VectorXd* dRdw) const {
+                                   Eigen::VectorXd* dRdomega) const {
   // X and R as n x (2H+1) matrices, one column per coefficient
   const int n = n_, m = 2 * H_ + 1;
   R.resize(size());
@@ -77,9 +77,9 @@ void HarmonicBalance::linear_terms(const Eigen::VectorXd& X, double omega, Eigen
   }
   Rm.col(2 * f_.harmonic - 1) -= f_.fc;
   Rm.col(2 * f_.harmonic) -= f_.fs;
-  if (dRdw) {
-    dRdw->setZero(size());
-    Eigen::Map<Eigen::MatrixXd> Dm(dRdw->data(), n, m);
+  if (dRdomega) {
+    dRdomega->setZero(size());
+    Eigen::Map<Eigen::MatrixXd> Dm(dRdomega->data(), n, m);
     for (int k = 1; k <= H_; ++k) {
       const int c = 2 * k - 1, s = 2 * k;
       Dm.col(c) = -2.0 * k * k * omega * MX.col(c) + k * CX.col(s);
@@ -166,8 +166,8 @@ Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double omega, const std::vect
 }
 
 void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
-                               Eigen::MatrixXd* J, Eigen::VectorXd* dRdw) const {
-  linear_terms(X, omega, R, dRdw);
+                               Eigen::MatrixXd* J, Eigen::VectorXd* dRdomega) const {
+  linear_terms(X, omega, R, dRdomega);
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, J != nullptr, J ? &G : nullptr);
   if (J) *J = assemble_jacobian(omega, G);
@@ -192,9 +192,9 @@ class CondensedLinearization : public Linearization {
   // blocks: L's diagonal blocks (harmonic 0: n x n, k >= 1: 2n x 2n, [cos; sin]);
   // normals: n x P; G: the P product matrices (m x m).
   CondensedLinearization(std::vector<Eigen::MatrixXd> blocks, std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu,
-                         Eigen::MatrixXd normals, std::vector<Eigen::MatrixXd> G, Eigen::VectorXd dRdw, const Scaling& s)
+                         Eigen::MatrixXd normals, std::vector<Eigen::MatrixXd> G, Eigen::VectorXd dRdomega, const Scaling& s)
       : L_(std::move(blocks)), lu_(std::move(lu)), normals_(std::move(normals)), G_(std::move(G)),
-        b_(std::move(dRdw)), s_(s), m_(2 * int(L_.size()) - 1) {
+        b_(std::move(dRdomega)), s_(s), m_(2 * int(L_.size()) - 1) {
     const int n = int(normals_.rows()), P = int(normals_.cols()), m = m_;
     for (std::size_t k = 0; k < L_.size(); ++k) offset_.push_back(k == 0 ? 0 : n * (2 * int(k) - 1));
     // the contact coordinates q = (contact i, basis a) and W's columns w_q = L_k^-1 (n_i at basis a)
@@ -310,8 +310,8 @@ class CondensedLinearization : public Linearization {
 class HbLinearization : public Linearization {
  public:
   HbLinearization(std::unique_ptr<CondensedLinearization> condensed, std::function<Eigen::MatrixXd()> dense_J,
-                  Eigen::VectorXd dRdw, const Scaling& s)
-      : condensed_(std::move(condensed)), dense_J_(std::move(dense_J)), dRdw_(std::move(dRdw)), s_(s) {}
+                  Eigen::VectorXd dRdomega, const Scaling& s)
+      : condensed_(std::move(condensed)), dense_J_(std::move(dense_J)), dRdw_(std::move(dRdomega)), s_(s) {}
   bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
     structured_ = condensed_ && condensed_->solve_bordered(row, rhs, dy);
     if (structured_) return true;
@@ -332,13 +332,13 @@ class HbLinearization : public Linearization {
 }  // namespace
 
 std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
-                                                          Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const {
-  linear_terms(X, omega, R, &dRdw);
+                                                          Eigen::VectorXd& R, Eigen::VectorXd& dRdomega) const {
+  linear_terms(X, omega, R, &dRdomega);
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, true, &G);
   const int n = n_, m = 2 * H_ + 1, P = int(contacts_.size());
   auto dense = [this, omega, G]() { return assemble_jacobian(omega, G); };   // G as it is now (a copy)
-  if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdw, s);   // nothing to condense
+  if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdomega, s);   // nothing to condense
   auto singular = [](const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
     const Eigen::VectorXd d = lu.matrixLU().diagonal().cwiseAbs();
     return !(d.minCoeff() > 1e-13 * d.maxCoeff());
@@ -362,15 +362,15 @@ std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd&
     // L still singular (a free mode no contact holds, an undamped resonance of the open
     // system at k omega): the dense system only. Near-singular blocks are caught by the
     // condensed solve's residual check.
-    if (singular(factors.back())) return std::make_unique<DenseLinearization>(dense(), dRdw, s);
+    if (singular(factors.back())) return std::make_unique<DenseLinearization>(dense(), dRdomega, s);
   }
   Eigen::MatrixXd normals(n, P);
   for (int i = 0; i < P; ++i) normals.col(i) = contacts_[i].normal;
   return std::make_unique<HbLinearization>(
       std::make_unique<CondensedLinearization>(std::move(blocks), std::move(factors), std::move(normals), std::move(G),
-                                               dRdw, s),
+                                               dRdomega, s),
       dense,
-      dRdw, s);
+      dRdomega, s);
 }
 
 Eigen::VectorXd HarmonicBalance::project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const {

@@ -74,7 +74,7 @@ class HarmonicBalance : public ParametricProblem {
   const Excitation& excitation() const { return f_; }
 
   void evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
-                Eigen::VectorXd* dRdw) const override;
+                Eigen::VectorXd* dRdomega) const override;
   // The residual with the periodic parts of every gap (gap_harmonics) scaled by lambda, its
   // Jacobian in X and dR/dlambda: find_first_point's homotopy for a model forced through its
   // gaps (a gear mesh driven by its transmission error; first_point.hpp).
@@ -88,7 +88,7 @@ class HarmonicBalance : public ParametricProblem {
   // LU as the fallback. A singular K (a free mode the contacts hold) takes the contacts'
   // mean stiffness into its static block (and out of their product matrices) first.
   std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
-                                           Eigen::VectorXd& R, Eigen::VectorXd& dRdw) const override;
+                                           Eigen::VectorXd& R, Eigen::VectorXd& dRdomega) const override;
 
   // Index of coefficient `basis` (0 static, 2k-1 cos k, 2k sin k) of DOF `dof` in X.
   int index(int basis, int dof) const { return basis * n_ + dof; }
@@ -136,7 +136,7 @@ class HarmonicBalance : public ParametricProblem {
   // The pieces of evaluate: the linear terms of R (and dR/domega), the contact
   // forces added to R (and each contact's product matrix G, kc included), the
   // dynamic stiffness block of harmonic k, and J from those.
-  void linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::VectorXd* dRdw) const;
+  void linear_terms(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R, Eigen::VectorXd* dRdomega) const;
   // The contacts' force coefficients added to R, their product matrices to G (if given);
   // the gaps' periodic parts scaled by gap_scale, and d(R)/d(gap_scale) added to dRdscale.
   void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, bool jacobian, std::vector<Eigen::MatrixXd>* G,

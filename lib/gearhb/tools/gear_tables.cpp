@@ -14,19 +14,20 @@ Table loss_band_table(const std::vector<std::pair<std::string, DteCurveReport>>&
 }
 
 Table dte_time_integration_table(const std::vector<std::pair<std::string, DteTimeCheck>>& checks) {
-  Table t({"label", "f_mesh_hz", "contact", "x_rms_ac_hb", "x_rms_ac_ti", "rel_diff", "periods"});
+  Table t(check_columns(FrequencyAxis::mesh, {"x_rms_ac"}, {"label"}));
   for (const auto& [label, chk] : checks)
     for (const auto& r : chk.rows)
-      t.add_row({label, hz(r.omega), std::string(to_string(r.contact)), r.rms_hb, r.rms_time_integration, r.rel_diff,
-                 long(r.periods)});
+      t.add_row({r.omega, hz(r.omega), std::string(to_string(r.contact)), r.rms_hb, r.rms_time_integration, r.rel_diff,
+                 long(r.periods), label});
   return t;
 }
 
 Table dte_floquet_table(const std::string& label, const DteFloquetCheck& check) {
-  Table t({"label", "f_mesh_hz", "contact", "stable", "modulus_variational", "modulus_time_integration", "abs_diff"});
+  Table t(columns_of(frequency_columns(FrequencyAxis::mesh),
+                     {"contact", "stable", "modulus_variational", "modulus_time_integration", "abs_diff", "label"}));
   for (const auto& r : check.rows)
-    t.add_row({label, hz(r.omega), std::string(to_string(r.contact)), long(r.stable ? 1 : 0), r.modulus_curve,
-               r.modulus_time_integration, r.abs_diff});
+    t.add_row({r.omega, hz(r.omega), std::string(to_string(r.contact)), long(r.stable ? 1 : 0), r.modulus_curve,
+               r.modulus_time_integration, r.abs_diff, label});
   return t;
 }
 

@@ -9,6 +9,7 @@
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/core/units.hpp"
 #include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -158,12 +159,12 @@ Eigen::VectorXd dte_coordinate(MeshDofs dofs) {
 }
 
 std::vector<double> closed_contact_frequencies(const DteGear& g, MeshDofs dofs, const BearingSupport& b) {
-  if (dofs == MeshDofs::one_dof) return {std::sqrt(g.kc / g.me) / (2.0 * M_PI)};
+  if (dofs == MeshDofs::one_dof) return {hz(std::sqrt(g.kc / g.me))};
   const LinearSystem s = bearing_system(g, b);
   const Eigen::VectorXd n = bearing_normal(b);
   const Modes modes = modal_analysis(s.M, s.K + g.kc * n * n.transpose());
   std::vector<double> f;
-  for (Eigen::Index i = 0; i < modes.omega.size(); ++i) f.push_back(modes.omega[i] / (2.0 * M_PI));
+  for (Eigen::Index i = 0; i < modes.omega.size(); ++i) f.push_back(hz(modes.omega[i]));
   return f;
 }
 
@@ -265,7 +266,7 @@ std::vector<MeshTimeComparison> mesh_time_integration_check(
                     "time integration not periodic at f_mesh = %g Hz (branch point %zu) after %d periods (mismatch %.3g "
                     "of the displacement scale), where the corrected orbit, |mu| = %.3g, attracts a start one scale away "
                     "within %.0f periods: the integration from the harmonic-balance state settles elsewhere",
-                    P[i].omega / (2 * M_PI), i, st.periods, st.mismatch, mu, settle);
+                    hz(P[i].omega), i, st.periods, st.mismatch, mu, settle);
       throw std::runtime_error(what);
     }
     // DTE and mesh force on the integrated period, with the model's own contact law
