@@ -258,7 +258,7 @@ std::string model_file_help() {
          "  torus.harmonics1      H1 harmonics of omega on the torus (default min(10, H); 1..H)\n"
          "  torus.harmonics2      H2 harmonics of the second frequency omega2 (default 4; 1..20)\n"
          "  torus.lines           lines in the second angle for the contact forces (default 0 = 4 (2 H2 + 1))\n"
-         "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.02; (0, 0.5])\n"
+         "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.005; (0, 0.5])\n"
          "  torus.max_points      most points per torus branch (default 200)\n" +
          bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"

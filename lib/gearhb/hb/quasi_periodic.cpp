@@ -386,6 +386,7 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
       out.points.push_back(tc.point(Y, it, res));
     }
     const double qp_first = tc.qp_size(Ys[0]);
+    double qp_max = tc.qp_size(Ys[1]);
     double ds = (Ys[1] - Ys[0]).norm();
     const double lo = opt.omega_min, hi = opt.omega_max;
     while (true) {
@@ -417,7 +418,8 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
         out.why = where + "left the range at omega = " + number(w);
         break;
       }
-      if (tc.qp_size(Y) < 0.25 * qp_first) {
+      qp_max = std::max(qp_max, tc.qp_size(Y));
+      if (tc.qp_size(Y) < std::max(0.25 * qp_first, 0.1 * qp_max)) {
         out.end = TorusBranch::End::merged;
         out.why = where + "shrank onto the period-1 orbit at omega = " + number(w) + " (merged at another NS)";
         break;
@@ -434,6 +436,20 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
   }
   if (!out.points.empty()) out.omega_end = out.points.back().omega;
   return out;
+}
+
+TorusPoint torus_point_at(const TorusBalance& tb, const TorusPoint& guess, double omega, const Scaling& s,
+                          const TorusOptions& to) {
+  const TorusContinuation tc(tb, s, to);
+  Eigen::VectorXd Y = tc.scaled(guess.X, guess.omega2, omega);
+  Eigen::VectorXd row = Eigen::VectorXd::Zero(tc.size());
+  row[tc.size() - 1] = 1.0;
+  int it = 0;
+  double res = 0.0;
+  if (!tc.correct(Y, row, Y[tc.size() - 1], it, res))
+    throw std::runtime_error("the torus at omega = " + number(omega) + " did not converge from the point at " +
+                             number(guess.omega));
+  return tc.point(Y, it, res);
 }
 
 std::vector<TorusBranch> torus_branches(const TorusBalance& tb, const FrequencyCurve& c, const SweepOptions& opt,

@@ -42,7 +42,8 @@
 //     the scaled unknowns [X / x_scale, omega2 / omega_scale, omega / omega_scale] with a
 //     secant predictor;
 //  5. it ends where the torus shrinks back onto the period-1 orbit (its quasi-periodic part
-//     below a quarter of the first point's: it merged at another NS), where it leaves the
+//     below a quarter of the first point's or a tenth of the largest so far: it merged at
+//     another NS), where it leaves the
 //     range, or where the corrector fails (the torus breaks down or phase-locks: HB cannot
 //     follow it; the reason kept, the rest of the run stands).
 // Omega2 at the first point is not set from alpha: the corrector finds it from the 2-D
@@ -112,7 +113,7 @@ struct TorusOptions {
   int harmonics1 = 10;       // H1 (at most the model's H)
   int harmonics2 = 4;        // H2
   int lines = 0;             // N2 (0: 4 (2 H2 + 1))
-  double amplitude = 0.02;   // eps of the first point: its quasi-periodic part over the orbit's size
+  double amplitude = 0.005;  // eps of the first point: its quasi-periodic part over the orbit's size
   double ds_max = 0.05;      // scaled arc length per step, at most
   double ds_min = 1e-6;
   int max_points = 200;
@@ -144,6 +145,12 @@ struct TorusBranch {
 // failed switch: `why` says where and why, points may be empty.
 TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::size_t index, const SweepOptions& opt,
                          const TorusOptions& to);
+
+// The torus at a given omega, corrected by Newton (omega fixed, omega2 free, phase condition)
+// from a nearby point of a branch (guess); s: the scaling of the curve it came from. Throws
+// std::runtime_error if Newton does not converge.
+TorusPoint torus_point_at(const TorusBalance& tb, const TorusPoint& guess, double omega, const Scaling& s,
+                          const TorusOptions& to = {});
 
 // Every NS point of c (located, smooth) with its torus branch, in curve order; an NS point
 // where an earlier branch merged (`to`) is not switched again (the same torus).
