@@ -239,7 +239,8 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
 // Step 3b (with the file's torus key): quasi-periodic motion past each Neimark-Sacker point,
 // a torus branch by two-frequency harmonic balance (hb/quasi_periodic.hpp); torus.csv (app/tables.hpp)
 // and key numbers per branch: where it starts (the NS point), the Floquet second frequency
-// there (alpha omega / 2 pi), where it ends; a branch that fails says where and why.
+// there (alpha omega / 2 pi), its points, where it ends and its omega2 there; a branch that
+// fails says where and why.
 void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                                const SweepOptions& o) const {
   const TorusOptions& to = model_.torus;
@@ -254,7 +255,9 @@ void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& 
     key.add("torus_omega_ns_" + id, br[k].omega_ns, "rad/s");
     if (std::isfinite(br[k].omega2_ns)) key.add("torus_omega2_floquet_" + id, br[k].omega2_ns, "rad/s");
     key.add("torus_points_" + id, double(br[k].points.size()), "-");
-    if (std::isfinite(br[k].omega_end)) key.add("torus_omega_end_" + id, br[k].omega_end, "rad/s");
+    if (br[k].points.empty()) continue;
+    key.add("torus_omega_end_" + id, br[k].omega_end, "rad/s");
+    key.add("torus_omega2_end_" + id, br[k].points.back().omega2, "rad/s");
   }
 }
 
