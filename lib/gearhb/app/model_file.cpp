@@ -162,6 +162,12 @@ void read_torus(const json& j, const std::string& path, ModelFile& m) {
   std::string why;
   const std::string key = check_torus_options(o, m.harmonics, &why);
   if (!key.empty()) fail(path, "torus." + key, why);
+  // The torus' Newton steps factor a dense matrix of its unknowns: bounded so that no file
+  // asks for hours or gigabytes (3000 unknowns: about 20 s and 72 MB a step).
+  const long unknowns = long(m.system.dofs()) * (2L * (o.harmonics2 + long(o.harmonics1) * (2 * o.harmonics2 + 1)) + 1);
+  if (unknowns > 3000)
+    fail(path, "torus.harmonics1", "and torus.harmonics2 give " + std::to_string(unknowns) +
+                                       " torus unknowns (n (2 (H2 + H1 (2 H2 + 1)) + 1)); at most 3000");
   for (const auto& ct : m.contacts)
     if (ct.stiffness_profile) fail(path, "torus", "needs constant contact stiffnesses (no kc_file)");
   m.torus_on = true;
@@ -256,7 +262,8 @@ std::string model_file_help() {
          "  torus                 optional object: a torus branch (quasi-periodic motion) by two-frequency\n"
          "                        harmonic balance from each Neimark-Sacker point of the curve (absent: none)\n"
          "  torus.harmonics1      H1 harmonics of omega on the torus (default min(10, H); 1..H)\n"
-         "  torus.harmonics2      H2 harmonics of the second frequency omega2 (default 4; 1..20)\n"
+         "  torus.harmonics2      H2 harmonics of the second frequency omega2 (default 4; 1..20;\n"
+         "                        n (2 (H2 + H1 (2 H2 + 1)) + 1) <= 3000 unknowns)\n"
          "  torus.lines           lines in the second angle for the contact forces (default 0 = 4 (2 H2 + 1))\n"
          "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.005; (0, 0.5])\n"
          "  torus.max_points      most points per torus branch (default 200)\n" +
