@@ -381,7 +381,8 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
       int it = 0;
       double res = 0.0;
       if (!tc.correct(Y, row, row.dot(Yns) + a, it, res))
-        throw std::runtime_error("the first torus points (amplitude held) did not converge");
+        throw std::runtime_error("the first torus points (amplitude held at " + number(a / Yns.head(N).norm()) +
+                                 " of the orbit's size) did not converge");
       Ys.push_back(Y);
       out.points.push_back(tc.point(Y, it, res));
     }
@@ -401,7 +402,11 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
       Eigen::VectorXd Y = Y1 + ds * t;
       int it = 0;
       double res = 0.0;
-      if (!tc.correct(Y, t, t.dot(Y1) + ds, it, res)) {
+      // a corrector that moves the point farther than half the step from the predictor has
+      // jumped to another part of the solution set: refused like a failed corrector
+      const Eigen::VectorXd predicted = Y;
+      const bool converged = tc.correct(Y, t, t.dot(Y1) + ds, it, res);
+      if (!converged || (Y - predicted).norm() > 0.5 * ds) {
         ds /= 2.0;
         if (ds >= to.ds_min) continue;
         out.end = TorusBranch::End::failed;
@@ -421,7 +426,7 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
       qp_max = std::max(qp_max, tc.qp_size(Y));
       if (tc.qp_size(Y) < std::max(0.25 * qp_first, 0.1 * qp_max)) {
         out.end = TorusBranch::End::merged;
-        out.why = where + "shrank onto the period-1 orbit at omega = " + number(w) + " (merged at another NS)";
+        out.why = where + "shrank onto the period-1 orbit at omega = " + number(w);
         break;
       }
       if (out.points.back().omega2 <= 0.0) {
@@ -463,12 +468,17 @@ std::vector<TorusBranch> torus_branches(const TorusBalance& tb, const FrequencyC
   for (std::size_t i = 0; i < c.bifurcations.size(); ++i) {
     if (!ns(i) || reached[i]) continue;
     TorusBranch b = torus_branch(tb, c, i, opt, to);
+    // merged at the NS point nearest its end, if that is not its own
     if (b.end == TorusBranch::End::merged)
       for (std::size_t j = 0; j < c.bifurcations.size(); ++j)
-        if (j != i && ns(j) && (b.to < 0 || std::abs(c.bifurcations[j].omega - b.omega_end) <
-                                                std::abs(c.bifurcations[std::size_t(b.to)].omega - b.omega_end)))
+        if (j != i && ns(j) && std::abs(c.bifurcations[j].omega - b.omega_end) < std::abs(b.omega_ns - b.omega_end) &&
+            (b.to < 0 || std::abs(c.bifurcations[j].omega - b.omega_end) <
+                             std::abs(c.bifurcations[std::size_t(b.to)].omega - b.omega_end)))
           b.to = int(j);
-    if (b.to >= 0) reached[std::size_t(b.to)] = true;
+    if (b.to >= 0) {
+      reached[std::size_t(b.to)] = true;
+      b.why += " (merged at the NS point at omega = " + number(c.bifurcations[std::size_t(b.to)].omega) + ")";
+    }
     out.push_back(std::move(b));
   }
   return out;

@@ -40,7 +40,8 @@
 //     the orbit's size), corrected with omega and omega2 free and the amplitude held (its
 //     projection on the shape); the second at 2 eps; then pseudo-arc-length continuation in
 //     the scaled unknowns [X / x_scale, omega2 / omega_scale, omega / omega_scale] with a
-//     secant predictor;
+//     secant predictor (a corrected point farther than half the step from its predictor is
+//     refused and the step halved: it jumped to another part of the solution set);
 //  5. it ends where the torus shrinks back onto the period-1 orbit (its quasi-periodic part
 //     below a quarter of the first point's or a tenth of the largest so far: it merged at
 //     another NS), where it leaves the
@@ -137,6 +138,7 @@ struct TorusBranch {
   enum class End { merged, left_range, failed, max_points } end = End::failed;
   double omega_end = NAN;      // last point's omega
   int to = -1;                 // merged: index in c.bifurcations of the NS nearest to omega_end
+                               // (-1 if its own NS point is nearer: it came back to where it began)
   std::string why;             // one line: where and why it ended
 };
 
