@@ -66,14 +66,20 @@ Eigen::MatrixXd TorusBalance::restriction(double theta2) const {
 
 void TorusBalance::evaluate(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R,
                             Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const {
-  const int n = n_, Nb = basis();
+  linear_terms(X, omega, omega2, R, dRdX, dRdw, dRdw2);
+  contact_terms(X, R, dRdX);
+}
+
+// The linear terms, pair by pair (harmonic_balance.hpp with k omega -> w), and the forcing.
+void TorusBalance::linear_terms(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R,
+                                Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const {
+  const int n = n_;
   const LinearSystem& s = hb_.system();
   const Excitation& f = hb_.excitation();
   R = Eigen::VectorXd::Zero(size());
   if (dRdX) *dRdX = Eigen::MatrixXd::Zero(size(), size());
   if (dRdw) *dRdw = Eigen::VectorXd::Zero(size());
   if (dRdw2) *dRdw2 = Eigen::VectorXd::Zero(size());
-  // The linear terms, pair by pair (harmonic_balance.hpp with k omega -> w).
   R.head(n) = s.K * X.head(n) - f.f0;
   if (dRdX) dRdX->topLeftCorner(n, n) = s.K;
   for (int p = 1; p <= pairs(); ++p) {
@@ -103,7 +109,11 @@ void TorusBalance::evaluate(const Eigen::VectorXd& X, double omega, double omega
       dRdw2->segment(sn, n) = k2(p) * ds;
     }
   }
-  // The contacts, line by line in theta2 (the header).
+}
+
+// The contact forces, line by line in theta2 (the header), added to R and dR/dX.
+void TorusBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX) const {
+  const int n = n_, Nb = basis();
   const int m = 2 * H1_ + 1;
   Aft aft(H1_);
   Eigen::VectorXd Dinv = Eigen::VectorXd::Constant(m, 0.5), Cw = Eigen::VectorXd::Constant(Nb, 2.0);
@@ -354,6 +364,71 @@ NsStart ns_start(const TorusBalance& tb, const FrequencyCurve& c, const Bifurcat
   return s;
 }
 
+// Step 4 of the header: the first two points, at amplitudes eps and 2 eps along the shape
+// (omega and omega2 free, the amplitude held), appended to out.points; their scaled unknowns.
+std::vector<Eigen::VectorXd> first_points(const TorusContinuation& tc, const NsStart& s, const Eigen::VectorXd& Yns,
+                                          double amplitude, TorusBranch& out) {
+  const int N = int(s.shape.size());
+  const double eps = amplitude * Yns.head(N).norm();
+  Eigen::VectorXd row = Eigen::VectorXd::Zero(N + 2);
+  row.head(N) = s.shape;
+  std::vector<Eigen::VectorXd> Ys;
+  for (double a : {eps, 2.0 * eps}) {
+    Eigen::VectorXd Y = Ys.empty() ? Yns : Ys.back();
+    Y.head(N) += (a - row.dot(Y - Yns)) * s.shape;
+    int it = 0;
+    double res = 0.0;
+    if (!tc.correct(Y, row, row.dot(Yns) + a, it, res))
+      throw std::runtime_error("the first torus points (amplitude held at " + number(a / Yns.head(N).norm()) +
+                               " of the orbit's size) did not converge");
+    Ys.push_back(Y);
+    out.points.push_back(tc.point(Y, it, res));
+  }
+  return Ys;
+}
+
+// Steps 4-5: the pseudo-arc-length continuation from the first two points until the branch
+// ends (out.end, out.why).
+void continue_torus(const TorusContinuation& tc, std::vector<Eigen::VectorXd> Ys, const SweepOptions& opt,
+                    const TorusOptions& to, const std::string& where, TorusBranch& out) {
+  const double qp_first = tc.qp_size(Ys[0]);
+  double qp_max = tc.qp_size(Ys[1]);
+  double ds = (Ys[1] - Ys[0]).norm();
+  auto stop = [&](TorusBranch::End end, const std::string& why) {
+    out.end = end;
+    out.why = where + why;
+  };
+  while (true) {
+    if (int(out.points.size()) >= to.max_points)
+      return stop(TorusBranch::End::max_points, "stopped after max_points = " + std::to_string(to.max_points) + " points");
+    const Eigen::VectorXd& Y1 = Ys.back();
+    const Eigen::VectorXd t = (Y1 - Ys[Ys.size() - 2]).normalized();
+    Eigen::VectorXd Y = Y1 + ds * t;
+    int it = 0;
+    double res = 0.0;
+    // a corrector that moves the point farther than half the step from the predictor has
+    // jumped to another part of the solution set: refused like a failed corrector
+    const Eigen::VectorXd predicted = Y;
+    const bool converged = tc.correct(Y, t, t.dot(Y1) + ds, it, res);
+    if (!converged || (Y - predicted).norm() > 0.5 * ds) {
+      ds /= 2.0;
+      if (ds >= to.ds_min) continue;
+      return stop(TorusBranch::End::failed, "failed at omega = " + number(out.points.back().omega) +
+                                                ": the corrector did not converge with ds below ds_min (the torus "
+                                                "breaks down or locks)");
+    }
+    Ys.push_back(Y);
+    out.points.push_back(tc.point(Y, it, res));
+    if (it <= 4) ds = std::min(1.5 * ds, to.ds_max);
+    const double w = out.points.back().omega;
+    if (w < opt.omega_min || w > opt.omega_max) return stop(TorusBranch::End::left_range, "left the range at omega = " + number(w));
+    qp_max = std::max(qp_max, tc.qp_size(Y));
+    if (tc.qp_size(Y) < std::max(0.25 * qp_first, 0.1 * qp_max))
+      return stop(TorusBranch::End::merged, "shrank onto the period-1 orbit at omega = " + number(w));
+    if (out.points.back().omega2 <= 0.0) return stop(TorusBranch::End::failed, "omega2 reached 0 at omega = " + number(w));
+  }
+}
+
 }  // namespace
 
 TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::size_t index, const SweepOptions& opt,
@@ -368,73 +443,8 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
     out.alpha = s.alpha;
     out.omega2_ns = s.alpha * s.omega / (2.0 * M_PI);
     const TorusContinuation tc(tb, c.scaling, to);
-    const int N = tb.size();
     const Eigen::VectorXd Yns = tc.scaled(tb.from_periodic(s.X1), out.omega2_ns, s.omega);
-    const double eps = to.amplitude * Yns.head(N).norm();
-    Eigen::VectorXd row = Eigen::VectorXd::Zero(N + 2);
-    row.head(N) = s.shape;
-    // The first two points at amplitudes eps and 2 eps along the shape.
-    std::vector<Eigen::VectorXd> Ys;
-    for (double a : {eps, 2.0 * eps}) {
-      Eigen::VectorXd Y = Ys.empty() ? Yns : Ys.back();
-      Y.head(N) += (a - row.dot(Y - Yns)) * s.shape;
-      int it = 0;
-      double res = 0.0;
-      if (!tc.correct(Y, row, row.dot(Yns) + a, it, res))
-        throw std::runtime_error("the first torus points (amplitude held at " + number(a / Yns.head(N).norm()) +
-                                 " of the orbit's size) did not converge");
-      Ys.push_back(Y);
-      out.points.push_back(tc.point(Y, it, res));
-    }
-    const double qp_first = tc.qp_size(Ys[0]);
-    double qp_max = tc.qp_size(Ys[1]);
-    double ds = (Ys[1] - Ys[0]).norm();
-    const double lo = opt.omega_min, hi = opt.omega_max;
-    while (true) {
-      if (int(out.points.size()) >= to.max_points) {
-        out.end = TorusBranch::End::max_points;
-        out.why = where + "stopped after max_points = " + std::to_string(to.max_points) + " points";
-        break;
-      }
-      const Eigen::VectorXd& Y0 = Ys[Ys.size() - 2];
-      const Eigen::VectorXd& Y1 = Ys.back();
-      const Eigen::VectorXd t = (Y1 - Y0).normalized();
-      Eigen::VectorXd Y = Y1 + ds * t;
-      int it = 0;
-      double res = 0.0;
-      // a corrector that moves the point farther than half the step from the predictor has
-      // jumped to another part of the solution set: refused like a failed corrector
-      const Eigen::VectorXd predicted = Y;
-      const bool converged = tc.correct(Y, t, t.dot(Y1) + ds, it, res);
-      if (!converged || (Y - predicted).norm() > 0.5 * ds) {
-        ds /= 2.0;
-        if (ds >= to.ds_min) continue;
-        out.end = TorusBranch::End::failed;
-        out.why = where + "failed at omega = " + number(out.points.back().omega) +
-                  ": the corrector did not converge with ds below ds_min (the torus breaks down or locks)";
-        break;
-      }
-      Ys.push_back(Y);
-      out.points.push_back(tc.point(Y, it, res));
-      if (it <= 4) ds = std::min(1.5 * ds, to.ds_max);
-      const double w = out.points.back().omega;
-      if (w < lo || w > hi) {
-        out.end = TorusBranch::End::left_range;
-        out.why = where + "left the range at omega = " + number(w);
-        break;
-      }
-      qp_max = std::max(qp_max, tc.qp_size(Y));
-      if (tc.qp_size(Y) < std::max(0.25 * qp_first, 0.1 * qp_max)) {
-        out.end = TorusBranch::End::merged;
-        out.why = where + "shrank onto the period-1 orbit at omega = " + number(w);
-        break;
-      }
-      if (out.points.back().omega2 <= 0.0) {
-        out.end = TorusBranch::End::failed;
-        out.why = where + "omega2 reached 0 at omega = " + number(w);
-        break;
-      }
-    }
+    continue_torus(tc, first_points(tc, s, Yns, to.amplitude, out), opt, to, where, out);
   } catch (const std::exception& e) {
     out.end = TorusBranch::End::failed;
     out.why = where + "failed: " + e.what();

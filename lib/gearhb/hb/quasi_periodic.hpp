@@ -97,6 +97,9 @@ class TorusBalance {
   std::vector<Eigen::MatrixXd> S_;   // per line: (2 H1 + 1) x basis restriction
   Eigen::MatrixXd restriction(double theta2) const;
   void add_sandwich(int j, const Eigen::MatrixXd& DG, Eigen::MatrixXd& J) const;
+  void linear_terms(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                    Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const;
+  void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX) const;
 };
 
 // Measures of a torus point on the output coordinate q' x.
