@@ -7,7 +7,11 @@ wrote bifurcations.csv) marked with a legend; the title is the model's name and
 harmonics (from params.json, the resolved model). Period-2 branches (rows with
 period 2 in frc.csv, one per branch id) in their own colour (x_max and x_min over two
 forcing periods); the contact rug and the bifurcation markers are those of the period-1
-branch (branch 0) and of each period-2 branch on its own curve."""
+branch (branch 0) and of each period-2 branch on its own curve. Torus branches (torus.csv,
+gearhb_frc's torus key: quasi-periodic motion past a Neimark-Sacker point by two-frequency
+harmonic balance) in black dash-dot (x_max and x_min over the torus), with a panel of their
+second frequency as the rotation omega2 / omega, the Floquet value angle / 2 pi of each NS
+point marked."""
 import json
 import pathlib
 import sys
@@ -69,6 +73,24 @@ def rows_of(d, branch):
     return {k: [v[i] for i in keep] for k, v in d.items()}
 
 
+def torus_panel(ax, t, b):
+    """Rotation omega2 / omega of each torus branch; the NS points' Floquet angle / 2 pi."""
+    for bid in sorted({int(x) for x in t["branch"]}):
+        r = rows_of(t, bid)
+        ax.plot(r["omega"], r["rotation"], "k-.", marker=".", ms=3, lw=1, label="torus branch %d (HB)" % bid)
+    if b is not None:
+        import math
+        ns = [i for i, k in enumerate(b["type"]) if k == "neimark_sacker"]
+        ax.plot([b["omega"][i] for i in ns],
+                [abs(math.atan2(b["multiplier_im"][i], b["multiplier_re"][i])) / (2 * math.pi) for i in ns],
+                ls="none", marker=BIFURCATION_MARKERS["neimark_sacker"], color=BIFURCATION_COLOURS["neimark_sacker"],
+                mfc="none", ms=8, label="NS point: Floquet angle / 2 pi")
+    ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+    ax.set_ylabel(r"rotation $\omega_2 / \omega$")
+    ax.set_title("second frequency on the torus", fontsize=9)
+    ax.legend(fontsize=7, frameon=False, loc="upper center", bbox_to_anchor=(0.5, -0.16))
+
+
 PERIOD2_COLOURS = ["C2", "C4", "C5", "C6", "C8", "C9", "C1"]   # not red: the diagram draws chaos red
 
 
@@ -84,16 +106,19 @@ def main():
         p, h = read_csv(diagram), read_csv(d_dir / "bifurcation_diagram_hb.csv")
     # The response (top left); the period-2 branches close up (right, if any); the Poincare
     # points of the bifurcation diagram under the response (if computed).
-    rows, cols = (2 if p is not None else 1), (2 if ids else 1)
+    tor = d_dir / "torus.csv"
+    t = read_csv(tor) if tor.exists() and tor.read_text().count("\n") > 1 else None
+    rows, cols = (2 if p is not None else 1), 1 + (1 if ids else 0) + (1 if t is not None else 0)
     fig, grid = plt.subplots(rows, cols, squeeze=False, figsize=(6.8 + 3.6 * (cols - 1), 4.6 + 2.8 * (rows - 1)),
-                             gridspec_kw={"width_ratios": [2, 1][:cols], "height_ratios": [3, 2][:rows]})
+                             gridspec_kw={"width_ratios": [2, 1, 1][:cols], "height_ratios": [3, 2][:rows]})
     ax = grid[0][0]
     ins = grid[0][1] if ids else None
+    axt = grid[0][cols - 1] if t is not None else None
     axp = grid[1][0] if p is not None else None
     if axp is not None:
         axp.sharex(ax)
-        if ids:
-            grid[1][1].axis("off")
+        for k in range(1, cols):
+            grid[1][k].axis("off")
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
     for n, bid in enumerate(ids):
@@ -120,6 +145,12 @@ def main():
         ins.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
         ins.set_title("x_min beside the period-2 branches", fontsize=9)
         ins.legend(fontsize=7, frameon=False)
+    if t is not None:
+        for bid in sorted({int(x) for x in t["branch"]}):
+            r = rows_of(t, bid)
+            ax.plot(r["omega"], r["x_max"], "k-.", lw=1, label="torus (two-frequency HB): max, min over the torus"
+                    if bid == min(int(x) for x in t["branch"]) else None)
+            ax.plot(r["omega"], r["x_min"], "k-.", lw=1)
     contact_rug(ax, per_contact_state(d))
     bif = d_dir / "bifurcations.csv"
     if bif.exists() and bif.read_text().count("\n") > 1:
@@ -150,9 +181,19 @@ def main():
                                                          model["omega"]["from"], model["omega"]["to"], beyond),
                  fontsize=9)
     h_main, _ = ax.get_legend_handles_labels()
+    if t is not None:
+        torus_panel(axt, t, read_csv(bif) if bif.exists() and bif.read_text().count("\n") > 1 else None)
     if p is not None:
         ax.set_xlabel("")
         handles = poincare_panel(axp, p, h, direction)
+        if t is not None:   # the torus' section theta1 = 0: where its Poincare points lie
+            for bid in sorted({int(x) for x in t["branch"]}):
+                r = rows_of(t, bid)
+                first = bid == min(int(x) for x in t["branch"])
+                axp.plot(r["omega"], r["section_max"], "k-.", lw=1,
+                         label="torus (HB): least, largest q'x on the section" if first else None)
+                axp.plot(r["omega"], r["section_min"], "k-.", lw=1)
+            handles += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
         axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
         axp.legend(handles=h_main + legend_styles(ax) + handles, fontsize=6.5, loc="upper center",
                    bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)

@@ -29,6 +29,7 @@
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/period_doubling.hpp"
+#include "gearhb/hb/quasi_periodic.hpp"
 #include "gearhb/hb/response.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
@@ -55,6 +56,7 @@ class FrequencyResponseFromFile {
   void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const SweepOptions& o) const;
   void draw(Run& run) const;
 };
 
@@ -174,6 +176,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
   curve_key_numbers(run, hb, c);
+  if (model_.torus_on) torus_branches(run, hb, c, o);
   if (model_.diagram.on) bifurcation_diagram(run, hb, c);
 }
 
@@ -233,6 +236,31 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.say(model_.name + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
 }
 
+// Step 3b (with the file's torus key): quasi-periodic motion past each Neimark-Sacker point,
+// a torus branch by two-frequency harmonic balance (hb/quasi_periodic.hpp); torus.csv (app/tables.hpp)
+// and key numbers per branch: where it starts (the NS point), the Floquet second frequency
+// there (alpha omega / 2 pi), its points, where it ends and its omega2 there; a branch that
+// fails says where and why.
+void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                               const SweepOptions& o) const {
+  const TorusOptions& to = model_.torus;
+  const TorusBalance tb(hb, to.harmonics1, to.harmonics2, to.lines);
+  const std::vector<TorusBranch> br = run.timed("torus branches", [&] { return gearhb::torus_branches(tb, c, o, to); });
+  run.write("torus.csv", torus_table(tb, br, model_.output));
+  KeyNumbers& key = run.key_numbers();
+  key.add("torus_branches", double(br.size()), "-");
+  for (std::size_t k = 0; k < br.size(); ++k) {
+    const std::string id = std::to_string(k + 1);
+    run.say(model_.name + ": " + br[k].why + " (" + std::to_string(br[k].points.size()) + " points)");
+    key.add("torus_omega_ns_" + id, br[k].omega_ns, "rad/s");
+    if (std::isfinite(br[k].omega2_ns)) key.add("torus_omega2_floquet_" + id, br[k].omega2_ns, "rad/s");
+    key.add("torus_points_" + id, double(br[k].points.size()), "-");
+    if (br[k].points.empty()) continue;
+    key.add("torus_omega_end_" + id, br[k].omega_end, "rad/s");
+    key.add("torus_omega2_end_" + id, br[k].points.back().omega2, "rad/s");
+  }
+}
+
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
@@ -247,7 +275,7 @@ int main(int argc, char** argv) {
               "Writes DIR/frc.csv (with the period-2 branches: columns period, branch), bifurcations.csv,\n"
               "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
               "and frc.png; with the bifurcation_diagram key also bifurcation_diagram.csv and\n"
-              "bifurcation_diagram.png.\n\n" +
+              "bifurcation_diagram.png; with the torus key also torus.csv (quasi-periodic branches).\n\n" +
                   model_file_help());
   FrequencyResponseFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

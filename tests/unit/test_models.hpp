@@ -42,6 +42,31 @@ inline gearhb::HarmonicBalance nlvib_ex03(int H, int N = 0) {
   return gearhb::HarmonicBalance(s, {c}, f, H, N);
 }
 
+// The same two masses with twice the damping (C = 0.06 K) and forcing 0.06: a
+// Neimark-Sacker point at omega = 0.61471 where a torus is born, another at 0.59939
+// (programs/gearhb_frc/examples/nlvib_ex03_torus.json); its sweep: 0.59 up to 0.63.
+inline gearhb::HarmonicBalance nlvib_ex03_torus(int H) {
+  using Eigen::MatrixXd;
+  using Eigen::VectorXd;
+  MatrixXd K(2, 2);
+  K << 1, -1, -1, 2;
+  gearhb::LinearSystem s{MatrixXd::Identity(2, 2), 0.06 * K, K};
+  VectorXd e1 = VectorXd::Zero(2);
+  e1[0] = 1.0;
+  gearhb::UnilateralContact c{e1, 100.0, -1.0, {}};
+  VectorXd fc = VectorXd::Zero(2);
+  fc[1] = 0.06;
+  gearhb::Excitation f{VectorXd::Zero(2), fc, VectorXd::Zero(2)};
+  return gearhb::HarmonicBalance(s, {c}, f, H);
+}
+inline gearhb::SweepOptions nlvib_ex03_torus_sweep() {
+  gearhb::SweepOptions o;
+  o.omega_min = 0.59;
+  o.omega_max = 0.63;
+  o.direction = gearhb::SweepDirection::up;
+  return o;
+}
+
 // NLvib example 03's sweep: omega from 0.8 down to 0.5.
 inline gearhb::SweepOptions nlvib_ex03_sweep(gearhb::StabilityMethod stability) {
   gearhb::SweepOptions o;

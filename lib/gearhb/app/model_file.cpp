@@ -1,5 +1,6 @@
 #include "gearhb/app/model_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <functional>
@@ -144,6 +145,33 @@ std::vector<UnilateralContact> read_contacts(const json& j, const std::string& p
 }
 
 // H, the AFT samples, the frequency range, the output direction, the forcing and the solver keys.
+// The optional `torus` object (hb/quasi_periodic.hpp): present = a torus branch from each NS point.
+void read_torus(const json& j, const std::string& path, ModelFile& m) {
+  if (!j.contains("torus")) return;
+  const json& t = j["torus"];
+  if (!t.is_object()) fail(path, "torus", "must be an object of options ({} for the defaults)");
+  only_keys(t, path, "torus", {"harmonics1", "harmonics2", "lines", "amplitude", "max_points"});
+  TorusOptions& o = m.torus;
+  o.harmonics1 = std::min(o.harmonics1, m.harmonics);
+  if (t.contains("harmonics1")) o.harmonics1 = whole(t["harmonics1"], path, "torus.harmonics1", 1, m.harmonics);
+  if (t.contains("harmonics2")) o.harmonics2 = whole(t["harmonics2"], path, "torus.harmonics2", 1, 20);
+  if (t.contains("lines")) o.lines = whole(t["lines"], path, "torus.lines", 0, 1024);
+  if (t.contains("amplitude")) o.amplitude = number(t["amplitude"], path, "torus.amplitude");
+  if (t.contains("max_points")) o.max_points = whole(t["max_points"], path, "torus.max_points", 2, 10000);
+  std::string why;
+  const std::string key = check_torus_options(o, m.harmonics, &why);
+  if (!key.empty()) fail(path, "torus." + key, why);
+  // The torus' Newton steps factor a dense matrix of its unknowns: bounded so that no file
+  // asks for hours or gigabytes (3000 unknowns: about 20 s and 72 MB a step).
+  const long unknowns = long(m.system.dofs()) * (2L * (o.harmonics2 + long(o.harmonics1) * (2 * o.harmonics2 + 1)) + 1);
+  if (unknowns > 3000)
+    fail(path, "torus.harmonics1", "and torus.harmonics2 give " + std::to_string(unknowns) +
+                                       " torus unknowns (n (2 (H2 + H1 (2 H2 + 1)) + 1)); at most 3000");
+  for (const auto& ct : m.contacts)
+    if (ct.stiffness_profile) fail(path, "torus", "needs constant contact stiffnesses (no kc_file)");
+  m.torus_on = true;
+}
+
 void read_settings(const json& j, const std::string& path, int n, ModelFile& m) {
   m.harmonics = whole(j["harmonics"], path, "harmonics", 1, max_harmonics(n));
   m.samples = j.contains("samples") ? whole(j["samples"], path, "samples", 0, max_aft_samples) : 0;
@@ -180,7 +208,8 @@ ModelFile read_model_file(const std::string& path,
                           const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "mass", "stiffness", "damping", "rayleigh", "contacts", "forcing", "harmonics",
-                          "samples", "omega", "output", "solver", "bifurcation_diagram", "period_doubling"});
+                          "samples", "omega", "output", "solver", "bifurcation_diagram", "period_doubling",
+                          "torus"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   for (const char* k : {"mass", "stiffness", "harmonics", "omega", "output"})
     if (!j.contains(k)) fail(path, k, "is missing");
@@ -196,6 +225,7 @@ ModelFile read_model_file(const std::string& path,
   read_settings(j, path, n, m);
   m.contacts = read_contacts(j, path, n, m.harmonics);
   m.diagram = read_bifurcation_diagram(j, path);
+  read_torus(j, path, m);
   return m;
 }
 
@@ -227,7 +257,15 @@ std::string model_file_help() {
          "  solver.ds_max         largest arc-length step (default 0.02)\n"
          "  period_doubling.depth 0: none; 1 (default): a period-2 branch by harmonic balance (base frequency\n"
          "                        omega/2, 2H harmonics) from each located period doubling of the curve\n"
-         "                        (period-4 branches, depth 2, not yet)\n" +
+         "                        (period-4 branches, depth 2, not yet)\n"
+         "  torus                 optional object: a torus branch (quasi-periodic motion) by two-frequency\n"
+         "                        harmonic balance from each Neimark-Sacker point of the curve (absent: none)\n"
+         "  torus.harmonics1      H1 harmonics of omega on the torus (default min(10, H); 1..H)\n"
+         "  torus.harmonics2      H2 harmonics of the second frequency omega2 (default 4; 1..20;\n"
+         "                        n (2 (H2 + H1 (2 H2 + 1)) + 1) <= 3000 unknowns)\n"
+         "  torus.lines           lines in the second angle for the contact forces (default 0 = 4 (2 H2 + 1))\n"
+         "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.005; (0, 0.5])\n"
+         "  torus.max_points      most points per torus branch (default 200)\n" +
          bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"

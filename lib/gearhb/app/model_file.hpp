@@ -18,6 +18,7 @@
 //     "output":    {"direction": [1, 0]},                 the plotted coordinate q' x
 //     "solver":    {"exact_contact": 1, "ds_max": 0.02},
 //     "bifurcation_diagram": {"speeds": 200}               optional (app/bifurcation_input.hpp)
+//     "torus": {"harmonics1": 10, "harmonics2": 4}           optional (hb/quasi_periodic.hpp)
 //   }
 //
 // Contact law of the library: F = max(kc (g + direction' x), 0); gap g < 0 a
@@ -42,6 +43,7 @@
 #include "gearhb/app/json_file.hpp"   // read_json_file, max_json_depth
 
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/quasi_periodic.hpp"
 
 namespace gearhb {
 
@@ -59,6 +61,9 @@ struct ModelFile {
   // period_doubling.depth: 0 = none, 1 = a period-2 branch from each located PD of the
   // period-1 branch (the default; period-4 branches from their PDs are not computed yet)
   int period_doubling_depth = 1;
+  // torus (optional object; absent = off): a torus branch by two-frequency HB from each NS point
+  bool torus_on = false;
+  TorusOptions torus;
   nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
 
   HarmonicBalance harmonic_balance() const;

@@ -13,6 +13,7 @@
 #include "gearhb/app/schema.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/quasi_periodic.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
@@ -78,6 +79,15 @@ Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, 
 // The harmonic-balance vs time-integration comparison, one row per compared point:
 // check_columns(omega, {"x_max"}) (app/schema.hpp).
 Table time_integration_table(const TimeIntegrationCheck& check);
+
+// torus.csv (issue 34 §2, hb/quasi_periodic.hpp): one row per point of each torus branch:
+// branch (1, 2, ... in the order of the NS points), omega_ns (its NS point) [rad/s], omega
+// [rad/s], omega2 (the second frequency, in (0, omega/2] up to relabelling) [rad/s], rotation
+// (omega2 / omega), x_max, x_min (the output coordinate q'x over the torus), x_qp_rms (RMS of
+// its quasi-periodic part, the pairs k2 != 0), section_min, section_max (q'x on the Poincare
+// section theta1 = 0 mod 2 pi, the closed curve the once-per-period states lie on), residual
+// (scaled, at convergence).
+Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q);
 
 // The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: omega,
 // f_mesh_hz, then the common columns of the mesh deflection (app/schema.hpp).

@@ -1,0 +1,169 @@
+#pragma once
+// Quasi-periodic motion past a Neimark-Sacker (NS) point by a two-frequency harmonic
+// balance (issue 34 §2).
+//
+// Past an NS point of a period-1 branch the motion lies (near it) on a torus: x(t) =
+// x(theta1, theta2) with theta1 = omega t (the forcing) and theta2 = omega2 t, omega2 the
+// second frequency, unknown. The torus is a real Fourier series in both angles,
+//
+//   x = X_0 + sum_(k1, k2) X_c(k1,k2) cos(k1 theta1 + k2 theta2) + X_s(k1,k2) sin(...),
+//
+// over the half plane of pairs (k1, k2): k1 = 0 with k2 = 1..H2, and k1 = 1..H1 with k2 =
+// -H2..H2 (P = H2 + H1 (2 H2 + 1) pairs; each pair's frequency w = k1 omega + k2 omega2),
+// stored pair-major as HarmonicBalance stores harmonics: X = [X_0 (n), X_c1 (n), X_s1 (n),
+// ...]. The pairs with k2 = 0 are the period-1 orbit's harmonics: a period-1 HB point with
+// H1 harmonics is a torus of zero amplitude. The residual is the Galerkin projection on the
+// same basis: per pair (K - w^2 M) X_c + w C X_s + F_c - f, (K - w^2 M) X_s - w C X_c + F_s.
+//
+// The contact forces (AFT on the 2-D grid, as on the 1-D grid): on each of N2 uniform lines
+// theta2 = theta2_j the torus restricted to the line is a 1-D series in theta1 with H1
+// harmonics; its contact intervals and the projection of the piecewise-linear law are
+// computed exactly on it (contact.hpp: the crossings located on the trigonometric
+// polynomial, the indicator's moments in closed form), and the lines are averaged (the
+// trapezoid rule in theta2, spectrally accurate for the smooth part; the lines sample the
+// second angle as the classic AFT samples the first). The Jacobian is exact for this
+// residual: the mean over the lines of S_j' D^-1 kc G_j S_j (S_j the restriction to line j,
+// G_j that line's product matrix of the contact indicator).
+//
+// The torus is invariant under a shift of theta2; the phase condition
+// (d X_ref / d theta2)' X = 0 fixes it (X_ref the predictor), and omega2 is an unknown.
+//
+// The switch at an NS point of the curve c (torus_branch):
+//  1. the NS point: the chord point at the located omega corrected onto the period-1 branch;
+//  2. its Floquet multipliers on the corrected orbit (floquet.hpp) and the complex eigenvector
+//     e of the critical multiplier mu = exp(i alpha), 0 < alpha < pi;
+//  3. the eigen-solution dx(t) over one forcing period (central differences of the exact
+//     flow from the corrected state +- delta Re e, +- delta Im e): dx(t + T) = mu dx(t), so
+//     p(t) = exp(-i alpha t / T) dx(t) is T-periodic, and Re(exp(i theta2) p(theta1)) with
+//     omega2 = alpha omega / (2 pi) is the torus' first-order shape (pairs (k1, +-1));
+//  4. the first point: period-1 point + eps times that shape (eps: a fraction `amplitude` of
+//     the orbit's size), corrected with omega and omega2 free and the amplitude held (its
+//     projection on the shape); the second at 2 eps; then pseudo-arc-length continuation in
+//     the scaled unknowns [X / x_scale, omega2 / omega_scale, omega / omega_scale] with a
+//     secant predictor (a corrected point farther than half the step from its predictor is
+//     refused and the step halved: it jumped to another part of the solution set);
+//  5. it ends where the torus shrinks back onto the period-1 orbit (its quasi-periodic part
+//     below a quarter of the first point's or a tenth of the largest so far: it merged at
+//     another NS), where it leaves the
+//     range, or where the corrector fails (the torus breaks down or phase-locks: HB cannot
+//     follow it; the reason kept, the rest of the run stands).
+// Omega2 at the first point is not set from alpha: the corrector finds it from the 2-D
+// equations, so omega2 at small amplitude against alpha omega / (2 pi) checks both (tests).
+// Stability of the torus is not computed. Models with a time-varying contact stiffness or a
+// forcing on another harmonic than the first are refused (the reason says so).
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/harmonic_balance.hpp"
+
+namespace gearhb {
+
+// The two-frequency harmonic-balance model of hb's equations.
+class TorusBalance {
+ public:
+  // H1 harmonics of omega (1..hb's H), H2 of omega2 (>= 1), N2 lines in theta2 (0: 4 (2 H2 + 1)).
+  TorusBalance(const HarmonicBalance& hb, int H1, int H2, int N2 = 0);
+  int size() const { return n_ * basis(); }
+  int basis() const { return 2 * pairs() + 1; }   // 1 + 2 P
+  int pairs() const { return H2_ + H1_ * (2 * H2_ + 1); }
+  int dofs() const { return n_; }
+  int harmonics1() const { return H1_; }
+  int harmonics2() const { return H2_; }
+  int lines() const { return N2_; }
+  int k1(int pair) const;   // pair 1..P (0: the static term)
+  int k2(int pair) const;
+  const HarmonicBalance& model() const { return hb_; }
+
+  // R(X, omega, omega2), and if asked its Jacobian in X and derivatives in omega, omega2.
+  void evaluate(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const;
+  // d X / d theta2 (the phase condition's row).
+  Eigen::VectorXd theta2_derivative(const Eigen::VectorXd& X) const;
+  // A period-1 point of hb (its harmonics up to H1) as a torus of zero amplitude.
+  Eigen::VectorXd from_periodic(const Eigen::VectorXd& X1) const;
+  // X with the pairs k2 = 0 zeroed: the quasi-periodic part.
+  Eigen::VectorXd quasi_periodic_part(const Eigen::VectorXd& X) const;
+  // The 1-D coefficients (2 H1 + 1) in theta1 of the coordinate q' x on the line theta2.
+  Eigen::VectorXd line(const Eigen::VectorXd& X, const Eigen::VectorXd& q, double theta2) const;
+  // q' x at (theta1, theta2).
+  double value(const Eigen::VectorXd& X, const Eigen::VectorXd& q, double theta1, double theta2) const;
+
+ private:
+  const HarmonicBalance& hb_;
+  int n_, H1_, H2_, N2_;
+  std::vector<Eigen::MatrixXd> S_;   // per line: (2 H1 + 1) x basis restriction
+  Eigen::MatrixXd restriction(double theta2) const;
+  void add_sandwich(int j, const Eigen::MatrixXd& DG, Eigen::MatrixXd& J) const;
+  void linear_terms(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                    Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const;
+  void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX) const;
+};
+
+// Measures of a torus point on the output coordinate q' x.
+struct TorusMeasures {
+  double x_max = NAN, x_min = NAN;   // over the torus (exact along theta1, `lines` lines in theta2)
+  double x_qp_rms = NAN;             // RMS over the torus of the quasi-periodic part (pairs k2 != 0)
+  // q'x on the Poincare section theta1 = 0 (the states once per forcing period lie on this
+  // closed curve): its least and largest value over theta2 (`lines` samples)
+  double section_min = NAN, section_max = NAN;
+};
+TorusMeasures torus_measures(const TorusBalance& tb, const Eigen::VectorXd& X, const Eigen::VectorXd& q,
+                             int lines = 256);
+
+struct TorusOptions {
+  int harmonics1 = 10;       // H1 (at most the model's H)
+  int harmonics2 = 4;        // H2
+  int lines = 0;             // N2 (0: 4 (2 H2 + 1))
+  double amplitude = 0.005;  // eps of the first point: its quasi-periodic part over the orbit's size
+  double ds_max = 0.05;      // scaled arc length per step, at most
+  double ds_min = 1e-6;
+  int max_points = 200;
+  double tolerance = 1e-9;   // Newton: max |R| / r_scale and max scaled step
+  int max_iterations = 12;
+};
+
+struct TorusPoint {
+  double omega = 0.0, omega2 = 0.0;   // [rad/s]
+  Eigen::VectorXd X;
+  int iterations = 0;
+  double residual = 0.0;              // scaled, at convergence
+};
+
+struct TorusBranch {
+  std::size_t from = 0;        // index in c.bifurcations of its NS point
+  double omega_ns = NAN;       // that NS point's omega [rad/s]
+  double alpha = NAN;          // angle of its critical multiplier, in (0, pi)
+  double omega2_ns = NAN;      // alpha omega_ns / (2 pi): the Floquet second frequency [rad/s]
+  std::vector<TorusPoint> points;
+  enum class End { merged, left_range, failed, max_points } end = End::failed;
+  double omega_end = NAN;      // last point's omega
+  int to = -1;                 // merged: index in c.bifurcations of the NS nearest to omega_end
+                               // (-1 if its own NS point is nearer: it came back to where it began)
+  std::string why;             // one line: where and why it ended
+};
+
+// The torus branch from the NS point c.bifurcations[index] of hb's curve c (opt: the sweep's
+// options: range, scaling). tb: the torus model (H1, H2, lines of `to`). Never throws for a
+// failed switch: `why` says where and why, points may be empty.
+TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::size_t index, const SweepOptions& opt,
+                         const TorusOptions& to);
+
+// The torus at a given omega, corrected by Newton (omega fixed, omega2 free, phase condition)
+// from a nearby point of a branch (guess); s: the scaling of the curve it came from. Throws
+// std::runtime_error if Newton does not converge.
+TorusPoint torus_point_at(const TorusBalance& tb, const TorusPoint& guess, double omega, const Scaling& s,
+                          const TorusOptions& to = {});
+
+// Every NS point of c (located, smooth) with its torus branch, in curve order; an NS point
+// where an earlier branch merged (`to`) is not switched again (the same torus).
+std::vector<TorusBranch> torus_branches(const TorusBalance& tb, const FrequencyCurve& c, const SweepOptions& opt,
+                                        const TorusOptions& to);
+
+// The option out of range ("harmonics1", "harmonics2", "lines", "amplitude", "max_points") for
+// a model of H harmonics, with why; "" if none.
+std::string check_torus_options(const TorusOptions& to, int H, std::string* why = nullptr);
+
+}  // namespace gearhb
