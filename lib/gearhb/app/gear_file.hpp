@@ -48,6 +48,7 @@
 #include "gearhb/gears/dte_model.hpp"
 #include "gearhb/gears/fe_tooth_contact.hpp"
 #include "gearhb/gears/mesh_dynamics.hpp"
+#include "gearhb/gears/pair_helical.hpp"
 #include "gearhb/gears/potential_energy.hpp"
 #include "gearhb/gears/ste_continuous.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
@@ -91,7 +92,8 @@ struct GearFile {
   PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
   bool pe_coupling = false;        // model.pe_coupling body_torsion: the bodies' structural coupling
   FePairOptions fe;                // the FE models of both gears (method fe: model.fe_mesh, rim_radius)
-  PairSteModel pair;               // geometry, materials, reliefs, the model's reading
+  PairSteModel pair;               // geometry (the transverse section of a helical pair), materials, reliefs, reading
+  HelicalPair helical;             // helix angle, normal module and shifts, slices, lead modifications
   GearFileGear gear[2];
   double dedendum_coefficient = 1.25, root_radius_coefficient = 0.38;   // hf*, rho_f*
   double backlash = 0.0;           // j_n [m], given or from the thickness allowances

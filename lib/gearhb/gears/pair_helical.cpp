@@ -1,0 +1,161 @@
+#include "gearhb/gears/pair_helical.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "gearhb/gears/load_sharing.hpp"
+
+namespace gearhb {
+
+double lead_modification_at(const LeadModification& lead, double y, double b) {
+  const double u = 2.0 * y / b - 1.0;
+  double c = lead.crowning * u * u;
+  const double d = std::min(y, b - y);
+  if (lead.end_relief > 0.0 && d < lead.end_relief_length)
+    c += lead.end_relief * (lead.end_relief_length - d) / lead.end_relief_length;
+  return c;
+}
+
+double HelicalPair::base_helix_angle() const {
+  return std::asin(std::sin(helix_angle) * std::cos(normal_pressure_angle_deg * M_PI / 180.0));
+}
+
+GearGeometry transverse_section(const GearGeometry& normal, double helix_angle) {
+  if (helix_angle == 0.0) return normal;
+  GearGeometry t = normal;
+  const double c = std::cos(helix_angle);
+  t.module = normal.module / c;
+  t.pressure_angle_deg = std::atan(std::tan(normal.pressure_angle_rad()) / c) * 180.0 / M_PI;
+  t.profile_shift = normal.profile_shift * c;   // the shift x m_n as a length
+  return t;
+}
+
+double overlap_ratio(const PairSteModel& section, const HelicalPair& h) {
+  return section.contact_length() * std::tan(h.base_helix_angle()) / section.path().base_pitch;
+}
+
+double axial_force(const PairSteModel& section, const HelicalPair& h, double torque) {
+  return torque / section.gear1.base_radius() * std::tan(h.base_helix_angle());
+}
+
+std::vector<double> slice_phase_leads(const PairSteModel& section, const HelicalPair& h) {
+  const int n = h.sliced() ? h.slices : 1;
+  const double eps_beta = overlap_ratio(section, h);
+  std::vector<double> lead(std::size_t(n), 0.0);
+  for (int j = 0; j < n; ++j) lead[std::size_t(j)] = (j + 0.5) / n * eps_beta;
+  return lead;
+}
+
+double sliced_loaded_contact_ratio(const std::vector<PairStePoint>& cycle, const PathOfContact& path, int slices) {
+  if (slices <= 1) return loaded_contact_ratio(cycle, path);
+  double sum = 0.0;
+  for (int j = 0; j < slices; ++j) {
+    std::vector<PairStePoint> one = cycle;
+    for (PairStePoint& p : one) {
+      std::vector<PairContact> mine;
+      for (const PairContact& c : p.mesh.pairs)
+        if (c.slice == j) mine.push_back(c);
+      p.mesh.pairs = std::move(mine);
+    }
+    sum += loaded_contact_ratio(one, path);
+  }
+  return sum / slices;
+}
+
+namespace {
+
+class SlicedLoadedPair final : public LoadedPair {
+ public:
+  SlicedLoadedPair(const PairSteModel& m, const HelicalPair& h, int samples, const PairStiffnessFn& stiffness)
+      : model_(m), helix_(h), samples_(samples), stiffness_(stiffness ? stiffness : beam_pair_stiffness(m)) {
+    slices_ = h.sliced() ? h.slices : 1;
+    const double b = m.contact_length();
+    std::vector<double> phases;
+    leads_ = slice_phase_leads(m, h);
+    for (int k = 0; k < samples; ++k)
+      for (int j = 0; j < slices_; ++j) {
+        const double x = double(k) / samples + leads_[std::size_t(j)];
+        const double psi = x - std::floor(x);
+        phases.push_back(psi < 1.0 ? psi : 0.0);
+      }
+    sections_ = mesh_phases_at(m, phases, stiffness_);
+    for (int j = 0; j < slices_; ++j) {
+      const double y = (j + 0.5) / slices_ * b;
+      lead_.push_back(lead_modification_at(h.lead1, y, b) + lead_modification_at(h.lead2, y, b));
+    }
+  }
+  double force(double torque) const override { return model_.force(torque); }
+
+  std::vector<PairStePoint> ste(double torque, bool reliefs) const override {
+    const double n = double(slices_), F = model_.force(torque);
+    std::vector<PairStePoint> out;
+    out.reserve(std::size_t(samples_));
+    std::vector<ContactPair> contacts;
+    for (int k = 0; k < samples_; ++k) {
+      PairStePoint p;
+      p.mesh.phase = double(k) / samples_;
+      contacts.clear();
+      for (int j = 0; j < slices_; ++j) {
+        const int wrap = int(std::floor(double(k) / samples_ + leads_[std::size_t(j)]));
+        int q = 0;
+        for (PairContact c : sections_[std::size_t(k * slices_ + j)].pairs) {
+          c.slice = j;
+          c.tooth = q++ - wrap;
+          c.separation = reliefs ? c.separation + lead_[std::size_t(j)] : 0.0;
+          contacts.push_back({c.stiffness, c.separation});   // the scaled problem: k, N F, line b
+          c.stiffness /= n;
+          p.mesh.pairs.push_back(c);
+        }
+      }
+      const LoadShare share = share_load(contacts, n * F, model_.hertz, model_.pair_hertz, model_.contact_length());
+      for (std::size_t i = 0; i < contacts.size(); ++i) p.mesh.pairs[i].force = share.force[i] / n;
+      p.loaded = share.loaded;
+      p.approach = share.approach;
+      p.hertz = share.hertz;
+      p.ste = share.ste;
+      out.push_back(std::move(p));
+    }
+    return out;
+  }
+
+  // The tooth pair whose mid-face contact is at s, alone: its slices on the path, unmodified.
+  double single_pair_ste(double s, double torque) const override {
+    const PathOfContact path = model_.path();
+    const double n = double(slices_), spread = overlap_ratio(model_, helix_) * path.base_pitch;
+    std::vector<ContactPair> contacts;
+    for (int j = 0; j < slices_; ++j) {
+      const double sj = s + ((j + 0.5) / n - 0.5) * spread;
+      if (sj < 0.0 || sj > path.AE) continue;
+      const ContactRadii r = contact_radii(model_.gear1, model_.gear2, path, sj);
+      contacts.push_back({stiffness_(r.r1, r.r2, false), 0.0});
+    }
+    if (contacts.empty()) throw std::invalid_argument("single_pair_ste: no slice of the pair on the path of contact");
+    return share_load(contacts, n * model_.force(torque), model_.hertz, model_.pair_hertz, model_.contact_length()).ste;
+  }
+
+ private:
+  PairSteModel model_;
+  HelicalPair helix_;
+  int samples_ = 0, slices_ = 1;
+  PairStiffnessFn stiffness_;
+  std::vector<MeshPhase> sections_;   // sample k, slice j at k * slices_ + j
+  std::vector<double> lead_;          // both gears' lead modification at each slice [m]
+  std::vector<double> leads_;         // each slice's phase lead [mesh cycles]
+};
+
+}  // namespace
+
+std::unique_ptr<LoadedPair> sliced_loaded_pair(const PairSteModel& section, const HelicalPair& h, int samples,
+                                               const PairStiffnessFn& stiffness) {
+  if (h.slices < 1 || h.slices > 1000) throw std::invalid_argument("sliced_loaded_pair: slices outside [1, 1000]");
+  if (section.positions_per_base_pitch > 0)
+    throw std::invalid_argument("sliced_loaded_pair: the node reading (positions_per_base_pitch) has no slices");
+  if (h.sliced() && h.slices > 1 && section.hertz != HertzCount::none && section.pair_hertz != TwoPairHertz::consistent)
+    throw std::invalid_argument("sliced_loaded_pair: Hertz over slices needs the consistent split (or none)");
+  if (samples < 4 || samples > 1 << 16)
+    throw std::invalid_argument("sliced_loaded_pair: samples per mesh cycle must be in [4, 65536]");
+  return std::make_unique<SlicedLoadedPair>(section, h, samples, stiffness);
+}
+
+}  // namespace gearhb
