@@ -242,7 +242,9 @@ void GearPairFromFile::geometry(Run& run) const {
     key.add("root_radius_" + n + "_m", g[i]->root_radius(), "m");
     key.add("operating_pitch_radius_" + n + "_m", i == 0 ? p.mesh.pitch_radius1 : p.mesh.pitch_radius2, "m");
     key.add("tip_thickness_" + n + "_m", tooth_thickness(*g[i], g[i]->tip_radius()), "m");
-    const double z_min = undercut_limit_teeth(file_.dedendum_coefficient, file_.root_radius_coefficient,
+    // In the transverse section (a helical gear's rack coefficients in m_t: times cos(beta)).
+    const double c = std::cos(file_.helical.helix_angle);
+    const double z_min = undercut_limit_teeth(file_.dedendum_coefficient * c, file_.root_radius_coefficient * c,
                                               g[i]->profile_shift, g[i]->pressure_angle_deg);
     key.add("undercut_z_min_" + n, z_min, "-");
     if (g[i]->teeth < z_min) {

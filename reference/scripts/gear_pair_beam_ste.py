@@ -25,6 +25,17 @@ with numpy (dense FE) and scipy (brentq), to check the C++ implementation:
     consistent: brentq on X of sum F_i(X) = F, F_i from F_i/k_i + n_H delta(F_i) = X - g_i;
   * Palmgren delta = 3.84e-5 F^0.9 / L^0.8 [mm] (F in N, L in mm), n_H = 2 per tooth,
     1 per contact; tooth force T1 / r1 or T1 / rb1.
+A helical file (helix_angle_deg beta > 0, or a lead modification) is sliced (issue 35), written
+here from ISO 21771 without the library's formulas:
+  * the transverse gear: m_t = m_n / cos(beta), alpha_t = atan(tan(alpha_n) / cos(beta)),
+    ra = r + m_n (ha* + x), rf = r - m_n (hf* - x), s0 = m_t (pi/2 + 2 x tan(alpha_n));
+  * overlap ratio eps_beta = b sin(beta) / (pi m_n); N slices (model.slices, default 20), slice j
+    at y_j = (j + 1/2) b / N, read at phase phi + eps_beta y_j / b;
+  * each slice contact: the full-width beam stiffness / N, its gap the tip reliefs plus both
+    gears' lead modification at y_j (crowning C (2y/b - 1)^2, end relief C_I (L_I - d)/L_I);
+  * the load shared over all slices x pairs with each slice's Hertz that of the whole line at
+    the same line load: the sharing above with stiffness k (not k / N), force N F, line b;
+  * single pair: the tooth pair whose mid-face contact is at C, its slices on the path alone.
 """
 import json
 import math
@@ -46,18 +57,21 @@ def inv_inverse(v):
 
 class Gear:
     def __init__(self, f, g):
-        self.m, self.al = f["module"], math.radians(f["pressure_angle_deg"])
+        self.mn, self.aln = f["module"], math.radians(f["pressure_angle_deg"])
+        beta = math.radians(f.get("helix_angle_deg", 0.0))
+        self.m = self.mn / math.cos(beta)
+        self.al = math.atan(math.tan(self.aln) / math.cos(beta)) if beta else self.aln
         rack = f.get("basic_rack", {})
-        self.ha, self.hf = rack.get("addendum", 1.0) * self.m, rack.get("dedendum", 1.25) * self.m
+        self.ha, self.hf = rack.get("addendum", 1.0) * self.mn, rack.get("dedendum", 1.25) * self.mn
         self.z, self.x, self.b, self.E = g["z"], g.get("x", 0.0), g["b"], g["E"]
         self.r = self.m * self.z / 2
         self.rb = self.r * math.cos(self.al)
-        self.ra = self.r + self.ha + self.x * self.m
-        self.rf = self.r - self.hf + self.x * self.m
+        self.ra = self.r + self.ha + self.x * self.mn
+        self.rf = self.r - self.hf + self.x * self.mn
 
     def thickness(self, r):
         r = max(r, self.rb)
-        s0 = self.m * (math.pi / 2 + 2 * self.x * math.tan(self.al))
+        s0 = self.m * (math.pi / 2 + 2 * self.x * math.tan(self.aln))   # ISO 21771: s_t = m_t (pi/2 + 2 x tan alpha_n)
         return r * s0 / self.r + 2 * r * (inv(self.al) - inv(math.acos(min(1.0, self.rb / r))))
 
 
@@ -146,7 +160,18 @@ def share(pairs, F, nh, split, L):
     return X, [force(i, X) for i in range(len(pairs))]
 
 
-def evaluate(f, positions=0, n_phases=None):
+def lead(g, y, b):
+    """Both lead modifications of one gear at y across the face b."""
+    ld = g.get("lead", {})
+    c = ld.get("crowning", 0.0) * (2 * y / b - 1) ** 2
+    er = ld.get("end_relief", {})
+    d = min(y, b - y)
+    if er.get("amount", 0.0) > 0 and d < er["length"]:
+        c += er["amount"] * (er["length"] - d) / er["length"]
+    return c
+
+
+def evaluate(f, positions=0, n_phases=None, slices=None):
     g1, g2 = Gear(f, f["gears"][0]), Gear(f, f["gears"][1])
     model = f.get("model", {})
     a = f.get("centre_distance", 0.0)
@@ -175,6 +200,20 @@ def evaluate(f, positions=0, n_phases=None):
             return np.linalg.inv(G1 + D @ G2 @ D)[0, 0]
         return 1.0 / (G1[0, 0] + G2[0, 0])
 
+    helical = f.get("helix_angle_deg", 0.0) > 0 or any("lead" in g for g in f["gears"])
+    N = (slices or model.get("slices", 20)) if helical else 1
+    eps_beta = L * math.sin(math.radians(f.get("helix_angle_deg", 0.0))) / (math.pi * g1.mn)
+
+    def points(phase, slice_gap):
+        pts, s = [], phase * pb
+        while s <= AE:
+            T1P = T1A + s
+            T2P = T1T2 - T1P
+            pts.append((math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P),
+                        relief(rel1, g1, T1P) + relief(rel2, g2, T2P) + slice_gap))
+            s += pb
+        return pts
+
     phases = []
     if positions:
         for j in range(positions):
@@ -182,22 +221,22 @@ def evaluate(f, positions=0, n_phases=None):
             phases.append([(r1, r2, 0.0) for r1, r2 in pts])
     else:
         n = n_phases or model.get("phases", 64)
+        ys = [(j + 0.5) * L / N for j in range(N)]
+        gaps = [lead(f["gears"][0], y, L) + lead(f["gears"][1], y, L) for y in ys]
         for j in range(n):
-            pts, s = [], j / n * pb
-            while s <= AE:
-                T1P = T1A + s
-                T2P = T1T2 - T1P
-                pts.append((math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P),
-                            relief(rel1, g1, T1P) + relief(rel2, g2, T2P)))
-                s += pb
+            pts = []
+            for y, gap in zip(ys, gaps):
+                psi = (j / n + eps_beta * y / L) % 1.0
+                p = points(psi, gap)
+                pts += [(r1, r2, g, len(p) > 1) for r1, r2, g in p]
             phases.append(pts)
-    ks = [[(stiffness(r1, r2, len(p) > 1), g) for r1, r2, g in p] for p in phases]
+    ks = [[(stiffness(q[0], q[1], q[3] if len(q) > 3 else len(p) > 1), q[2]) for q in p] for p in phases]
     out = {}
     for i, T in enumerate(f["torques"]):
         F = T / (g1.r if model.get("tooth_force", "pitch_radius") == "pitch_radius" else g1.rb)
         ste, loaded = [], []
         for pairs in ks:
-            e, forces = share(pairs, F, nh, split, L)
+            e, forces = share(pairs, N * F, nh, split, L)
             ste.append(e)
             loaded.append(sum(1 for fi in forces if fi > 0))
         n = str(i + 1)
@@ -205,11 +244,14 @@ def evaluate(f, positions=0, n_phases=None):
         out["ste_ptp_um_" + n] = (max(ste) - min(ste)) * 1e6
         out["ste_mean_um_" + n] = sum(ste) / len(ste) * 1e6
         out["mesh_stiffness_mean_N_per_m_" + n] = sum(F / e for e in ste) / len(ste)
-        out["loaded_contact_ratio_" + n] = sum(loaded) / len(loaded)
+        out["loaded_contact_ratio_" + n] = sum(loaded) / len(loaded) / N
         # one pair alone at the pitch point C (s = AC)
-        T1P = T1C
-        k1 = stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False)
-        out["single_pair_deflection_um_" + n] = share([(k1, 0.0)], F, nh, split, L)[0] * 1e6
+        alone = []
+        for j in range(N):
+            T1P = T1C + ((j + 0.5) / N - 0.5) * eps_beta * pb
+            if T1A <= T1P <= T1A + AE:
+                alone.append((stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False), 0.0))
+        out["single_pair_deflection_um_" + n] = share(alone, N * F, nh, split, L)[0] * 1e6
     return out
 
 
