@@ -17,6 +17,7 @@
 #include <gtest/gtest.h>
 
 #include "gearhb/gears/hertz.hpp"
+#include "gearhb/gears/mesh_dynamics.hpp"
 #include "gearhb/gears/pair_helical.hpp"
 
 using namespace gearhb;
@@ -170,4 +171,39 @@ TEST(PairHelical, RefusesWhatItCannotSlice) {
   h.slices = 20;
   m.pair_hertz = TwoPairHertz::equal_split;
   EXPECT_THROW(sliced_loaded_pair(m, h, 64), std::invalid_argument);
+}
+
+// ISO 6336-1's K_v of the helical pair through the program's path (pair_iso6336_kv with the
+// helix: normal module and angle, eps_gamma = eps_alpha + eps_beta, c' with cos(beta)) against
+// ISO/TR 6336-30 Example 01's published K_v = 1.003 at n1 = 360 rpm: the example's tip relief
+// C_a = 70 um and its reduced mass (solid discs, ISO 6336-1 eq. (30)), here as the inertia of
+// the pinion on a rigid wheel (m_red = I1 / (rb1^2 b) then).
+TEST(PairHelical, IsoTr6336_30Example01DynamicFactor) {
+  GearGeometry g1, g2;
+  for (GearGeometry* g : {&g1, &g2}) {
+    g->module = 8e-3;
+    g->pressure_angle_deg = 20.0;
+    g->addendum = 8e-3;
+    g->dedendum = 1.4 * 8e-3;
+    g->face_width = 0.1;
+  }
+  g1.teeth = 17, g2.teeth = 103, g1.profile_shift = 0.145;
+  HelicalPair h;
+  h.helix_angle = 15.8 * kHelixDeg;
+  h.normal_module = 8e-3;
+  h.shift1 = 0.145;
+  PairSteModel m;
+  m.gear1 = transverse_section(g1, h.helix_angle);
+  m.gear2 = transverse_section(g2, h.helix_angle);
+  m.centre_distance = 0.5;
+  m.relief1 = tip_relief(m.gear1, 70e-6, ReliefStart::length, 5e-3, ReliefShape::linear);
+  const double d1 = 2e3 * m.gear1.pitch_radius(), d_m1 = 0.5 * (159.66 + d1 - 2.0 * 8.0 * (1.4 - 0.145));
+  const double m_red = iso6336_reduced_mass_solid(d_m1, 2e3 * m.gear1.base_radius(), 103.0 / 17.0, 7.83e-6, 7.83e-6);
+  const double I1 = m_red * 100.0 * std::pow(m.gear1.base_radius(), 2);
+  const PairIsoKv k = pair_iso6336_kv(m, 1.4, 9000.0, I1, 1e12, 5, h);
+  EXPECT_NEAR(k.input.eps_gamma, 1.549342 + 1.083369, 2e-6);   // eps_alpha of the unrounded tips + eps_beta
+  EXPECT_NEAR(k.input.c_prime, 12.37047, 1e-5);                // ISO/TR 6336-30 Ex. 01
+  EXPECT_NEAR(iso6336_dynamic_factor(k.input, 360.0).K_v, 1.003, 0.0005);   // ISO/TR 6336-30 Ex. 01 prints 1.003
+  // Without the helix (the same section read as spur: no cos(beta), eps_gamma = eps_alpha) c' moves.
+  EXPECT_GT(std::fabs(pair_iso6336_kv(m, 1.4, 9000.0, I1, 1e12, 5).input.c_prime - 12.37047), 0.1);
 }
