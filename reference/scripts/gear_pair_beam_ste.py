@@ -31,10 +31,12 @@ here from ISO 21771 without the library's formulas:
     ra = r + m_n (ha* + x), rf = r - m_n (hf* - x), s0 = m_t (pi/2 + 2 x tan(alpha_n));
   * overlap ratio eps_beta = b sin(beta) / (pi m_n); N slices (model.slices, default 20), slice j
     at y_j = (j + 1/2) b / N, read at phase phi + eps_beta y_j / b;
-  * each slice contact: the full-width beam stiffness / N, its gap the tip reliefs plus both
-    gears' lead modification at y_j (crowning C (2y/b - 1)^2, end relief C_I (L_I - d)/L_I);
-  * the load shared over all slices x pairs with each slice's Hertz that of the whole line at
-    the same line load: the sharing above with stiffness k (not k / N), force N F, line b;
+  * a slice's contact line spans ds = eps_beta pb / N along the path, centred at (psi + q) pb;
+    its part on the path [0, AE] (fraction w) is the contact, read at that part's centre;
+  * each slice contact: w times the full-width beam stiffness / N, its gap the tip reliefs plus
+    both gears' lead modification at y_j (crowning C (2y/b - 1)^2, end relief C_I (L_I - d)/L_I);
+  * the load shared over all slices x pairs with each contact's Hertz that of the whole line at
+    the same line load: the sharing above with stiffness w k, force N F, line b, delta(f / w);
   * single pair: the tooth pair whose mid-face contact is at C, its slices on the path alone.
 """
 import json
@@ -132,7 +134,9 @@ def palmgren(F, L):
 
 
 def share(pairs, F, nh, split, L):
-    """pairs: [(k, g)] -> (ste, forces)."""
+    """pairs: [(k, g)] or [(k, g, w)] (w: the contact's fraction of the line) -> (ste, forces)."""
+    frac = [p[2] if len(p) > 2 else 1.0 for p in pairs]
+    pairs = [(p[0], p[1]) for p in pairs]
     order = sorted(range(len(pairs)), key=lambda i: pairs[i][1])
     if split != "consistent" or nh == 0:
         for m in range(1, len(pairs) + 1):
@@ -152,11 +156,11 @@ def share(pairs, F, nh, split, L):
         d = X - g
         if d <= 0:
             return 0.0
-        return brentq(lambda f: f / k + nh * palmgren(f, L) - d, 0.0, k * d, xtol=1e-300, rtol=1e-15)
+        return brentq(lambda f: f / k + nh * palmgren(f / frac[i], L) - d, 0.0, k * d, xtol=1e-300, rtol=1e-15)
 
     k0, g0 = pairs[order[0]]
     X = brentq(lambda X: sum(force(i, X) for i in range(len(pairs))) - F, g0,
-               g0 + 1.01 * (F / k0 + nh * palmgren(F, L)), xtol=1e-300, rtol=1e-15)
+               g0 + 1.01 * (F / k0 + nh * palmgren(F / frac[order[0]], L)), xtol=1e-300, rtol=1e-15)
     return X, [force(i, X) for i in range(len(pairs))]
 
 
@@ -204,14 +208,25 @@ def evaluate(f, positions=0, n_phases=None, slices=None):
     N = (slices or model.get("slices", 20)) if helical else 1
     eps_beta = L * math.sin(math.radians(f.get("helix_angle_deg", 0.0))) / (math.pi * g1.mn)
 
+    ds = eps_beta * pb / N
+
+    def point(s, gap, w):
+        T1P = T1A + s
+        T2P = T1T2 - T1P
+        return (math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P), relief(rel1, g1, T1P) + relief(rel2, g2, T2P) + gap, w)
+
     def points(phase, slice_gap):
-        pts, s = [], phase * pb
-        while s <= AE:
-            T1P = T1A + s
-            T2P = T1T2 - T1P
-            pts.append((math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P),
-                        relief(rel1, g1, T1P) + relief(rel2, g2, T2P) + slice_gap))
-            s += pb
+        if ds == 0:
+            pts, s = [], phase * pb
+            while s <= AE:
+                pts.append(point(s, slice_gap, 1.0))
+                s += pb
+            return pts
+        pts = []
+        for q in range(-2, int(AE / pb) + 3):
+            lo, hi = max(0.0, (phase + q) * pb - ds / 2), min(AE, (phase + q) * pb + ds / 2)
+            if hi - lo > 1e-9 * ds:
+                pts.append(point((lo + hi) / 2, slice_gap, min(1.0, (hi - lo) / ds)))
         return pts
 
     phases = []
@@ -228,9 +243,10 @@ def evaluate(f, positions=0, n_phases=None, slices=None):
             for y, gap in zip(ys, gaps):
                 psi = (j / n + eps_beta * y / L) % 1.0
                 p = points(psi, gap)
-                pts += [(r1, r2, g, len(p) > 1) for r1, r2, g in p]
+                pts += [(r1, r2, g, w, len(p) > 1) for r1, r2, g, w in p]
             phases.append(pts)
-    ks = [[(stiffness(q[0], q[1], q[3] if len(q) > 3 else len(p) > 1), q[2]) for q in p] for p in phases]
+    ks = [[(q[3] * stiffness(q[0], q[1], q[4]), q[2], q[3]) if len(q) > 3 else (stiffness(q[0], q[1], len(p) > 1), q[2])
+           for q in p] for p in phases]
     out = {}
     for i, T in enumerate(f["torques"]):
         F = T / (g1.r if model.get("tooth_force", "pitch_radius") == "pitch_radius" else g1.rb)
@@ -238,7 +254,7 @@ def evaluate(f, positions=0, n_phases=None, slices=None):
         for pairs in ks:
             e, forces = share(pairs, N * F, nh, split, L)
             ste.append(e)
-            loaded.append(sum(1 for fi in forces if fi > 0))
+            loaded.append(sum(q[2] if len(q) > 2 else 1.0 for q, fi in zip(pairs, forces) if fi > 0))
         n = str(i + 1)
         out["ste_max_um_" + n] = max(ste) * 1e6
         out["ste_ptp_um_" + n] = (max(ste) - min(ste)) * 1e6
@@ -248,9 +264,12 @@ def evaluate(f, positions=0, n_phases=None, slices=None):
         # one pair alone at the pitch point C (s = AC)
         alone = []
         for j in range(N):
-            T1P = T1C + ((j + 0.5) / N - 0.5) * eps_beta * pb
-            if T1A <= T1P <= T1A + AE:
-                alone.append((stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False), 0.0))
+            c = T1C - T1A + ((j + 0.5) / N - 0.5) * eps_beta * pb
+            lo, hi = (max(0.0, c - ds / 2), min(AE, c + ds / 2)) if ds else (c, c)
+            w = min(1.0, (hi - lo) / ds) if ds else float(0 <= c <= AE)
+            if w > (1e-9 if ds else 0):
+                T1P = T1A + (lo + hi) / 2
+                alone.append((w * stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False), 0.0, w))
         out["single_pair_deflection_um_" + n] = share(alone, N * F, nh, split, L)[0] * 1e6
     return out
 

@@ -65,25 +65,43 @@ double sliced_loaded_contact_ratio(const std::vector<PairStePoint>& cycle, const
 
 namespace {
 
+// The part of a slice's contact line, centred at s and spread over ds along the path, that lies
+// on the path [0, AE]: its centre and its fraction (0: off the path). ds = 0: the point itself.
+std::pair<double, double> on_path(double s, double ds, double AE) {
+  if (!(ds > 0.0)) return {s, s >= 0.0 && s <= AE ? 1.0 : 0.0};
+  const double lo = std::max(0.0, s - 0.5 * ds), hi = std::min(AE, s + 0.5 * ds);
+  return {0.5 * (lo + hi), hi - lo > 1e-9 * ds ? std::min(1.0, (hi - lo) / ds) : 0.0};
+}
+
 class SlicedLoadedPair final : public LoadedPair {
  public:
   SlicedLoadedPair(const PairSteModel& m, const HelicalPair& h, int samples, const PairStiffnessFn& stiffness)
-      : model_(m), helix_(h), samples_(samples), stiffness_(stiffness ? stiffness : beam_pair_stiffness(m)) {
+      : model_(m), helix_(h), path_(m.path()), samples_(samples),
+        stiffness_(stiffness ? stiffness : beam_pair_stiffness(m)) {
     slices_ = h.sliced() ? h.slices : 1;
     const double b = m.contact_length();
-    std::vector<double> phases;
     leads_ = slice_phase_leads(m, h);
-    for (int k = 0; k < samples; ++k)
-      for (int j = 0; j < slices_; ++j) {
-        const double x = double(k) / samples + leads_[std::size_t(j)];
-        const double psi = x - std::floor(x);
-        phases.push_back(psi < 1.0 ? psi : 0.0);
-      }
-    sections_ = mesh_phases_at(m, phases, stiffness_);
+    spread_ = overlap_ratio(m, h) * path_.base_pitch / slices_;
     for (int j = 0; j < slices_; ++j) {
       const double y = (j + 0.5) / slices_ * b;
       lead_.push_back(lead_modification_at(h.lead1, y, b) + lead_modification_at(h.lead2, y, b));
     }
+    if (spread_ > 0.0) {
+      for (int k = 0; k < samples; ++k)
+        for (int j = 0; j < slices_; ++j) sections_.push_back(segments(k, j));
+      return;
+    }
+    // No stagger (beta = 0): every slice is the section at the sample's phase, its contacts whole.
+    std::vector<double> phases;
+    for (int k = 0; k < samples; ++k) phases.push_back(double(k) / samples);
+    const std::vector<MeshPhase> at = mesh_phases_at(m, phases, stiffness_);
+    for (int k = 0; k < samples; ++k)
+      for (int j = 0; j < slices_; ++j) {
+        std::vector<Segment> seg;
+        int q = 0;
+        for (const PairContact& c : at[std::size_t(k)].pairs) seg.push_back({c, 1.0, q++});
+        sections_.push_back(seg);
+      }
   }
   double force(double torque) const override { return model_.force(torque); }
 
@@ -96,18 +114,17 @@ class SlicedLoadedPair final : public LoadedPair {
       PairStePoint p;
       p.mesh.phase = double(k) / samples_;
       contacts.clear();
-      for (int j = 0; j < slices_; ++j) {
-        const int wrap = int(std::floor(double(k) / samples_ + leads_[std::size_t(j)]));
-        int q = 0;
-        for (PairContact c : sections_[std::size_t(k * slices_ + j)].pairs) {
+      for (int j = 0; j < slices_; ++j)
+        for (const Segment& seg : sections_[std::size_t(k * slices_ + j)]) {
+          PairContact c = seg.contact;
           c.slice = j;
-          c.tooth = q++ - wrap;
+          c.tooth = seg.tooth;
           c.separation = reliefs ? c.separation + lead_[std::size_t(j)] : 0.0;
-          contacts.push_back({c.stiffness, c.separation});   // the scaled problem: k, N F, line b
-          c.stiffness /= n;
+          // The scaled problem: stiffness w k, force N F, Hertz of the whole line at the line load.
+          contacts.push_back({seg.weight * c.stiffness, c.separation, seg.weight});
+          c.stiffness *= seg.weight / n;
           p.mesh.pairs.push_back(c);
         }
-      }
       const LoadShare share = share_load(contacts, n * F, model_.hertz, model_.pair_hertz, model_.contact_length());
       for (std::size_t i = 0; i < contacts.size(); ++i) p.mesh.pairs[i].force = share.force[i] / n;
       p.loaded = share.loaded;
@@ -121,25 +138,46 @@ class SlicedLoadedPair final : public LoadedPair {
 
   // The tooth pair whose mid-face contact is at s, alone: its slices on the path, unmodified.
   double single_pair_ste(double s, double torque) const override {
-    const PathOfContact path = model_.path();
-    const double n = double(slices_), spread = overlap_ratio(model_, helix_) * path.base_pitch;
+    const double n = double(slices_);
     std::vector<ContactPair> contacts;
     for (int j = 0; j < slices_; ++j) {
-      const double sj = s + ((j + 0.5) / n - 0.5) * spread;
-      if (sj < 0.0 || sj > path.AE) continue;
-      const ContactRadii r = contact_radii(model_.gear1, model_.gear2, path, sj);
-      contacts.push_back({stiffness_(r.r1, r.r2, false), 0.0});
+      const auto [sm, w] = on_path(s + ((j + 0.5) / n - 0.5) * n * spread_, spread_, path_.AE);
+      if (w == 0.0) continue;
+      const ContactRadii r = contact_radii(model_.gear1, model_.gear2, path_, sm);
+      contacts.push_back({w * stiffness_(r.r1, r.r2, false), 0.0, w});
     }
     if (contacts.empty()) throw std::invalid_argument("single_pair_ste: no slice of the pair on the path of contact");
     return share_load(contacts, n * model_.force(torque), model_.hertz, model_.pair_hertz, model_.contact_length()).ste;
   }
 
  private:
+  struct Segment {
+    PairContact contact;   // at the centre of its part on the path; stiffness the full-width section's
+    double weight = 1.0;   // that part's fraction of the slice's contact line
+    int tooth = 0;
+  };
+  // Slice j at sample k: the slice's contact lines (one per tooth pair near the path), each
+  // spread over spread_ along the path, cut to the path.
+  std::vector<Segment> segments(int k, int j) const {
+    const double pb = path_.base_pitch, x = double(k) / samples_ + leads_[std::size_t(j)];
+    const double wrap = std::floor(x), psi = x - wrap;
+    std::vector<Segment> out;
+    for (int q = int(std::ceil(-psi - 0.5 * spread_ / pb)); (psi + q) * pb - 0.5 * spread_ <= path_.AE; ++q) {
+      const auto [sm, w] = on_path((psi + q) * pb, spread_, path_.AE);
+      if (w > 0.0) out.push_back({pair_contact_at(model_, path_, sm), w, q - int(wrap)});
+    }
+    const bool sharing = out.size() > 1;
+    for (Segment& seg : out) seg.contact.stiffness = stiffness_(seg.contact.r1, seg.contact.r2, sharing);
+    return out;
+  }
+
   PairSteModel model_;
   HelicalPair helix_;
+  PathOfContact path_;
   int samples_ = 0, slices_ = 1;
+  double spread_ = 0.0;               // one slice's contact line along the path: eps_beta pb / N [m]
   PairStiffnessFn stiffness_;
-  std::vector<MeshPhase> sections_;   // sample k, slice j at k * slices_ + j
+  std::vector<std::vector<Segment>> sections_;   // sample k, slice j at k * slices_ + j
   std::vector<double> lead_;          // both gears' lead modification at each slice [m]
   std::vector<double> leads_;         // each slice's phase lead [mesh cycles]
 };

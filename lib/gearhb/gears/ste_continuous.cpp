@@ -271,6 +271,13 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, c
   return mesh_phases_at(m, t1, t2, phases, stiffness);
 }
 
+PairContact pair_contact_at(const PairSteModel& m, const PathOfContact& path, double s) {
+  const ContactRadii r = contact_radii(m.gear1, m.gear2, path, s);
+  PairContact c = contact_point(m, path, r.r1, r.r2);
+  c.s = s;
+  return c;
+}
+
 PairStiffnessFn beam_pair_stiffness(const PairSteModel& m) {
   const int ne = m.elements();
   return beam_pair_stiffness(m, tooth_beam(m.gear1, m.youngs_modulus1, ne, m.thickness_at),

@@ -175,6 +175,10 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& tooth
 // phase outside [0, 1)).
 std::vector<MeshPhase> mesh_phases_at(const PairSteModel& m, const std::vector<double>& phases,
                                       const PairStiffnessFn& stiffness = {});
+// The contact point at s from A (0 <= s <= AE): its radii on both gears and both tip reliefs
+// (no stiffness, no force).
+PairContact pair_contact_at(const PairSteModel& m, const PathOfContact& path, double s);
+
 // The beams' pair stiffness of m's reading (pair_stiffness), each cantilever factorised once.
 PairStiffnessFn beam_pair_stiffness(const PairSteModel& m);
 
