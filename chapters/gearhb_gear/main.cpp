@@ -15,7 +15,9 @@
 // dynamic factor K_v over the range, beside the computed one). model.method chooses the
 // tooth model of the pair stiffness (loaded_pair.hpp): the beams (default), the
 // potential-energy method, or tooth contact by finite elements on the generated tooth
-// form (fe_tooth_contact.hpp), built once and reused for every torque.
+// form (fe_tooth_contact.hpp), built once and reused for every torque. A helical pair
+// (helix_angle_deg, or a lead modification) is its transverse section with the face in slices
+// (pair_helical.hpp; README "Helical pairs").
 //
 // With `speed` and `dynamics` in the file, the pair over its speed range
 // (mesh_dynamics.hpp; README "The pair over its speed range"): per torque, the mesh
@@ -762,14 +764,14 @@ void GearPairFromFile::draw(Run& run) const {
 
 int main(int argc, char** argv) {
   Study study("gearhb_gear",
-              "gearhb_gear: a spur gear pair from its drawing - geometry, loaded static transmission error,\n"
+              "gearhb_gear: a spur or helical gear pair from its drawing - geometry, loaded static transmission error,\n"
               "mesh stiffness k = F / STE over the mesh cycle, load shares, Harris map, ISO 6336-1 stiffness;\n"
               "with a speed range the response over speed (both flanks, Floquet, K_v) and ISO 6336-1's K_v.\n"
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
               "also frc_<i>.csv, bifurcations_<i>.csv, check_time_integration_<i>.csv, modes.csv,\n"
               "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
-              "fillet_stress_<i>.csv, contact_<i>.csv.\n\n" +
+              "fillet_stress_<i>.csv, contact_<i>.csv; a helical or lead-modified face also load_map_<i>.csv.\n\n" +
                   gear_file_help());
   GearPairFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });
