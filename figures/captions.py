@@ -223,6 +223,9 @@ GEAR_CAPTIONS = {
                      "two-pair step at eps_alpha - 1 of the cycle.",
     "shares.png": "Load share of each tooth pair along the mesh cycle (exact contact problem): where a pair "
                   "takes up and gives off its load.",
+    "load_map.png": "A helical (or lead-modified) face in slices: the line load of every slice contact over the "
+                    "roll angle of gear 1 (A to E) and across the face, at the largest torque. Notice the contact "
+                    "lines' stagger and where a lead modification unloads the ends of the face.",
     "spectrum.png": "STE amplitude per mesh order: what the mesh excites at each multiple of the mesh frequency.",
     "harris.png": "Harris map: STE peak-to-peak against torque with the file's relief and without it. The "
                   "minimum marks the load the relief suits.",

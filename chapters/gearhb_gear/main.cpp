@@ -31,7 +31,7 @@
 // Or the six-DOF model (bearings, mesh along the line of action), from the same file.
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
-// written), geometry, tooth_model, transmission_error, iso6336, harris_map, dynamics (response,
+// written), geometry, helix_key_numbers, tooth_model, transmission_error, iso6336, harris_map, dynamics (response,
 // response_tables, response_key_numbers, spectrum_and_history,
 // time_integration_check per torque), iso_dynamic_factor, draw.
 //
@@ -209,6 +209,7 @@ GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
 void GearPairFromFile::run(Run& run) {
   run.write_text("params.json", file_.resolved.dump(2) + "\n");
   geometry(run);
+  helix_key_numbers(run);
   tooth_model(run);
   transmission_error(run);
   if (loaded_->fe_model()) root_stress_and_contact(run);
@@ -224,7 +225,8 @@ void GearPairFromFile::read_gear() {
 }
 
 
-// Step 2: the involute geometry of the pair; path_of_contact.csv, key numbers.
+// Step 2: the involute geometry of the pair (of a helical pair's transverse section);
+// path_of_contact.csv, key numbers.
 void GearPairFromFile::geometry(Run& run) const {
   const PairSteModel& m = file_.pair;
   const PathOfContact p = m.path();
@@ -232,11 +234,11 @@ void GearPairFromFile::geometry(Run& run) const {
   key.add("centre_distance_m", p.mesh.centre_distance, "m");
   key.add("operating_pressure_angle_deg", p.mesh.pressure_angle * 180.0 / M_PI, "deg");
   key.add("contact_ratio", p.contact_ratio, "-");
-  helix_key_numbers(run);
   key.add("path_of_contact_m", p.AE, "m");
   key.add("base_pitch_m", p.base_pitch, "m");
   const GearGeometry* g[2] = {&m.gear1, &m.gear2};
   int undercut = 0;
+  const double c = std::cos(file_.helical.helix_angle);   // a helical rack's coefficients in m_t: times cos(beta)
   for (int i = 0; i < 2; ++i) {
     const std::string n = std::to_string(i + 1);
     key.add("base_radius_" + n + "_m", g[i]->base_radius(), "m");
@@ -244,8 +246,6 @@ void GearPairFromFile::geometry(Run& run) const {
     key.add("root_radius_" + n + "_m", g[i]->root_radius(), "m");
     key.add("operating_pitch_radius_" + n + "_m", i == 0 ? p.mesh.pitch_radius1 : p.mesh.pitch_radius2, "m");
     key.add("tip_thickness_" + n + "_m", tooth_thickness(*g[i], g[i]->tip_radius()), "m");
-    // In the transverse section (a helical gear's rack coefficients in m_t: times cos(beta)).
-    const double c = std::cos(file_.helical.helix_angle);
     const double z_min = undercut_limit_teeth(file_.dedendum_coefficient * c, file_.root_radius_coefficient * c,
                                               g[i]->profile_shift, g[i]->pressure_angle_deg);
     key.add("undercut_z_min_" + n, z_min, "-");
