@@ -216,6 +216,17 @@ GEAR_CAPTIONS_NO_RELIEF = {
                   "curve, rising with the load; a relief would bring a minimum at the load it suits.",
 }
 
+# The captions that differ for a helical file (helix_angle_deg > 0; figures/report.py gear_caption).
+GEAR_CAPTIONS_HELICAL = {
+    "ste.png": "Loaded static transmission error over one mesh cycle of the helical pair (the face in slices), "
+               "one curve per torque. Notice how small and smooth its fluctuation is beside a spur pair's: the "
+               "contact lines enter and leave the path gradually, across the face.",
+    "stiffness.png": "Mesh stiffness k = F / STE over the mesh cycle per torque, its mean dotted: nearly constant, "
+                     "the contact-line length on the path varying only with the fractional part of the overlap ratio.",
+    "shares.png": "Load share of each tooth pair, summed over the slices of the face, along the mesh cycle (exact "
+                  "contact problem over slices x pairs): a pair takes up and gives off its load gradually.",
+}
+
 GEAR_CAPTIONS = {
     "ste.png": "Loaded static transmission error over one mesh cycle, one curve per torque. Notice the "
                "steps where a pair enters or leaves the path, and how tip relief flattens them at its design load.",
