@@ -200,7 +200,17 @@ void read_lead(const json& lead, const std::string& path, const std::string& whe
 // A helical pair or a lead modification (the face in slices): the keys that do not apply.
 void check_helical(GearFile& f, const json& model, const std::string& path) {
   HelicalPair& h = f.helical;
-  h.slices = model.contains("slices") ? json_whole(model["slices"], path, "model.slices", 1, 1000) : h.slices;
+  h.slices = model.contains("slices") ? json_whole(model["slices"], path, "model.slices", 1, 200) : h.slices;
+  // The work of a sliced face grows with slices x phases x the STE solves (torques and twice the
+  // Harris points): bounded so that no file runs for minutes (at the bound about 15 s CPU, Ex. 01).
+  const double solves = double(f.torques.size() + 2 * std::size_t(f.harris_points));
+  if (h.sliced() && h.slices * f.phases > 200 * 64)
+    fail_key(path, "model.slices", "times model.phases (" + std::to_string(h.slices) + " x " + std::to_string(f.phases) +
+                                       ") exceeds 200 x 64: fewer slices or phases");
+  if (h.sliced() && double(h.slices) * f.phases * solves > 1.6e6)
+    fail_key(path, "model.slices", "x model.phases x (torques + 2 harris.points) = " +
+                                       std::to_string(long(double(h.slices) * f.phases * solves)) +
+                                       " exceeds 1.6e6 (a run of minutes): fewer slices, phases or Harris points");
   const double b = f.pair.contact_length();
   const LeadModification* lead[2] = {&h.lead1, &h.lead2};
   for (int i = 0; i < 2; ++i)
@@ -474,7 +484,8 @@ std::string gear_file_help() {
          "                               coupling of the loaded pairs through the bodies' torsion (the annulus rim_radius..rf,\n"
          "                               potential_energy.hpp pe_body_coupling): the rigid part of the FE's coupling\n"
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
-         "  model.slices                 slices of the face of a helical or lead-modified pair (default 20, 1..1000;\n"
+         "  model.slices                 slices of the face of a helical or lead-modified pair (default 20, 1..200,\n"
+         "                               slices x model.phases <= 200 x 64, x (torques + 2 harris.points) <= 1.6e6;\n"
          "                               beam or potential_energy, model.pair_hertz consistent or model.hertz none)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"
