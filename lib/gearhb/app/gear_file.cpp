@@ -439,7 +439,7 @@ std::string gear_file_help() {
          "  helix_angle_deg              beta on the reference circle [deg], in [0, 45] (default 0: spur); the pair\n"
          "                               is then its transverse section, the face in model.slices slices staggered\n"
          "                               by the base helix (overlap ratio b sin(beta) / (pi m_n) <= 20)\n"
-         "  hand                         right (default) | left: gear 1's hand (the sign of the axial force)\n"
+         "  hand                         right (default) | left: gear 1's hand (recorded: the axial force's direction)\n"
          "  basic_rack.addendum          ha* (units of m, default 1)\n"
          "  basic_rack.dedendum          hf* (default 1.25, >= ha*)\n"
          "  basic_rack.root_radius       rho_f* (default 0.38; used for the undercut limit)\n"

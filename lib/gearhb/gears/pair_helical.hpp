@@ -21,17 +21,21 @@
 // and the total contact ratio is eps_gamma = eps_alpha + eps_beta (eps_alpha the section's).
 //
 // The slices. b in N equal slices, slice j centred at y_j = (j + 1/2) b / N and read at
-// mesh phase phi + y_j tan(beta_b) / p_bt (mod 1): its pairs on the path of contact (the
-// section's contacts, mesh_phases_at), their separations (both tip reliefs, plus both gears'
-// lead modifications at y_j), their stiffness k(r1, r2) / N, k the chosen tooth model's
-// stiffness of the full-width section (beam or potential energy): a stiffness per unit face
-// width constant across the face, with no coupling between neighbouring slices. The load is
-// shared over all slices x pairs by share_load (load_sharing.hpp), the same exact active set.
-// Hertz: Palmgren's approach is not per unit width (delta ~ F^0.9 / L^0.8), so a slice that
-// carries F_i on b / N gets the approach of the whole line at the same line load,
-// delta(N F_i, b): the contact problem is solved scaled by N (stiffnesses k, force N F, line
-// b). With N > 1 Hertz must be inside the sharing (TwoPairHertz::consistent) or none: the
-// thesis' equal split over the loaded contacts would split over slices.
+// mesh phase phi + y_j tan(beta_b) / p_bt (mod 1). Its contact line with each tooth pair spans
+// ds = eps_beta p_bt / N along the path of contact, centred at (psi + q) p_bt (psi the slice's
+// phase); the part of it on the path [0, AE] (a fraction w in (0, 1]) is the slice's contact,
+// read at that part's centre: its radii, its separation (both tip reliefs, plus both gears'
+// lead modifications at y_j), its stiffness w k(r1, r2) / N, k the chosen tooth model's
+// stiffness of the full-width section (beam or potential energy). Cutting each contact line
+// exactly at A and E makes the contact length on the path exact at any N (a whole eps_beta gives
+// a constant length, tests/unit/test_pair_helical.cpp); a stiffness per unit face width
+// constant across the face, with no coupling between neighbouring slices. The load is shared
+// over all slices x pairs by share_load (load_sharing.hpp), the same exact active set.
+// Hertz: Palmgren's approach is not per unit width (delta ~ F^0.9 / L^0.8), so a contact that
+// carries F_i on w b / N gets the approach of the whole line at the same line load,
+// delta(N F_i / w, b): the contact problem is solved scaled by N (stiffnesses w k, force N F,
+// line b, ContactPair::line_fraction w). With N > 1 Hertz must be inside the sharing
+// (TwoPairHertz::consistent) or none: the thesis' equal split would split over slices.
 //
 // At beta = 0 without a lead modification the slices would be identical copies: the face is
 // then one slice, and the STE is the spur pair's bit for bit (tests/unit/test_pair_helical.cpp).
@@ -63,7 +67,7 @@ struct HelicalPair {
   double shift1 = 0.0, shift2 = 0.0;   // x1, x2: the normal profile shift coefficients
   int slices = 20;                  // N (default; convergence: README "Helical pairs")
   LeadModification lead1, lead2;    // gear 1, gear 2
-  bool left_hand = false;           // gear 1's hand (gear 2 the other); only the axial force's sign
+  bool left_hand = false;           // gear 1's hand (gear 2 the other): recorded, the axial force's direction
 
   double base_helix_angle() const;  // beta_b [rad]
   // The face in slices: beta > 0 or a lead modification (else the spur pair, one slice).
