@@ -298,6 +298,7 @@ void GearPairFromFile::helix_key_numbers(Run& run) const {
   key.add("helix_angle_deg", h.helix_angle * 180.0 / M_PI, "deg");
   key.add("base_helix_angle_deg", h.base_helix_angle() * 180.0 / M_PI, "deg");
   key.add("helix_left_hand", h.left_hand ? 1 : 0, "-");
+  key.add("double_helical", h.double_helical ? 1 : 0, "-");
   key.add("transverse_module_m", m.gear1.module, "m");
   key.add("transverse_pressure_angle_deg", m.gear1.pressure_angle_deg, "deg");
   key.add("overlap_ratio", eps_beta, "-");

@@ -204,3 +204,26 @@ TEST(PairHelical, IsoTr6336_30Example01DynamicFactor) {
   // Without the helix (the same section read as spur: no cos(beta), eps_gamma = eps_alpha) c' moves.
   EXPECT_GT(std::fabs(pair_iso6336_kv(m, 1.4, 9000.0, I1, 1e12, 5).input.c_prime - 12.37047), 0.1);
 }
+
+// Double helical: two mirrored halves are two single helical pairs of half the width side by
+// side, each carrying half the load: the STE of the double pair of contact width 2 b_h at T
+// equals the single pair's of width b_h at T / 2 (with N and N / 2 slices; Hertz of each half
+// its own line), with the halves' crowning too; the axial forces cancel.
+TEST(PairHelical, DoubleHelicalIsTwoHalvesAtHalfTheLoad) {
+  HelicalPair single, twin;
+  PairSteModel half = helical_thesis_pair(25.0 * kHelixDeg, single);
+  PairSteModel both = helical_thesis_pair(25.0 * kHelixDeg, twin);
+  both.gear1.face_width = both.gear2.face_width = 2.0 * half.gear1.face_width;
+  twin.double_helical = true;
+  single.slices = 10;
+  twin.slices = 20;
+  single.lead1.crowning = twin.lead1.crowning = 3e-6;
+  const auto a = sliced_loaded_pair(half, single, 64)->ste(100.0);
+  const auto b = sliced_loaded_pair(both, twin, 64)->ste(200.0);
+  for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(b[k].ste, a[k].ste, 1e-10 * a[k].ste);
+  EXPECT_NEAR(overlap_ratio(both, twin), overlap_ratio(half, single), 1e-15);
+  EXPECT_EQ(axial_force(both, twin, 200.0), 0.0);
+  EXPECT_GT(axial_force(half, single, 100.0), 0.0);
+  twin.slices = 21;
+  EXPECT_THROW(sliced_loaded_pair(both, twin, 64), std::invalid_argument);
+}

@@ -217,6 +217,11 @@ void check_helical(GearFile& f, const json& model, const std::string& path) {
     if (lead[i]->end_relief > 0.0 && !(lead[i]->end_relief_length <= 0.5 * b))
       fail_key(path, "gears." + std::to_string(i) + ".lead.end_relief.length",
                "is longer than half the contact width b/2 = " + mm(0.5 * b) + " (a relief at each end of the face)");
+  // (double helical: each half's own ends, half of that)
+  for (int i = 0; i < 2; ++i)
+    if (h.double_helical && lead[i]->end_relief > 0.0 && !(lead[i]->end_relief_length <= 0.25 * b))
+      fail_key(path, "gears." + std::to_string(i) + ".lead.end_relief.length",
+               "is longer than half a helix, b/4 = " + mm(0.25 * b) + " (a relief at each end of each half)");
   if (!h.sliced()) return;
   const double eps_beta = overlap_ratio(f.pair, h);
   if (!(eps_beta <= 20.0))
@@ -227,6 +232,7 @@ void check_helical(GearFile& f, const json& model, const std::string& path) {
   if (f.pair.positions_per_base_pitch > 0)
     fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) takes no helix angle or lead modification");
   if (f.pe_coupling) fail_key(path, "model.pe_coupling", "takes no helix angle or lead modification");
+  if (h.double_helical && h.slices % 2 != 0) fail_key(path, "model.slices", "must be even for double_helical (half of them a half)");
   if (h.slices > 1 && f.pair.hertz != HertzCount::none && f.pair.pair_hertz != TwoPairHertz::consistent)
     fail_key(path, "model.pair_hertz", "must be consistent over the slices of a helical face (or model.hertz none)");
   if (h.helix_angle > 0.0 && f.dynamics.present && f.dynamics.dofs == MeshDofs::bearings)
@@ -237,7 +243,7 @@ void check_helical(GearFile& f, const json& model, const std::string& path) {
 
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
-  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "basic_rack",
+  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
                           "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
                           "bifurcation_diagram"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
@@ -255,6 +261,15 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   h.left_hand = r.choice(j, "", "hand", {"right", "left"}, 0) == 1;
   h.normal_module = m;
   h.normal_pressure_angle_deg = alpha;
+  double gap = 0.0;   // double helical: the gap between the halves [m], out of both face widths
+  if (j.contains("double_helical")) {
+    const json& d = j["double_helical"];
+    if (!d.is_object()) fail_key(path, "double_helical", "must be an object {gap}");
+    only_keys(d, path, "double_helical", {"gap"});
+    if (!(h.helix_angle > 0.0)) fail_key(path, "double_helical", "needs helix_angle_deg > 0");
+    h.double_helical = true;
+    gap = r.number(d, "double_helical", "gap", 0.0, 10.0, "[0, 10] m");
+  }
   const json rack = j.value("basic_rack", json::object());
   only_keys(rack, path, "basic_rack", {"addendum", "dedendum", "root_radius"});
   const double ha = r.optional(rack, "basic_rack", "addendum", 1.0, 0.5, 2.0, "[0.5, 2] (units of m)");
@@ -299,6 +314,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     G.profile_shift = r.optional(g, prefix, "x", 0.0, -1.0, 2.0, "[-1, 2]");
     G.face_width = r.number(g, prefix, "b", 1e-4, 10.0, "[1e-4, 10] m");
     (i == 0 ? h.shift1 : h.shift2) = G.profile_shift;
+    if (!(G.face_width - gap >= 1e-4)) fail_key(path, "double_helical.gap", "leaves less than 0.1 mm of face on " + prefix);
+    G.face_width -= gap;   // double helical: the two halves' width (the gap carries nothing)
     G = transverse_section(G, h.helix_angle);
     if (g.contains("lead")) read_lead(g["lead"], path, prefix + ".lead", i == 0 ? h.lead1 : h.lead2);
     *E[i] = r.number(g, prefix, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
@@ -440,6 +457,8 @@ std::string gear_file_help() {
          "                               is then its transverse section, the face in model.slices slices staggered\n"
          "                               by the base helix (overlap ratio b sin(beta) / (pi m_n) <= 20)\n"
          "  hand                         right (default) | left: gear 1's hand (recorded: the axial force's direction)\n"
+         "  double_helical.gap           two mirrored halves with a gap [m] between them, out of gears[i].b\n"
+         "                               (each half (b - gap) / 2; eps_beta per helix; needs helix_angle_deg > 0)\n"
          "  basic_rack.addendum          ha* (units of m, default 1)\n"
          "  basic_rack.dedendum          hf* (default 1.25, >= ha*)\n"
          "  basic_rack.root_radius       rho_f* (default 0.38; used for the undercut limit)\n"

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numeric>
 #include <stdexcept>
 
 #include "gearhb/gears/load_sharing.hpp"
@@ -32,10 +33,12 @@ GearGeometry transverse_section(const GearGeometry& normal, double helix_angle) 
 }
 
 double overlap_ratio(const PairSteModel& section, const HelicalPair& h) {
-  return section.contact_length() * std::tan(h.base_helix_angle()) / section.path().base_pitch;
+  const double helix = h.double_helical ? 0.5 * section.contact_length() : section.contact_length();
+  return helix * std::tan(h.base_helix_angle()) / section.path().base_pitch;
 }
 
 double axial_force(const PairSteModel& section, const HelicalPair& h, double torque) {
+  if (h.double_helical) return 0.0;
   return torque / section.gear1.base_radius() * std::tan(h.base_helix_angle());
 }
 
@@ -43,7 +46,8 @@ std::vector<double> slice_phase_leads(const PairSteModel& section, const Helical
   const int n = h.sliced() ? h.slices : 1;
   const double eps_beta = overlap_ratio(section, h);
   std::vector<double> lead(std::size_t(n), 0.0);
-  for (int j = 0; j < n; ++j) lead[std::size_t(j)] = (j + 0.5) / n * eps_beta;
+  for (int j = 0; j < n; ++j)
+    lead[std::size_t(j)] = h.double_helical ? std::fabs((j + 0.5) / n - 0.5) * 2.0 * eps_beta : (j + 0.5) / n * eps_beta;
   return lead;
 }
 
@@ -81,10 +85,14 @@ class SlicedLoadedPair final : public LoadedPair {
     slices_ = h.sliced() ? h.slices : 1;
     const double b = m.contact_length();
     leads_ = slice_phase_leads(m, h);
-    spread_ = overlap_ratio(m, h) * path_.base_pitch / slices_;
+    spread_ = b / slices_ * std::tan(h.base_helix_angle());   // one slice's contact line along the path
+    // Hertz of each contact: that of its (half's) line at its line load, scaled by S = line / slice.
+    line_ = h.double_helical ? 0.5 * b : b;
+    scale_ = h.double_helical ? 0.5 * slices_ : double(slices_);
     for (int j = 0; j < slices_; ++j) {
-      const double y = (j + 0.5) / slices_ * b;
-      lead_.push_back(lead_modification_at(h.lead1, y, b) + lead_modification_at(h.lead2, y, b));
+      double y = (j + 0.5) / slices_ * b;
+      if (h.double_helical && y > line_) y -= line_;   // across its own half
+      lead_.push_back(lead_modification_at(h.lead1, y, line_) + lead_modification_at(h.lead2, y, line_));
     }
     if (spread_ > 0.0) {
       for (int k = 0; k < samples; ++k)
@@ -106,7 +114,7 @@ class SlicedLoadedPair final : public LoadedPair {
   double force(double torque) const override { return model_.force(torque); }
 
   std::vector<PairStePoint> ste(double torque, bool reliefs) const override {
-    const double n = double(slices_), F = model_.force(torque);
+    const double n = double(slices_), F = model_.force(torque), line_share = line_ / model_.contact_length();
     std::vector<PairStePoint> out;
     out.reserve(std::size_t(samples_));
     std::vector<ContactPair> contacts;
@@ -120,13 +128,13 @@ class SlicedLoadedPair final : public LoadedPair {
           c.slice = j;
           c.tooth = seg.tooth;
           c.separation = reliefs ? c.separation + lead_[std::size_t(j)] : 0.0;
-          // The scaled problem: stiffness w k, force N F, Hertz of the whole line at the line load.
-          contacts.push_back({seg.weight * c.stiffness, c.separation, seg.weight});
+          // The scaled problem: stiffness w k (line / b), force S F, Hertz of the line at the line load.
+          contacts.push_back({seg.weight * c.stiffness * line_share, c.separation, seg.weight});
           c.stiffness *= seg.weight / n;
           p.mesh.pairs.push_back(c);
         }
-      const LoadShare share = share_load(contacts, n * F, model_.hertz, model_.pair_hertz, model_.contact_length());
-      for (std::size_t i = 0; i < contacts.size(); ++i) p.mesh.pairs[i].force = share.force[i] / n;
+      const LoadShare share = share_load(contacts, scale_ * F, model_.hertz, model_.pair_hertz, line_);
+      for (std::size_t i = 0; i < contacts.size(); ++i) p.mesh.pairs[i].force = share.force[i] / scale_;
       p.loaded = share.loaded;
       p.approach = share.approach;
       p.hertz = share.hertz;
@@ -138,16 +146,17 @@ class SlicedLoadedPair final : public LoadedPair {
 
   // The tooth pair whose mid-face contact is at s, alone: its slices on the path, unmodified.
   double single_pair_ste(double s, double torque) const override {
-    const double n = double(slices_);
+    const double mean = std::accumulate(leads_.begin(), leads_.end(), 0.0) / double(slices_);
+    const double line_share = line_ / model_.contact_length();
     std::vector<ContactPair> contacts;
     for (int j = 0; j < slices_; ++j) {
-      const auto [sm, w] = on_path(s + ((j + 0.5) / n - 0.5) * n * spread_, spread_, path_.AE);
+      const auto [sm, w] = on_path(s + (leads_[std::size_t(j)] - mean) * path_.base_pitch, spread_, path_.AE);
       if (w == 0.0) continue;
       const ContactRadii r = contact_radii(model_.gear1, model_.gear2, path_, sm);
-      contacts.push_back({w * stiffness_(r.r1, r.r2, false), 0.0, w});
+      contacts.push_back({w * stiffness_(r.r1, r.r2, false) * line_share, 0.0, w});
     }
     if (contacts.empty()) throw std::invalid_argument("single_pair_ste: no slice of the pair on the path of contact");
-    return share_load(contacts, n * model_.force(torque), model_.hertz, model_.pair_hertz, model_.contact_length()).ste;
+    return share_load(contacts, scale_ * model_.force(torque), model_.hertz, model_.pair_hertz, line_).ste;
   }
 
  private:
@@ -175,7 +184,9 @@ class SlicedLoadedPair final : public LoadedPair {
   HelicalPair helix_;
   PathOfContact path_;
   int samples_ = 0, slices_ = 1;
-  double spread_ = 0.0;               // one slice's contact line along the path: eps_beta pb / N [m]
+  double spread_ = 0.0;               // one slice's contact line along the path: (b / N) tan(beta_b) [m]
+  double line_ = 0.0;                 // the Hertz line: b, or a half b/2 (double helical) [m]
+  double scale_ = 1.0;                // line over slice width: N, or N/2 (double helical)
   PairStiffnessFn stiffness_;
   std::vector<std::vector<Segment>> sections_;   // sample k, slice j at k * slices_ + j
   std::vector<double> lead_;          // both gears' lead modification at each slice [m]
@@ -189,6 +200,8 @@ std::unique_ptr<LoadedPair> sliced_loaded_pair(const PairSteModel& section, cons
   if (h.slices < 1 || h.slices > 1000) throw std::invalid_argument("sliced_loaded_pair: slices outside [1, 1000]");
   if (section.positions_per_base_pitch > 0)
     throw std::invalid_argument("sliced_loaded_pair: the node reading (positions_per_base_pitch) has no slices");
+  if (h.double_helical && (h.helix_angle == 0.0 || h.slices % 2 != 0))
+    throw std::invalid_argument("sliced_loaded_pair: double helical needs a helix angle and an even slice count");
   if (h.sliced() && h.slices > 1 && section.hertz != HertzCount::none && section.pair_hertz != TwoPairHertz::consistent)
     throw std::invalid_argument("sliced_loaded_pair: Hertz over slices needs the consistent split (or none)");
   if (samples < 4 || samples > 1 << 16)

@@ -40,6 +40,13 @@
 // At beta = 0 without a lead modification the slices would be identical copies: the face is
 // then one slice, and the STE is the spur pair's bit for bit (tests/unit/test_pair_helical.cpp).
 //
+// Double helical: two mirrored halves of width b/2 each (b the contact width without the gap,
+// which carries nothing), their contact lines staggered from the apex outwards: slice j at
+// |y_j - b/2| tan(beta_b) / p_bt; the overlap ratio (ISO 6336: per helix) eps_beta =
+// (b/2) tan(beta_b) / p_bt; each half its own contact line for Hertz (delta(S F_i / w, b/2),
+// S = N/2) and its own lead modification (y across its own width); the axial forces cancel.
+// N must be even (N/2 slices a half).
+//
 // Lead modification of one gear (ISO 21771 vocabulary), y across the contact width [0, b]:
 //     crowning    C_beta (2 y / b - 1)^2                       (C_beta at both ends),
 //     end relief  C_I (L_I - d) / L_I for d = min(y, b - y) < L_I, else 0   (both ends, linear),
@@ -68,6 +75,7 @@ struct HelicalPair {
   int slices = 20;                  // N (default; convergence: README "Helical pairs")
   LeadModification lead1, lead2;    // gear 1, gear 2
   bool left_hand = false;           // gear 1's hand (gear 2 the other): recorded, the axial force's direction
+  bool double_helical = false;      // two mirrored halves (contact width b = both halves, the gap excluded)
 
   double base_helix_angle() const;  // beta_b [rad]
   // The face in slices: beta > 0 or a lead modification (else the spur pair, one slice).
@@ -78,9 +86,9 @@ struct HelicalPair {
 // addendum, dedendum, shift coefficient x, face width): formulas above.
 GearGeometry transverse_section(const GearGeometry& normal, double helix_angle);
 
-// eps_beta = b tan(beta_b) / p_bt of the section pair (b its contact width).
+// eps_beta = b tan(beta_b) / p_bt of the section pair (b its contact width; b/2 double helical).
 double overlap_ratio(const PairSteModel& section, const HelicalPair& h);
-// Axial force on each gear [N] for gear 1's torque T1: F_a = (T1 / r_b1) tan(beta_b).
+// Axial force on each gear [N] for gear 1's torque T1: F_a = (T1 / r_b1) tan(beta_b) (0 double helical).
 double axial_force(const PairSteModel& section, const HelicalPair& h, double torque);
 // The slices' phase lead over slice 0's section: y_j tan(beta_b) / p_bt [mesh cycles], j < N.
 std::vector<double> slice_phase_leads(const PairSteModel& section, const HelicalPair& h);
