@@ -218,6 +218,17 @@ GEAR_CAPTIONS_NO_RELIEF = {
                   "curve, rising with the load; a relief would bring a minimum at the load it suits.",
 }
 
+# The captions that differ for a helical file (helix_angle_deg > 0; figures/report.py gear_caption).
+GEAR_CAPTIONS_HELICAL = {
+    "ste.png": "Loaded static transmission error over one mesh cycle of the helical pair (the face in slices), "
+               "one curve per torque. Notice how small and smooth its fluctuation is beside a spur pair's: the "
+               "contact lines enter and leave the path gradually, across the face.",
+    "stiffness.png": "Mesh stiffness k = F / STE over the mesh cycle per torque, its mean dotted: nearly constant, "
+                     "the contact-line length on the path varying only with the fractional part of the overlap ratio.",
+    "shares.png": "Load share of each tooth pair, summed over the slices of the face, along the mesh cycle (exact "
+                  "contact problem over slices x pairs): a pair takes up and gives off its load gradually.",
+}
+
 GEAR_CAPTIONS = {
     "ste.png": "Loaded static transmission error over one mesh cycle, one curve per torque. Notice the "
                "steps where a pair enters or leaves the path, and how tip relief flattens them at its design load.",
@@ -225,6 +236,9 @@ GEAR_CAPTIONS = {
                      "two-pair step at eps_alpha - 1 of the cycle.",
     "shares.png": "Load share of each tooth pair along the mesh cycle (exact contact problem): where a pair "
                   "takes up and gives off its load.",
+    "load_map.png": "A helical (or lead-modified) face in slices: the line load of every slice contact over the "
+                    "roll angle of gear 1 (A to E) and across the face, at the largest torque. Notice the contact "
+                    "lines' stagger and where a lead modification unloads the ends of the face.",
     "spectrum.png": "STE amplitude per mesh order: what the mesh excites at each multiple of the mesh frequency.",
     "harris.png": "Harris map: STE peak-to-peak against torque with the file's relief and without it. The "
                   "minimum marks the load the relief suits.",

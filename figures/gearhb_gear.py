@@ -43,7 +43,10 @@ def title(ax, params, kn, what):
 
 
 def shade_loaded(ax, d, label=True):
-    """Grey bands where two or more pairs carry load (from the last torque's column)."""
+    """Grey bands where two or more pairs carry load (from the last torque's column); none for a
+    helical face in slices (several tooth pairs always share its load)."""
+    if "loaded_contacts" in d:
+        return
     ph, n = d["phase"], d["loaded_pairs"]
     step = ph[1] - ph[0] if len(ph) > 1 else 1.0
     first = True
@@ -99,19 +102,39 @@ def stiffness_figure(d_dir, params, kn, torques, ste):
 
 def shares_figure(d_dir, params, kn, torques, ste):
     fig, ax = plt.subplots(figsize=(6.8, 4.4))
-    styles = ["-", "--", ":"]
+    styles = ["-", "--", ":", "-."]
     for i, (T, d) in enumerate(zip(torques, ste)):
         pairs = sorted(k for k in d if k.startswith("share_pair_"))
         for j, col in enumerate(pairs):
-            ax.plot(d["phase"], d[col], styles[j % 3], color=torque_colour(T, torques),
+            ax.plot(d["phase"], d[col], styles[j % 4], color=torque_colour(T, torques),
                     label="T1 = %g N m, pair %d" % (T, j + 1))
-    ax.set_xlabel("mesh phase [mesh cycles] (pair 1 enters at A at phase 0; pair 2 is one base pitch ahead)")
+    if "loaded_contacts" in ste[0]:
+        ax.set_xlabel("mesh phase [mesh cycles] (helical: each tooth pair's share over the whole face)")
+    else:
+        ax.set_xlabel("mesh phase [mesh cycles] (pair 1 enters at A at phase 0; pair 2 is one base pitch ahead)")
     ax.set_ylabel("share of the tooth force F_i / F [-]")
     ax.set_xlim(0, 1)
     ax.set_ylim(-0.02, 1.02)
     title(ax, params, kn, "load sharing between the pairs in contact")
     ax.legend(fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14), ncol=3, frameon=False)
     save(fig, d_dir / "shares.png")
+
+
+def load_map_figure(d_dir, params, kn, torques):
+    """A helical face in slices: the line load over face width and roll angle at the largest torque."""
+    i = max(range(len(torques)), key=lambda j: torques[j])
+    m = read_csv(d_dir / ("load_map_%d.csv" % (i + 1)))
+    on = [j for j, q in enumerate(m["line_load_N_per_mm"]) if q > 0]
+    fig, ax = plt.subplots(figsize=(6.8, 4.4))
+    sc = ax.scatter([m["roll_angle_deg"][j] for j in on], [1e3 * m["y_m"][j] for j in on],
+                    c=[m["line_load_N_per_mm"][j] for j in on], s=6, marker="s", cmap="viridis", lw=0)
+    fig.colorbar(sc, ax=ax, label="line load [N/mm]")
+    ax.set_xlabel("roll angle of gear 1 at the contact [deg] (A to E)")
+    ax.set_ylabel("across the face y [mm]")
+    ax.set_ylim(0, 1e3 * max(g["b"] for g in params["gears"]))
+    title(ax, params, kn, "load over the face, T1 = %g N m (%d slices, eps_beta = %.3f)"
+          % (torques[i], kn["slices"], kn["overlap_ratio"]))
+    save(fig, d_dir / "load_map.png")
 
 
 def spectrum_figure(d_dir, params, kn, torques):
@@ -210,6 +233,8 @@ def main():
     stiffness_figure(d_dir, params, kn, torques, ste)
     shares_figure(d_dir, params, kn, torques, ste)
     spectrum_figure(d_dir, params, kn, torques)
+    if (d_dir / "load_map_1.csv").exists():
+        load_map_figure(d_dir, params, kn, torques)
     harris_figure(d_dir, params, kn, torques)
     if (d_dir / "root_stress_1.csv").exists():
         root_stress_figure(d_dir, params, kn, torques)

@@ -12,7 +12,9 @@ build/figures/gear_<example>_<figure>.png, and figures/gear_methods.py draws the
 potential-energy comparison from those folders (build/figures/gear_methods*.png),
 figures/tooth_model_chart.py the tooth models' error against cost
 (build/figures/gear_tooth_models.png, build/data/gearhb_gear/tooth_models/tooth_models.csv) and
-figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png);
+figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png),
+figures/helical_ste.py the STE peak-to-peak of a helical pair against its helix angle
+(build/figures/gear_helical_ste.png, build/data/gearhb_gear/helical_ste/helical_ste.csv);
 build/figures/index.html (figures/report.py)
 links them all. build/figures/timings.csv records each step's wall time of this run (the only
 timings the READMEs point to; `make bench` measures the library's).
@@ -94,6 +96,11 @@ def main():
         for png in tooth_model_chart.draw(gear, build / "data" / "gearhb_gear" / "tooth_models", fig_dir):
             print("[figures]   %s" % png, flush=True)
         timings.append(("tooth_model_chart", time.time() - t0))
+        # Helical pairs (figures/helical_ste.py): STE peak-to-peak against the helix angle at a
+        # fixed transverse section, beside the contact-line length of theory (about 25 s).
+        import helical_ste
+        for png in helical_ste.draw(gear, build / "data" / "gearhb_gear" / "helical_ste", fig_dir):
+            print("[figures]   %s" % png, flush=True)
         # One DOF against six (figures/gear_models.py) from the dynamics examples.
         import gear_models
         for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):

@@ -30,7 +30,7 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from captions import CHAPTERS, GEAR_CAPTIONS, GEAR_CAPTIONS_NO_RELIEF, NOT_COMPUTABLE  # noqa: E402
+from captions import CHAPTERS, GEAR_CAPTIONS, GEAR_CAPTIONS_HELICAL, GEAR_CAPTIONS_NO_RELIEF, NOT_COMPUTABLE  # noqa: E402
 
 STYLE = """body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}
 h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:2em}
@@ -291,6 +291,8 @@ def gear_caption(figure, params):
     caption = GEAR_CAPTIONS.get(figure, "")
     if not relieved:
         caption = GEAR_CAPTIONS_NO_RELIEF.get(figure, caption)
+    if (params.get("helix_angle_deg") or 0) > 0:
+        caption = GEAR_CAPTIONS_HELICAL.get(figure, caption)
     return caption
 
 

@@ -15,7 +15,9 @@
 // dynamic factor K_v over the range, beside the computed one). model.method chooses the
 // tooth model of the pair stiffness (loaded_pair.hpp): the beams (default), the
 // potential-energy method, or tooth contact by finite elements on the generated tooth
-// form (fe_tooth_contact.hpp), built once and reused for every torque.
+// form (fe_tooth_contact.hpp), built once and reused for every torque. A helical pair
+// (helix_angle_deg, or a lead modification) is its transverse section with the face in slices
+// (pair_helical.hpp; README "Helical pairs").
 //
 // With `speed` and `dynamics` in the file, the pair over its speed range
 // (mesh_dynamics.hpp; README "The pair over its speed range"): per torque, the mesh
@@ -29,7 +31,7 @@
 // Or the six-DOF model (bearings, mesh along the line of action), from the same file.
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
-// written), geometry, tooth_model, transmission_error, iso6336, harris_map, dynamics (response,
+// written), geometry, helix_key_numbers, tooth_model, transmission_error, iso6336, harris_map, dynamics (response,
 // response_tables, response_key_numbers, spectrum_and_history,
 // time_integration_check per torque), iso_dynamic_factor, draw.
 //
@@ -57,6 +59,7 @@
 #include "gearhb/gears/rating/iso6336_root.hpp"
 #include "gearhb/gears/pair/loaded_pair.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
+#include "gearhb/gears/pair/pair_helical.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
 #include "gearhb/gears/pair/ste_continuous.hpp"
@@ -101,6 +104,44 @@ Table ste_table(const std::vector<PairStePoint>& c, std::size_t pairs, double F)
   return t;
 }
 
+// ste_<i>.csv of a face in slices: phase, STE, F / STE, the share of each tooth pair (its
+// contacts over all slices; 0 when off the path), the tooth pairs and the slice contacts loaded.
+Table sliced_ste_table(const std::vector<PairStePoint>& c, double F) {
+  int lo = 0, hi = 0;
+  for (const auto& p : c)
+    for (const auto& k : p.mesh.pairs) lo = std::min(lo, k.tooth), hi = std::max(hi, k.tooth);
+  const std::size_t pairs = std::size_t(hi - lo + 1);
+  std::vector<std::string> columns{"phase", "ste_um", "k_N_per_m"};
+  for (std::size_t k = 0; k < pairs; ++k) columns.push_back("share_pair_" + std::to_string(k + 1));
+  columns.push_back("loaded_pairs");
+  columns.push_back("loaded_contacts");
+  Table t(columns);
+  for (const auto& p : c) {
+    std::vector<double> share(pairs, 0.0);
+    for (const auto& k : p.mesh.pairs) share[std::size_t(k.tooth - lo)] += k.force / F;
+    std::vector<Table::Cell> row(columns.size(), Table::Cell(0.0));
+    row[0] = p.mesh.phase;
+    row[1] = p.ste * 1e6;
+    row[2] = F / p.ste;
+    for (std::size_t k = 0; k < pairs; ++k) row[3 + k] = share[k];
+    row[3 + pairs] = long(std::count_if(share.begin(), share.end(), [](double v) { return v > 0.0; }));
+    row[4 + pairs] = long(p.loaded);
+    t.add_row(row);
+  }
+  return t;
+}
+
+// load_map_<i>.csv: the line load of every loaded slice contact over the mesh cycle.
+Table load_map_table(const std::vector<PairStePoint>& c, const PairSteModel& m, int slices) {
+  Table t({"phase", "slice", "y_m", "s_from_A_m", "roll_angle_deg", "line_load_N_per_mm"});
+  const double b = m.contact_length(), rb1 = m.gear1.base_radius(), T1A = m.path().T1A;
+  for (const auto& p : c)
+    for (const auto& k : p.mesh.pairs)
+      t.add_row({p.mesh.phase, long(k.slice), (k.slice + 0.5) / slices * b, k.s, (T1A + k.s) / rb1 * 180.0 / M_PI,
+                 k.force / (b / slices) * 1e-3});
+  return t;
+}
+
 // spectrum.csv: the amplitude per mesh order k (order 0: the mean), sqrt(a_k^2 + b_k^2).
 Table spectrum_table(const std::vector<std::string>& columns, const std::vector<Eigen::VectorXd>& spectra, int H) {
   Table s(columns);
@@ -128,6 +169,8 @@ class GearPairFromFile {
 
   void read_gear();
   void geometry(Run& run) const;
+  void helix_key_numbers(Run& run) const;
+  int slices() const { return file_.helical.sliced() ? file_.helical.slices : 1; }
   void tooth_model(Run& run);
   void transmission_error(Run& run) const;
   void root_stress_and_contact(Run& run) const;
@@ -166,6 +209,7 @@ GearPairFromFile::GearPairFromFile(Study& study) : study_(study) {
 void GearPairFromFile::run(Run& run) {
   run.write_text("params.json", file_.resolved.dump(2) + "\n");
   geometry(run);
+  helix_key_numbers(run);
   tooth_model(run);
   transmission_error(run);
   if (loaded_->fe_model()) root_stress_and_contact(run);
@@ -181,7 +225,8 @@ void GearPairFromFile::read_gear() {
 }
 
 
-// Step 2: the involute geometry of the pair; path_of_contact.csv, key numbers.
+// Step 2: the involute geometry of the pair (of a helical pair's transverse section);
+// path_of_contact.csv, key numbers.
 void GearPairFromFile::geometry(Run& run) const {
   const PairSteModel& m = file_.pair;
   const PathOfContact p = m.path();
@@ -193,6 +238,7 @@ void GearPairFromFile::geometry(Run& run) const {
   key.add("base_pitch_m", p.base_pitch, "m");
   const GearGeometry* g[2] = {&m.gear1, &m.gear2};
   int undercut = 0;
+  const double c = std::cos(file_.helical.helix_angle);   // a helical rack's coefficients in m_t: times cos(beta)
   for (int i = 0; i < 2; ++i) {
     const std::string n = std::to_string(i + 1);
     key.add("base_radius_" + n + "_m", g[i]->base_radius(), "m");
@@ -200,7 +246,7 @@ void GearPairFromFile::geometry(Run& run) const {
     key.add("root_radius_" + n + "_m", g[i]->root_radius(), "m");
     key.add("operating_pitch_radius_" + n + "_m", i == 0 ? p.mesh.pitch_radius1 : p.mesh.pitch_radius2, "m");
     key.add("tip_thickness_" + n + "_m", tooth_thickness(*g[i], g[i]->tip_radius()), "m");
-    const double z_min = undercut_limit_teeth(file_.dedendum_coefficient, file_.root_radius_coefficient,
+    const double z_min = undercut_limit_teeth(file_.dedendum_coefficient * c, file_.root_radius_coefficient * c,
                                               g[i]->profile_shift, g[i]->pressure_angle_deg);
     key.add("undercut_z_min_" + n, z_min, "-");
     if (g[i]->teeth < z_min) {
@@ -242,6 +288,24 @@ void GearPairFromFile::geometry(Run& run) const {
           std::to_string(p.mesh.pressure_angle * 180 / M_PI) + " deg, eps_alpha = " + std::to_string(p.contact_ratio));
 }
 
+// The helix (pair_helical.hpp; 0 and the spur values for a spur pair): transverse section,
+// overlap and total contact ratio, the slices.
+void GearPairFromFile::helix_key_numbers(Run& run) const {
+  const HelicalPair& h = file_.helical;
+  const PairSteModel& m = file_.pair;
+  KeyNumbers& key = run.key_numbers();
+  const double eps_beta = overlap_ratio(m, h);
+  key.add("helix_angle_deg", h.helix_angle * 180.0 / M_PI, "deg");
+  key.add("base_helix_angle_deg", h.base_helix_angle() * 180.0 / M_PI, "deg");
+  key.add("helix_left_hand", h.left_hand ? 1 : 0, "-");
+  key.add("double_helical", h.double_helical ? 1 : 0, "-");
+  key.add("transverse_module_m", m.gear1.module, "m");
+  key.add("transverse_pressure_angle_deg", m.gear1.pressure_angle_deg, "deg");
+  key.add("overlap_ratio", eps_beta, "-");
+  key.add("total_contact_ratio", m.path().contact_ratio + eps_beta, "-");
+  key.add("slices", slices(), "-");
+}
+
 // Step 3: the tooth model of model.method, built once (the FE: both gears meshed and
 // factored, the influence coefficients of every phase); for the FE its mesh and the
 // torsional compliance of each gear body between bore and teeth (inside its STE: a dynamic
@@ -259,7 +323,10 @@ void GearPairFromFile::tooth_model(Run& run) {
       if (file_.pe_coupling) coupling = pe_body_coupling(g1) + pe_body_coupling(g2);
       run.key_numbers().add("pe_coupling_m_per_N", coupling, "m/N");
     }
-    loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k, coupling); });
+    if (file_.helical.sliced())
+      loaded_ = run.timed("mesh_phases", [&] { return sliced_loaded_pair(m, file_.helical, file_.phases, k); });
+    else
+      loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k, coupling); });
   }
   const FePairModel* fe = loaded_->fe_model();
   if (!fe) return;
@@ -290,7 +357,8 @@ void GearPairFromFile::transmission_error(Run& run) const {
     const double T = file_.torques[i], F = loaded_->force(T);
     const std::string n = std::to_string(i + 1);
     const std::vector<PairStePoint> c = run.timed("ste_" + n, [&] { return loaded_->ste(T); });
-    run.write("ste_" + n + ".csv", ste_table(c, pairs, F));
+    run.write("ste_" + n + ".csv", slices() > 1 ? sliced_ste_table(c, F) : ste_table(c, pairs, F));
+    if (slices() > 1) run.write("load_map_" + n + ".csv", load_map_table(c, m, slices()));
     std::vector<double> ste;
     for (const auto& p : c) ste.push_back(p.ste);
     const double mean = std::accumulate(ste.begin(), ste.end(), 0.0) / double(ste.size());
@@ -300,14 +368,15 @@ void GearPairFromFile::transmission_error(Run& run) const {
     key.add("ste_ptp_um_" + n, peak_to_peak(ste) * 1e6, "um");
     key.add("ste_mean_um_" + n, mean * 1e6, "um");
     key.add("mesh_stiffness_mean_N_per_m_" + n, mean_stiffness(ste, F), "N/m");
-    key.add("loaded_contact_ratio_" + n, loaded_contact_ratio(c, path), "-");
+    key.add("loaded_contact_ratio_" + n, sliced_loaded_contact_ratio(c, path, slices()), "-");
+    key.add("axial_force_N_" + n, axial_force(m, file_.helical, T), "N");
     key.add("single_pair_deflection_um_" + n, loaded_->single_pair_ste(path.AC, T) * 1e6, "um");
     spectrum_columns.push_back("amplitude_um_" + n);
     spectra.push_back(periodic_fourier(ste, H));
     char line[160];
     std::snprintf(line, sizeof line, "T1 = %g N m: max STE %.4f um, peak-to-peak %.4f um, mean k %.2f MN/m, loaded contact ratio %.4f",
                   T, *std::max_element(ste.begin(), ste.end()) * 1e6, peak_to_peak(ste) * 1e6,
-                  mean_stiffness(ste, F) / 1e6, loaded_contact_ratio(c, path));
+                  mean_stiffness(ste, F) / 1e6, sliced_loaded_contact_ratio(c, path, slices()));
     run.say(line);
   }
   run.write("spectrum.csv", spectrum_table(spectrum_columns, spectra, H));
@@ -390,12 +459,12 @@ void GearPairFromFile::iso6336(Run& run) const {
   // F_t = 2000 T1 / d1 (ISO 6336-1, d1 the reference diameter), line load F_t / b [N/mm].
   const double line_load = T / m.gear1.pitch_radius() / (b * 1e3);
   const Iso6336Stiffness s =
-      iso6336_mesh_stiffness(m.gear1.teeth, m.gear2.teeth, m.gear1.profile_shift, m.gear2.profile_shift,
-                             m.gear1.pressure_angle_deg, file_.dedendum_coefficient, m.path().contact_ratio, b, line_load);
+      iso6336_mesh_stiffness(pair_iso6336_input(m, file_.helical, file_.dedendum_coefficient, line_load));
   KeyNumbers& key = run.key_numbers();
   key.add("iso6336_c_prime_th", s.c_th, "N/(mm um)");
   key.add("iso6336_c_prime", s.c_single, "N/(mm um)");
   key.add("iso6336_c_gamma_alpha", s.c_gamma_alpha, "N/(mm um)");
+  key.add("iso6336_c_gamma_beta", s.c_gamma_beta, "N/(mm um)");
   key.add("iso6336_c_gamma_alpha_N_per_m", s.c_gamma_alpha_total, "N/m");
   key.add("iso6336_line_load_N_per_mm", line_load, "N/mm");
 }
@@ -413,7 +482,7 @@ void GearPairFromFile::harris_map(Run& run) const {
     const double ptp = peak_to_peak(v);
     v.clear();
     for (const auto& p : loaded_->ste(T, false)) v.push_back(p.ste);
-    t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, loaded_contact_ratio(c, file_.pair.path())});
+    t.add_row({T, ptp * 1e6, peak_to_peak(v) * 1e6, sliced_loaded_contact_ratio(c, file_.pair.path(), slices())});
     if (ptp < best) best = ptp, at = T;
   }
   run.write("harris.csv", t);
@@ -485,7 +554,7 @@ void GearPairFromFile::iso_dynamic_factor(Run& run) const {
     PairIsoKv k;
     try {
       k = pair_iso6336_kv(file_.pair, file_.dedendum_coefficient, file_.torques[i], file_.gear[0].inertia,
-                          file_.gear[1].inertia, d.iso_quality_grade);
+                          file_.gear[1].inertia, d.iso_quality_grade, file_.helical);
     } catch (const std::domain_error& e) {
       run.say(std::string("no ISO 6336-1 K_v: ") + e.what());
       return;
@@ -696,14 +765,14 @@ void GearPairFromFile::draw(Run& run) const {
 
 int main(int argc, char** argv) {
   Study study("gearhb_gear",
-              "gearhb_gear: a spur gear pair from its drawing - geometry, loaded static transmission error,\n"
+              "gearhb_gear: a spur or helical gear pair from its drawing - geometry, loaded static transmission error,\n"
               "mesh stiffness k = F / STE over the mesh cycle, load shares, Harris map, ISO 6336-1 stiffness;\n"
               "with a speed range the response over speed (both flanks, Floquet, K_v) and ISO 6336-1's K_v.\n"
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
               "also frc_<i>.csv, bifurcations_<i>.csv, check_time_integration_<i>.csv, modes.csv,\n"
               "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
-              "fillet_stress_<i>.csv, contact_<i>.csv.\n\n" +
+              "fillet_stress_<i>.csv, contact_<i>.csv; a helical or lead-modified face also load_map_<i>.csv.\n\n" +
                   gear_file_help());
   GearPairFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -25,6 +25,19 @@ with numpy (dense FE) and scipy (brentq), to check the C++ implementation:
     consistent: brentq on X of sum F_i(X) = F, F_i from F_i/k_i + n_H delta(F_i) = X - g_i;
   * Palmgren delta = 3.84e-5 F^0.9 / L^0.8 [mm] (F in N, L in mm), n_H = 2 per tooth,
     1 per contact; tooth force T1 / r1 or T1 / rb1.
+A helical file (helix_angle_deg beta > 0, or a lead modification) is sliced (issue 35), written
+here from ISO 21771 without the library's formulas:
+  * the transverse gear: m_t = m_n / cos(beta), alpha_t = atan(tan(alpha_n) / cos(beta)),
+    ra = r + m_n (ha* + x), rf = r - m_n (hf* - x), s0 = m_t (pi/2 + 2 x tan(alpha_n));
+  * overlap ratio eps_beta = b sin(beta) / (pi m_n); N slices (model.slices, default 20), slice j
+    at y_j = (j + 1/2) b / N, read at phase phi + eps_beta y_j / b;
+  * a slice's contact line spans ds = eps_beta pb / N along the path, centred at (psi + q) pb;
+    its part on the path [0, AE] (fraction w) is the contact, read at that part's centre;
+  * each slice contact: w times the full-width beam stiffness / N, its gap the tip reliefs plus
+    both gears' lead modification at y_j (crowning C (2y/b - 1)^2, end relief C_I (L_I - d)/L_I);
+  * the load shared over all slices x pairs with each contact's Hertz that of the whole line at
+    the same line load: the sharing above with stiffness w k, force N F, line b, delta(f / w);
+  * single pair: the tooth pair whose mid-face contact is at C, its slices on the path alone.
 """
 import json
 import math
@@ -46,18 +59,21 @@ def inv_inverse(v):
 
 class Gear:
     def __init__(self, f, g):
-        self.m, self.al = f["module"], math.radians(f["pressure_angle_deg"])
+        self.mn, self.aln = f["module"], math.radians(f["pressure_angle_deg"])
+        beta = math.radians(f.get("helix_angle_deg", 0.0))
+        self.m = self.mn / math.cos(beta)
+        self.al = math.atan(math.tan(self.aln) / math.cos(beta)) if beta else self.aln
         rack = f.get("basic_rack", {})
-        self.ha, self.hf = rack.get("addendum", 1.0) * self.m, rack.get("dedendum", 1.25) * self.m
+        self.ha, self.hf = rack.get("addendum", 1.0) * self.mn, rack.get("dedendum", 1.25) * self.mn
         self.z, self.x, self.b, self.E = g["z"], g.get("x", 0.0), g["b"], g["E"]
         self.r = self.m * self.z / 2
         self.rb = self.r * math.cos(self.al)
-        self.ra = self.r + self.ha + self.x * self.m
-        self.rf = self.r - self.hf + self.x * self.m
+        self.ra = self.r + self.ha + self.x * self.mn
+        self.rf = self.r - self.hf + self.x * self.mn
 
     def thickness(self, r):
         r = max(r, self.rb)
-        s0 = self.m * (math.pi / 2 + 2 * self.x * math.tan(self.al))
+        s0 = self.m * (math.pi / 2 + 2 * self.x * math.tan(self.aln))   # ISO 21771: s_t = m_t (pi/2 + 2 x tan alpha_n)
         return r * s0 / self.r + 2 * r * (inv(self.al) - inv(math.acos(min(1.0, self.rb / r))))
 
 
@@ -118,7 +134,9 @@ def palmgren(F, L):
 
 
 def share(pairs, F, nh, split, L):
-    """pairs: [(k, g)] -> (ste, forces)."""
+    """pairs: [(k, g)] or [(k, g, w)] (w: the contact's fraction of the line) -> (ste, forces)."""
+    frac = [p[2] if len(p) > 2 else 1.0 for p in pairs]
+    pairs = [(p[0], p[1]) for p in pairs]
     order = sorted(range(len(pairs)), key=lambda i: pairs[i][1])
     if split != "consistent" or nh == 0:
         for m in range(1, len(pairs) + 1):
@@ -138,15 +156,26 @@ def share(pairs, F, nh, split, L):
         d = X - g
         if d <= 0:
             return 0.0
-        return brentq(lambda f: f / k + nh * palmgren(f, L) - d, 0.0, k * d, xtol=1e-300, rtol=1e-15)
+        return brentq(lambda f: f / k + nh * palmgren(f / frac[i], L) - d, 0.0, k * d, xtol=1e-300, rtol=1e-15)
 
     k0, g0 = pairs[order[0]]
     X = brentq(lambda X: sum(force(i, X) for i in range(len(pairs))) - F, g0,
-               g0 + 1.01 * (F / k0 + nh * palmgren(F, L)), xtol=1e-300, rtol=1e-15)
+               g0 + 1.01 * (F / k0 + nh * palmgren(F / frac[order[0]], L)), xtol=1e-300, rtol=1e-15)
     return X, [force(i, X) for i in range(len(pairs))]
 
 
-def evaluate(f, positions=0, n_phases=None):
+def lead(g, y, b):
+    """Both lead modifications of one gear at y across the face b."""
+    ld = g.get("lead", {})
+    c = ld.get("crowning", 0.0) * (2 * y / b - 1) ** 2
+    er = ld.get("end_relief", {})
+    d = min(y, b - y)
+    if er.get("amount", 0.0) > 0 and d < er["length"]:
+        c += er["amount"] * (er["length"] - d) / er["length"]
+    return c
+
+
+def evaluate(f, positions=0, n_phases=None, slices=None):
     g1, g2 = Gear(f, f["gears"][0]), Gear(f, f["gears"][1])
     model = f.get("model", {})
     a = f.get("centre_distance", 0.0)
@@ -175,6 +204,31 @@ def evaluate(f, positions=0, n_phases=None):
             return np.linalg.inv(G1 + D @ G2 @ D)[0, 0]
         return 1.0 / (G1[0, 0] + G2[0, 0])
 
+    helical = f.get("helix_angle_deg", 0.0) > 0 or any("lead" in g for g in f["gears"])
+    N = (slices or model.get("slices", 20)) if helical else 1
+    eps_beta = L * math.sin(math.radians(f.get("helix_angle_deg", 0.0))) / (math.pi * g1.mn)
+
+    ds = eps_beta * pb / N
+
+    def point(s, gap, w):
+        T1P = T1A + s
+        T2P = T1T2 - T1P
+        return (math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P), relief(rel1, g1, T1P) + relief(rel2, g2, T2P) + gap, w)
+
+    def points(phase, slice_gap):
+        if ds == 0:
+            pts, s = [], phase * pb
+            while s <= AE:
+                pts.append(point(s, slice_gap, 1.0))
+                s += pb
+            return pts
+        pts = []
+        for q in range(-2, int(AE / pb) + 3):
+            lo, hi = max(0.0, (phase + q) * pb - ds / 2), min(AE, (phase + q) * pb + ds / 2)
+            if hi - lo > 1e-9 * ds:
+                pts.append(point((lo + hi) / 2, slice_gap, min(1.0, (hi - lo) / ds)))
+        return pts
+
     phases = []
     if positions:
         for j in range(positions):
@@ -182,34 +236,41 @@ def evaluate(f, positions=0, n_phases=None):
             phases.append([(r1, r2, 0.0) for r1, r2 in pts])
     else:
         n = n_phases or model.get("phases", 64)
+        ys = [(j + 0.5) * L / N for j in range(N)]
+        gaps = [lead(f["gears"][0], y, L) + lead(f["gears"][1], y, L) for y in ys]
         for j in range(n):
-            pts, s = [], j / n * pb
-            while s <= AE:
-                T1P = T1A + s
-                T2P = T1T2 - T1P
-                pts.append((math.hypot(g1.rb, T1P), math.hypot(g2.rb, T2P),
-                            relief(rel1, g1, T1P) + relief(rel2, g2, T2P)))
-                s += pb
+            pts = []
+            for y, gap in zip(ys, gaps):
+                psi = (j / n + eps_beta * y / L) % 1.0
+                p = points(psi, gap)
+                pts += [(r1, r2, g, w, len(p) > 1) for r1, r2, g, w in p]
             phases.append(pts)
-    ks = [[(stiffness(r1, r2, len(p) > 1), g) for r1, r2, g in p] for p in phases]
+    ks = [[(q[3] * stiffness(q[0], q[1], q[4]), q[2], q[3]) if len(q) > 3 else (stiffness(q[0], q[1], len(p) > 1), q[2])
+           for q in p] for p in phases]
     out = {}
     for i, T in enumerate(f["torques"]):
         F = T / (g1.r if model.get("tooth_force", "pitch_radius") == "pitch_radius" else g1.rb)
         ste, loaded = [], []
         for pairs in ks:
-            e, forces = share(pairs, F, nh, split, L)
+            e, forces = share(pairs, N * F, nh, split, L)
             ste.append(e)
-            loaded.append(sum(1 for fi in forces if fi > 0))
+            loaded.append(sum(q[2] if len(q) > 2 else 1.0 for q, fi in zip(pairs, forces) if fi > 0))
         n = str(i + 1)
         out["ste_max_um_" + n] = max(ste) * 1e6
         out["ste_ptp_um_" + n] = (max(ste) - min(ste)) * 1e6
         out["ste_mean_um_" + n] = sum(ste) / len(ste) * 1e6
         out["mesh_stiffness_mean_N_per_m_" + n] = sum(F / e for e in ste) / len(ste)
-        out["loaded_contact_ratio_" + n] = sum(loaded) / len(loaded)
+        out["loaded_contact_ratio_" + n] = sum(loaded) / len(loaded) / N
         # one pair alone at the pitch point C (s = AC)
-        T1P = T1C
-        k1 = stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False)
-        out["single_pair_deflection_um_" + n] = share([(k1, 0.0)], F, nh, split, L)[0] * 1e6
+        alone = []
+        for j in range(N):
+            c = T1C - T1A + ((j + 0.5) / N - 0.5) * eps_beta * pb
+            lo, hi = (max(0.0, c - ds / 2), min(AE, c + ds / 2)) if ds else (c, c)
+            w = min(1.0, (hi - lo) / ds) if ds else float(0 <= c <= AE)
+            if w > (1e-9 if ds else 0):
+                T1P = T1A + (lo + hi) / 2
+                alone.append((w * stiffness(math.hypot(g1.rb, T1P), math.hypot(g2.rb, T1T2 - T1P), False), 0.0, w))
+        out["single_pair_deflection_um_" + n] = share(alone, N * F, nh, split, L)[0] * 1e6
     return out
 
 

@@ -57,7 +57,11 @@ def inv_inverse(v):
 
 
 def closed_forms(f):
-    m, al = f["module"], math.radians(f["pressure_angle_deg"])
+    mn, aln = f["module"], math.radians(f["pressure_angle_deg"])
+    beta = math.radians(f.get("helix_angle_deg", 0.0))
+    # ISO 21771 transverse quantities (helical; the spur values at beta = 0)
+    m = mn / math.cos(beta)
+    al = math.atan(math.tan(aln) / math.cos(beta)) if beta else aln
     rack = f.get("basic_rack", {})
     ha, hf, rho = rack.get("addendum", 1.0), rack.get("dedendum", 1.25), rack.get("root_radius", 0.38)
     g = f["gears"]
@@ -65,19 +69,23 @@ def closed_forms(f):
     x = [g[0].get("x", 0.0), g[1].get("x", 0.0)]
     r = [m * zi / 2 for zi in z]
     rb = [ri * math.cos(al) for ri in r]
-    ra = [r[i] + m * (ha + x[i]) for i in range(2)]
-    rf = [r[i] - m * (hf - x[i]) for i in range(2)]
+    ra = [r[i] + mn * (ha + x[i]) for i in range(2)]
+    rf = [r[i] - mn * (hf - x[i]) for i in range(2)]
     a = f.get("centre_distance", 0.0)
     if a > 0:
         aw = math.acos((rb[0] + rb[1]) / a)
     else:
-        aw = inv_inverse(inv(al) + 2 * math.tan(al) * (x[0] + x[1]) / (z[0] + z[1])) if x[0] + x[1] != 0 else al
+        aw = inv_inverse(inv(al) + 2 * math.tan(aln) * (x[0] + x[1]) / (z[0] + z[1])) if x[0] + x[1] != 0 else al
         a = (rb[0] + rb[1]) / math.cos(aw)
     ga = math.sqrt(ra[0] ** 2 - rb[0] ** 2) + math.sqrt(ra[1] ** 2 - rb[1] ** 2) - a * math.sin(aw)
     pb = math.pi * m * math.cos(al)
     eps = ga / pb
+    b = min(g[0]["b"], g[1]["b"])
+    eps_beta = b * math.sin(beta) / (math.pi * mn)
     out = {"centre_distance_m": a, "operating_pressure_angle_deg": math.degrees(aw), "contact_ratio": eps,
-           "path_of_contact_m": ga, "base_pitch_m": pb}
+           "path_of_contact_m": ga, "base_pitch_m": pb, "overlap_ratio": eps_beta, "total_contact_ratio": eps + eps_beta,
+           "transverse_module_m": m, "transverse_pressure_angle_deg": math.degrees(al),
+           "base_helix_angle_deg": math.degrees(math.asin(math.sin(beta) * math.cos(aln)))}
     zmin = []
     for i in range(2):
         n = str(i + 1)
@@ -85,21 +93,25 @@ def closed_forms(f):
         out["tip_radius_%s_m" % n] = ra[i]
         out["root_radius_%s_m" % n] = rf[i]
         out["operating_pitch_radius_%s_m" % n] = rb[i] / math.cos(aw)
-        s0 = m * (math.pi / 2 + 2 * x[i] * math.tan(al))
+        s0 = m * (math.pi / 2 + 2 * x[i] * math.tan(aln))   # ISO 21771: s_t = m_t (pi/2 + 2 x tan alpha_n)
         out["tip_thickness_%s_m" % n] = ra[i] * s0 / r[i] + 2 * ra[i] * (inv(al) - inv(math.acos(rb[i] / ra[i])))
-        zmin.append(2 * (hf - rho * (1 - math.sin(al)) - x[i]) / math.sin(al) ** 2)
+        # in the transverse section (coefficients in m_t: times cos(beta))
+        zmin.append(2 * math.cos(beta) * (hf - rho * (1 - math.sin(al)) - x[i]) / math.sin(al) ** 2)
         out["undercut_z_min_%s" % n] = zmin[i]
     out["undercut"] = 1.0 if any(z[i] < zmin[i] for i in range(2)) else 0.0
-    # ISO 6336-1 method B (spur)
-    q = (0.04723 + 0.15551 / z[0] + 0.25791 / z[1] - 0.00635 * x[0] - 0.11654 * x[0] / z[0] - 0.00193 * x[1]
-         - 0.24188 * x[1] / z[1] + 0.00529 * x[0] ** 2 + 0.00182 * x[1] ** 2)
-    b_mm = min(g[0]["b"], g[1]["b"]) * 1e3
+    # ISO 6336-1 method B: virtual numbers of teeth zn = z / (cos^2 beta_b cos beta), c' with cos(beta)
+    cb = math.cos(math.asin(math.sin(beta) * math.cos(aln)))
+    zn = [zi / (cb * cb * math.cos(beta)) for zi in z]
+    q = (0.04723 + 0.15551 / zn[0] + 0.25791 / zn[1] - 0.00635 * x[0] - 0.11654 * x[0] / zn[0] - 0.00193 * x[1]
+         - 0.24188 * x[1] / zn[1] + 0.00529 * x[0] ** 2 + 0.00182 * x[1] ** 2)
+    b_mm = b * 1e3
     line_load = max(f["torques"]) / r[0] / b_mm
     load = (line_load / 100) ** 0.25 if line_load < 100 else 1.0
     C_B = (1 + 0.5 * (1.2 - hf)) * (1 - 0.02 * (20 - f["pressure_angle_deg"]))
     out["iso6336_c_prime_th"] = 1 / q
-    out["iso6336_c_prime"] = (1 / q) * 0.8 * 1.0 * C_B * load
+    out["iso6336_c_prime"] = (1 / q) * 0.8 * 1.0 * C_B * math.cos(beta) * load
     out["iso6336_c_gamma_alpha"] = out["iso6336_c_prime"] * (0.75 * eps + 0.25)
+    out["iso6336_c_gamma_beta"] = 0.85 * out["iso6336_c_gamma_alpha"]
     if "speed" in f:
         out.update(iso_kv(f, z, x, r, rb, eps, hf, C_B, b_mm))
     return out

@@ -67,8 +67,10 @@ void check_potential_energy(GearFile& f, const std::string& path, const PathOfCo
     g.pressure_angle = G.pressure_angle_deg * M_PI / 180.0;
     g.profile_shift = G.profile_shift;
     g.addendum_coefficient = G.addendum / G.module;
-    g.dedendum_coefficient = f.dedendum_coefficient;
-    g.root_radius_coefficient = f.root_radius_coefficient;
+    // The section's coefficients (pair_helical.hpp: lengths in m_n, module m_t; exact at beta = 0).
+    const double c = std::cos(f.helical.helix_angle);
+    g.dedendum_coefficient = f.dedendum_coefficient * c;
+    g.root_radius_coefficient = f.root_radius_coefficient * c;
     g.face_width = G.face_width;
     g.youngs_modulus = E[i];
     g.poisson_ratio = f.gear[i].poisson_ratio;
@@ -179,12 +181,71 @@ void read_dynamics(GearFile& f, const json& j, const std::string& path) {
   }
 }
 
+// gears[i].lead: crowning [m], end_relief {amount [m], length [m]} (pair_helical.hpp).
+void read_lead(const json& lead, const std::string& path, const std::string& where, LeadModification& l) {
+  const Reader r{path};
+  if (!lead.is_object()) fail_key(path, where, "must be an object {crowning, end_relief}");
+  only_keys(lead, path, where, {"crowning", "end_relief"});
+  l.crowning = r.optional(lead, where, "crowning", 0.0, 0.0, 1e-3, "[0, 1e-3] m");
+  if (!lead.contains("end_relief")) return;
+  const std::string e = where + ".end_relief";
+  const json& er = lead["end_relief"];
+  if (!er.is_object()) fail_key(path, e, "must be an object {amount, length}");
+  only_keys(er, path, e, {"amount", "length"});
+  l.end_relief = r.number(er, e, "amount", 0.0, 1e-3, "[0, 1e-3] m");
+  l.end_relief_length = r.number(er, e, "length", 0.0, 10.0, "[0, 10] m");
+  if (l.end_relief > 0.0 && !(l.end_relief_length > 0.0)) fail_key(path, e + ".length", "must be > 0 with an amount");
+}
+
+// A helical pair or a lead modification (the face in slices): the keys that do not apply.
+void check_helical(GearFile& f, const json& model, const std::string& path) {
+  HelicalPair& h = f.helical;
+  h.slices = model.contains("slices") ? json_whole(model["slices"], path, "model.slices", 1, 200) : h.slices;
+  // The work of a sliced face grows with slices x phases x the STE solves (torques and twice the
+  // Harris points): bounded so that no file runs for minutes (at the bound about 15 s CPU, Ex. 01).
+  const double solves = double(f.torques.size() + 2 * std::size_t(f.harris_points));
+  if (h.sliced() && h.slices * f.phases > 200 * 64)
+    fail_key(path, "model.slices", "times model.phases (" + std::to_string(h.slices) + " x " + std::to_string(f.phases) +
+                                       ") exceeds 200 x 64: fewer slices or phases");
+  if (h.sliced() && double(h.slices) * f.phases * solves > 1.6e6)
+    fail_key(path, "model.slices", "x model.phases x (torques + 2 harris.points) = " +
+                                       std::to_string(long(double(h.slices) * f.phases * solves)) +
+                                       " exceeds 1.6e6 (a run of minutes): fewer slices, phases or Harris points");
+  const double b = f.pair.contact_length();
+  const LeadModification* lead[2] = {&h.lead1, &h.lead2};
+  for (int i = 0; i < 2; ++i)
+    if (lead[i]->end_relief > 0.0 && !(lead[i]->end_relief_length <= 0.5 * b))
+      fail_key(path, "gears." + std::to_string(i) + ".lead.end_relief.length",
+               "is longer than half the contact width b/2 = " + mm(0.5 * b) + " (a relief at each end of the face)");
+  // (double helical: each half's own ends, half of that)
+  for (int i = 0; i < 2; ++i)
+    if (h.double_helical && lead[i]->end_relief > 0.0 && !(lead[i]->end_relief_length <= 0.25 * b))
+      fail_key(path, "gears." + std::to_string(i) + ".lead.end_relief.length",
+               "is longer than half a helix, b/4 = " + mm(0.25 * b) + " (a relief at each end of each half)");
+  if (!h.sliced()) return;
+  const double eps_beta = overlap_ratio(f.pair, h);
+  if (!(eps_beta <= 20.0))
+    fail_key(path, "helix_angle_deg", "gives an overlap ratio eps_beta = b sin(beta) / (pi m_n) = " + std::to_string(eps_beta) +
+                                          " above 20 (the slices would not resolve the face)");
+  if (f.method == ToothModel::fe)
+    fail_key(path, "model.method", "fe takes no helix angle or lead modification (the FE section is plane): beam or potential_energy");
+  if (f.pair.positions_per_base_pitch > 0)
+    fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) takes no helix angle or lead modification");
+  if (f.pe_coupling) fail_key(path, "model.pe_coupling", "takes no helix angle or lead modification");
+  if (h.double_helical && h.slices % 2 != 0) fail_key(path, "model.slices", "must be even for double_helical (half of them a half)");
+  if (h.slices > 1 && f.pair.hertz != HertzCount::none && f.pair.pair_hertz != TwoPairHertz::consistent)
+    fail_key(path, "model.pair_hertz", "must be consistent over the slices of a helical face (or model.hertz none)");
+  if (h.helix_angle > 0.0 && f.dynamics.present && f.dynamics.dofs == MeshDofs::bearings)
+    fail_key(path, "dynamics.model", "six_dof takes no helix angle (no axial DOFs): one_dof");
+  }
+
 }  // namespace
 
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
-  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "basic_rack", "centre_distance", "backlash",
-                          "torques", "gears", "model", "harris", "speed", "dynamics", "bifurcation_diagram"});
+  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
+                          "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
+                          "bifurcation_diagram"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   const Reader r{path};
   GearFile f;
@@ -194,6 +255,21 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   // --- the pair -----------------------------------------------------------------
   const double m = r.number(j, "", "module", 1e-5, 1.0, "[1e-5, 1] m");
   const double alpha = r.number(j, "", "pressure_angle_deg", 10.0, 35.0, "[10, 35] deg");
+  // Helical (pair_helical.hpp): module and pressure angle are then the normal ones.
+  HelicalPair& h = f.helical;
+  h.helix_angle = r.optional(j, "", "helix_angle_deg", 0.0, 0.0, 45.0, "[0, 45] deg") * M_PI / 180.0;
+  h.left_hand = r.choice(j, "", "hand", {"right", "left"}, 0) == 1;
+  h.normal_module = m;
+  h.normal_pressure_angle_deg = alpha;
+  double gap = 0.0;   // double helical: the gap between the halves [m], out of both face widths
+  if (j.contains("double_helical")) {
+    const json& d = j["double_helical"];
+    if (!d.is_object()) fail_key(path, "double_helical", "must be an object {gap}");
+    only_keys(d, path, "double_helical", {"gap"});
+    if (!(h.helix_angle > 0.0)) fail_key(path, "double_helical", "needs helix_angle_deg > 0");
+    h.double_helical = true;
+    gap = r.number(d, "double_helical", "gap", 0.0, 10.0, "[0, 10] m");
+  }
   const json rack = j.value("basic_rack", json::object());
   only_keys(rack, path, "basic_rack", {"addendum", "dedendum", "root_radius"});
   const double ha = r.optional(rack, "basic_rack", "addendum", 1.0, 0.5, 2.0, "[0.5, 2] (units of m)");
@@ -227,7 +303,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     const std::string prefix = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
     only_keys(g, path, prefix, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief", "mass",
-                           "bearing_stiffness"});
+                           "bearing_stiffness", "lead"});
     GearGeometry& G = *geo[i];
     G.module = m;
     G.pressure_angle_deg = alpha;
@@ -237,6 +313,11 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     G.teeth = json_whole(g["z"], path, prefix + ".z", 5, 1000);
     G.profile_shift = r.optional(g, prefix, "x", 0.0, -1.0, 2.0, "[-1, 2]");
     G.face_width = r.number(g, prefix, "b", 1e-4, 10.0, "[1e-4, 10] m");
+    (i == 0 ? h.shift1 : h.shift2) = G.profile_shift;
+    if (!(G.face_width - gap >= 1e-4)) fail_key(path, "double_helical.gap", "leaves less than 0.1 mm of face on " + prefix);
+    G.face_width -= gap;   // double helical: the two halves' width (the gap carries nothing)
+    G = transverse_section(G, h.helix_angle);
+    if (g.contains("lead")) read_lead(g["lead"], path, prefix + ".lead", i == 0 ? h.lead1 : h.lead2);
     *E[i] = r.number(g, prefix, "E", 1e9, 1e13, "[1e9, 1e13] Pa");
     f.gear[i].poisson_ratio = r.optional(g, prefix, "nu", 0.3, 0.0, 0.4999, "[0, 0.5)");
     f.gear[i].inertia = r.optional(g, prefix, "inertia", 0.0, 0.0, 1e6, "[0, 1e6] kg m^2 (0: not given)");
@@ -284,7 +365,8 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   // --- the reading of the beam model ------------------------------------------------
   const json model = j.value("model", json::object());
   only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
-                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh", "pe_coupling"});
+                                   "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh", "pe_coupling",
+                                   "slices"});
   // Defaults (issue 33 §4, figures/tooth_model_chart.py): the method the tooth-model chart
   // recommends (fe: the fast models are 3-170 % off the converged FE in mean stiffness, 20-80 %
   // in STE peak-to-peak) and the physically consistent readings; the thesis files write the
@@ -343,6 +425,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
       fail_key(path, "gears.0.thickness_allowance", "gives a negative normal backlash (" + mm(f.backlash) +
                                                         ") at this centre distance: the teeth would interpenetrate");
   }
+  check_helical(f, model, path);
   if (f.method == ToothModel::potential_energy) check_potential_energy(f, path, p);
   if (f.method == ToothModel::fe) read_fe_model(f, model, path);
   const int ne = f.pair.elements();
@@ -368,8 +451,14 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
 std::string gear_file_help() {
   return "Gear-pair file keys (JSON; SI units; gear 1 drives):\n"
          "  name                         text shown in titles (1..120 characters)\n"
-         "  module                       m [m], in [1e-5, 1]\n"
-         "  pressure_angle_deg           alpha [deg], in [10, 35]\n"
+         "  module                       m [m], in [1e-5, 1] (a helical pair: the normal module m_n)\n"
+         "  pressure_angle_deg           alpha [deg], in [10, 35] (a helical pair: the normal alpha_n)\n"
+         "  helix_angle_deg              beta on the reference circle [deg], in [0, 45] (default 0: spur); the pair\n"
+         "                               is then its transverse section, the face in model.slices slices staggered\n"
+         "                               by the base helix (overlap ratio b sin(beta) / (pi m_n) <= 20)\n"
+         "  hand                         right (default) | left: gear 1's hand (recorded: the axial force's direction)\n"
+         "  double_helical.gap           two mirrored halves with a gap [m] between them, out of gears[i].b\n"
+         "                               (each half (b - gap) / 2; eps_beta per helix; needs helix_angle_deg > 0)\n"
          "  basic_rack.addendum          ha* (units of m, default 1)\n"
          "  basic_rack.dedendum          hf* (default 1.25, >= ha*)\n"
          "  basic_rack.root_radius       rho_f* (default 0.38; used for the undercut limit)\n"
@@ -392,6 +481,8 @@ std::string gear_file_help() {
          "  gears[i].tip_relief.start    exactly one of {roll_angle_deg: xi [deg]}, {diameter: d [m]},\n"
          "                               {length: L [m] along the path of contact, measured from the tip}\n"
          "  gears[i].tip_relief.shape    linear (default) | parabolic\n"
+         "  gears[i].lead.crowning       C_beta [m] at each end of the face, C_beta (2 y / b - 1)^2 (0..1e-3)\n"
+         "  gears[i].lead.end_relief     {amount: C_I [m], length: L_I [m] <= b / 2}: linear over L_I at each end\n"
          "  model.method                 fe (default) | beam (thesis ch. 7's beams) | potential_energy (bending, shear,\n"
          "                               compression of the involute tooth, Sainsot's fillet foundation clamped at\n"
          "                               gears[i].rim_radius, which it needs; linear Hertz inside the pair stiffness,\n"
@@ -412,6 +503,9 @@ std::string gear_file_help() {
          "                               coupling of the loaded pairs through the bodies' torsion (the annulus rim_radius..rf,\n"
          "                               potential_energy.hpp pe_body_coupling): the rigid part of the FE's coupling\n"
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
+         "  model.slices                 slices of the face of a helical or lead-modified pair (default 20, 1..200,\n"
+         "                               slices x model.phases <= 200 x 64, x (torques + 2 harris.points) <= 1.6e6;\n"
+         "                               beam or potential_energy, model.pair_hertz consistent or model.hertz none)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"
          "  model.tooth_elements         beam elements per tooth (0 = floor(8 eps_alpha): 14 for the thesis)\n"

@@ -1,12 +1,13 @@
 #pragma once
-// A gear-pair file: a spur gear pair from its drawing, in the terms of ISO 21771
+// A gear-pair file: a spur or helical gear pair from its drawing, in the terms of ISO 21771
 // (and of KISSsoft / MASTA), SI units, for gearhb_gear (README "A gear pair from
 // its drawing"). Gear 1 drives (its torque is given), gear 2 is driven.
 //
 //   {
 //     "name": "thesis gear pair",
-//     "module": 0.003,                         m [m]
-//     "pressure_angle_deg": 20,                alpha [deg]
+//     "module": 0.003,                         m [m] (helical: the normal module m_n)
+//     "pressure_angle_deg": 20,                alpha [deg] (helical: the normal alpha_n)
+//     "helix_angle_deg": 0, "hand": "right",   beta [deg] (0: spur), gear 1's hand (pair_helical.hpp)
 //     "basic_rack": {"addendum": 1.0, "dedendum": 1.25, "root_radius": 0.38},
 //                                              ha*, hf*, rho_f* (units of m)
 //     "centre_distance": 0.15,                 a [m]; absent or 0: the one the shifts imply
@@ -22,6 +23,7 @@
 //                                              Ca [m]; start as one of "roll_angle_deg",
 //                                              "diameter" [m], "length" [m] along the path
 //                                              from the tip; shape linear | parabolic
+//        "lead": {"crowning": 0, "end_relief": {"amount": 0, "length": 0}}   lead modification [m]
 //       }, {...} ],
 //     "model": {...},                          method beam | potential_energy | fe, the reading
 //                                              of the beam model, the FE mesh (gear_file_help)
@@ -50,6 +52,7 @@
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
 #include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/pair/pair_helical.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 namespace gearhb {
@@ -91,7 +94,8 @@ struct GearFile {
   PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
   bool pe_coupling = false;        // model.pe_coupling body_torsion: the bodies' structural coupling
   FePairOptions fe;                // the FE models of both gears (method fe: model.fe_mesh, rim_radius)
-  PairSteModel pair;               // geometry, materials, reliefs, the model's reading
+  PairSteModel pair;               // geometry (the transverse section of a helical pair), materials, reliefs, reading
+  HelicalPair helical;             // helix angle, normal module and shifts, slices, lead modifications
   GearFileGear gear[2];
   double dedendum_coefficient = 1.25, root_radius_coefficient = 0.38;   // hf*, rho_f*
   double backlash = 0.0;           // j_n [m], given or from the thickness allowances

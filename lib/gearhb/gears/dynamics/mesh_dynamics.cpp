@@ -27,22 +27,39 @@ double back_flank_phase(const PairSteModel& m) {
   return 2.0 * M_PI * (phi - std::floor(phi));
 }
 
-PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade) {
+Iso6336Input pair_iso6336_input(const PairSteModel& m, const HelicalPair& h, double hfP_over_mn, double line_load_N_per_mm) {
+  const bool helical = h.helix_angle > 0.0;
+  Iso6336Input in;
+  in.z1 = m.gear1.teeth;
+  in.z2 = m.gear2.teeth;
+  in.x1 = helical ? h.shift1 : m.gear1.profile_shift;
+  in.x2 = helical ? h.shift2 : m.gear2.profile_shift;
+  in.normal_pressure_angle_deg = helical ? h.normal_pressure_angle_deg : m.gear1.pressure_angle_deg;
+  in.helix_angle_deg = h.helix_angle * 180.0 / M_PI;
+  in.hfP_over_mn = hfP_over_mn;
+  in.eps_alpha = m.path().contact_ratio;
+  in.face_width_m = m.contact_length();
+  in.line_load_N_per_mm = line_load_N_per_mm;
+  return in;
+}
+
+PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade,
+                          const HelicalPair& h) {
   const GearGeometry* g[2] = {&m.gear1, &m.gear2};
+  const bool helical = h.helix_angle > 0.0;
   PairIsoKv k;
   for (const GearGeometry* gi : g) {
-    const Iso1328Tolerances t = iso1328_tolerances(grade, gi->module * 1e3, 2.0 * gi->pitch_radius() * 1e3);
+    const double m_n = helical ? h.normal_module : gi->module;
+    const Iso1328Tolerances t = iso1328_tolerances(grade, m_n * 1e3, 2.0 * gi->pitch_radius() * 1e3);
     k.f_pb = std::max(k.f_pb, t.f_pt * std::cos(gi->pressure_angle_rad()));
     k.f_f_alpha = std::max(k.f_f_alpha, t.f_f_alpha);
   }
-  const double eps_alpha = m.path().contact_ratio, b_mm = m.contact_length() * 1e3;
+  const double b_mm = m.contact_length() * 1e3;
   Iso6336KvInput& in = k.input;
   in.z1 = m.gear1.teeth;
-  in.eps_gamma = eps_alpha;
+  in.eps_gamma = m.path().contact_ratio + (helical ? overlap_ratio(m, h) : 0.0);
   in.line_load = torque / m.gear1.pitch_radius() / b_mm;
-  const Iso6336Stiffness s = iso6336_mesh_stiffness(m.gear1.teeth, m.gear2.teeth, m.gear1.profile_shift,
-                                                    m.gear2.profile_shift, m.gear1.pressure_angle_deg, hfP_over_m,
-                                                    eps_alpha, m.contact_length(), in.line_load);
+  const Iso6336Stiffness s = iso6336_mesh_stiffness(pair_iso6336_input(m, h, hfP_over_m, in.line_load));
   in.c_prime = s.c_single;
   in.c_gamma_alpha = s.c_gamma_alpha;
   in.m_red = equivalent_mass(I1, I2, m.gear1.base_radius(), m.gear2.base_radius()) / b_mm;

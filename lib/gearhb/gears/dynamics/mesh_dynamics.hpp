@@ -54,6 +54,7 @@
 #include "gearhb/gears/geometry/gear_geometry.hpp"
 #include "gearhb/gears/rating/iso6336.hpp"
 #include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/pair/pair_helical.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
@@ -87,7 +88,17 @@ struct PairIsoKv {
   double f_pb = 0, f_f_alpha = 0;    // the pair's (larger) deviations before running-in [um]
   bool relief_from_running_in = false;   // C_a = C_ay (the gears carry no tip relief)
 };
-PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade);
+// A helical pair (h.helix_angle > 0; m its transverse section): the normal module and
+// pressure angle of h, the section's reference diameter, f_pb = f_pt cos(alpha_t) and
+// eps_gamma = eps_alpha + eps_beta (pair_helical.hpp).
+PairIsoKv pair_iso6336_kv(const PairSteModel& m, double hfP_over_m, double torque, double I1, double I2, int grade,
+                          const HelicalPair& h = HelicalPair());
+
+// ISO 6336-1 method B's input for the pair m (spur, or the transverse section of the helical
+// pair h): z, x, alpha_n and beta (the section's own for a spur pair; h's normal shifts and
+// angle for a helical one), the section's transverse eps_alpha, its contact width, the line
+// load F_t / b [N/mm] given, hfP / m_n the basic rack's dedendum coefficient.
+Iso6336Input pair_iso6336_input(const PairSteModel& m, const HelicalPair& h, double hfP_over_mn, double line_load_N_per_mm);
 
 // The model of the mesh: torsional only, or the six DOFs with bearings.
 enum class MeshDofs { one_dof, bearings };

@@ -17,8 +17,9 @@ LoadShare share_load(const std::vector<ContactPair>& pairs, double F, HertzCount
   if (n < 1) throw std::invalid_argument("share_load: no pair in contact");
   if (!(F > 0.0) || !std::isfinite(F)) throw std::invalid_argument("share_load: the tooth force must be > 0");
   for (const auto& p : pairs)
-    if (!(p.stiffness > 0.0) || !(p.separation >= 0.0) || !std::isfinite(p.stiffness) || !std::isfinite(p.separation))
-      throw std::invalid_argument("share_load: pair stiffness must be > 0 and separation >= 0");
+    if (!(p.stiffness > 0.0) || !(p.separation >= 0.0) || !std::isfinite(p.stiffness) || !std::isfinite(p.separation) ||
+        !(p.line_fraction > 0.0 && p.line_fraction <= 1.0))
+      throw std::invalid_argument("share_load: pair stiffness must be > 0, separation >= 0, line fraction in (0, 1]");
   const double nh = double(int(hertz_count));
   LoadShare r;
   r.force.assign(n, 0.0);
@@ -62,8 +63,8 @@ LoadShare share_load(const std::vector<ContactPair>& pairs, double F, HertzCount
   auto pair_force = [&](int i, double X) {
     const double d = X - pairs[i].separation;
     if (!(d > 0.0)) return 0.0;
-    const double k = pairs[i].stiffness;
-    return brent_root([&](double f) { return f / k + nh * palmgren_line_contact_approach(f, contact_length) - d; },
+    const double k = pairs[i].stiffness, w = pairs[i].line_fraction;
+    return brent_root([&](double f) { return f / k + nh * palmgren_line_contact_approach(f / w, contact_length) - d; },
                       0.0, k * d, 1e-14, "share_load: the force of one pair");
   };
   auto total = [&](double X) {
@@ -76,8 +77,8 @@ LoadShare share_load(const std::vector<ContactPair>& pairs, double F, HertzCount
   // leave the bracket's upper end a hair below F).
   const ContactPair& first = pairs[order[0]];
   const double lo = first.separation;
-  const double hi =
-      first.separation + 1.01 * (F / first.stiffness + nh * palmgren_line_contact_approach(F, contact_length));
+  const double hi = first.separation + 1.01 * (F / first.stiffness +
+                                               nh * palmgren_line_contact_approach(F / first.line_fraction, contact_length));
   const double X = brent_root(total, lo, hi, 1e-14, "share_load: the approach of the gear bodies");
   for (int i = 0; i < n; ++i) {
     r.force[i] = pair_force(i, X);
@@ -85,7 +86,7 @@ LoadShare share_load(const std::vector<ContactPair>& pairs, double F, HertzCount
   }
   // Hertz part: that of the most loaded pair (its approach is X = g + F/k + n_H delta).
   const int most = int(std::max_element(r.force.begin(), r.force.end()) - r.force.begin());
-  r.hertz = nh * palmgren_line_contact_approach(r.force[most], contact_length);
+  r.hertz = nh * palmgren_line_contact_approach(r.force[most] / pairs[std::size_t(most)].line_fraction, contact_length);
   r.approach = X;
   r.ste = X;
   return r;

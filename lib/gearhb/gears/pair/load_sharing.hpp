@@ -37,6 +37,11 @@ namespace gearhb {
 struct ContactPair {
   double stiffness = 0.0;    // k_i [N/m] > 0
   double separation = 0.0;   // g_i [m] >= 0
+  // The part of the contact line (length contact_length) this contact stands for, in (0, 1]:
+  // its Hertz approach is the whole line's at the same line load, delta(F_i / line_fraction)
+  // (a helical face's slice that is partly on the path, pair_helical.hpp). Used by the
+  // consistent split; 1 for a spur pair.
+  double line_fraction = 1.0;
 };
 
 struct LoadShare {

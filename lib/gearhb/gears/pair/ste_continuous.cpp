@@ -1,6 +1,7 @@
 #include "gearhb/gears/pair/ste_continuous.hpp"
 
 #include <algorithm>
+#include <memory>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -190,6 +191,34 @@ double PairSteModel::force(double torque) const {
 
 double PairSteModel::contact_length() const { return std::min(gear1.face_width, gear2.face_width); }
 
+namespace {
+
+// A contact point from the radii on both gears; separation from both reliefs.
+PairContact contact_point(const PairSteModel& m, const PathOfContact& path, double r1, double r2) {
+  const double rb1 = m.gear1.base_radius();
+  PairContact c;
+  c.r1 = r1;
+  c.r2 = r2;
+  const double T1P = std::sqrt(std::max(0.0, r1 * r1 - rb1 * rb1));
+  c.s = T1P - path.T1A;
+  c.separation = tip_relief_at(m.relief1, T1P) + tip_relief_at(m.relief2, path.T1T2 - T1P);
+  return c;
+}
+
+// The beams' pair stiffness of the model's reading (each cantilever factorised once).
+PairStiffnessFn beam_pair_stiffness(const PairSteModel& m, const ToothBeam& t1, const ToothBeam& t2) {
+  const auto c1 = std::make_shared<const ToothCompliance>(t1), c2 = std::make_shared<const ToothCompliance>(t2);
+  const double rf1 = m.gear1.root_radius(), rf2 = m.gear2.root_radius();
+  const PairStiffness reading = m.pair_stiffness;
+  return [c1, c2, rf1, rf2, reading](double r1, double r2, bool sharing) {
+    const Eigen::Matrix2d G1 = c1->at(r1 - rf1), G2 = c2->at(r2 - rf2);
+    if (sharing && reading == PairStiffness::fused) return fused_pair_stiffness(G1, G2);
+    return cantilever_pair_stiffness(G1, G2);
+  };
+}
+
+}  // namespace
+
 std::vector<MeshPhase> mesh_phases(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness) {
   const int ne = m.elements();
   return mesh_phases(m, tooth_beam(m.gear1, m.youngs_modulus1, ne, m.thickness_at),
@@ -200,27 +229,11 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, c
                                    const PairStiffnessFn& stiffness) {
   const PathOfContact path = m.path();
   const double rf1 = m.gear1.root_radius(), rf2 = m.gear2.root_radius();
-  const double rb1 = m.gear1.base_radius(), pb = path.base_pitch;
-  const ToothCompliance c1(t1), c2(t2);   // each cantilever factorised once
-  const PairStiffnessFn beams = [&](double r1, double r2, bool sharing) {
-    const Eigen::Matrix2d G1 = c1.at(r1 - rf1), G2 = c2.at(r2 - rf2);
-    if (sharing && m.pair_stiffness == PairStiffness::fused) return fused_pair_stiffness(G1, G2);
-    return cantilever_pair_stiffness(G1, G2);
-  };
-  const PairStiffnessFn& k = stiffness ? stiffness : beams;
-  // A contact point from the radii on both gears; separation from both reliefs.
-  auto contact = [&](double r1, double r2) {
-    PairContact c;
-    c.r1 = r1;
-    c.r2 = r2;
-    const double T1P = std::sqrt(std::max(0.0, r1 * r1 - rb1 * rb1));
-    c.s = T1P - path.T1A;
-    c.separation = tip_relief_at(m.relief1, T1P) + tip_relief_at(m.relief2, path.T1T2 - T1P);
-    return c;
-  };
+  auto contact = [&](double r1, double r2) { return contact_point(m, path, r1, r2); };
   std::vector<MeshPhase> out;
   const int P = m.positions_per_base_pitch;
   if (P > 0) {
+    const PairStiffnessFn k = stiffness ? stiffness : beam_pair_stiffness(m, t1, t2);
     // ch. 7's node reading (ste.hpp mesh_positions).
     if (m.gear1.teeth != m.gear2.teeth || m.gear1.profile_shift != m.gear2.profile_shift || m.relief1.amount > 0 ||
         m.relief2.amount > 0 || t1.x != t2.x || t1.EI != t2.EI)
@@ -242,12 +255,45 @@ std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& t1, c
   }
   if (samples < 4 || samples > 1 << 16)
     throw std::invalid_argument("mesh_phases: samples per mesh cycle must be in [4, 65536]");
-  for (int j = 0; j < samples; ++j) {
+  std::vector<double> phases(std::size_t(samples), 0.0);
+  for (int j = 0; j < samples; ++j) phases[std::size_t(j)] = double(j) / samples;
+  return mesh_phases_at(m, t1, t2, phases, stiffness);
+}
+
+PairContact pair_contact_at(const PairSteModel& m, const PathOfContact& path, double s) {
+  const ContactRadii r = contact_radii(m.gear1, m.gear2, path, s);
+  PairContact c = contact_point(m, path, r.r1, r.r2);
+  c.s = s;
+  return c;
+}
+
+PairStiffnessFn beam_pair_stiffness(const PairSteModel& m) {
+  const int ne = m.elements();
+  return beam_pair_stiffness(m, tooth_beam(m.gear1, m.youngs_modulus1, ne, m.thickness_at),
+                             tooth_beam(m.gear2, m.youngs_modulus2, ne, m.thickness_at));
+}
+
+std::vector<MeshPhase> mesh_phases_at(const PairSteModel& m, const std::vector<double>& phases,
+                                      const PairStiffnessFn& stiffness) {
+  const int ne = m.elements();
+  return mesh_phases_at(m, tooth_beam(m.gear1, m.youngs_modulus1, ne, m.thickness_at),
+                        tooth_beam(m.gear2, m.youngs_modulus2, ne, m.thickness_at), phases, stiffness);
+}
+
+std::vector<MeshPhase> mesh_phases_at(const PairSteModel& m, const ToothBeam& t1, const ToothBeam& t2,
+                                      const std::vector<double>& phases, const PairStiffnessFn& stiffness) {
+  const PathOfContact path = m.path();
+  const double pb = path.base_pitch;
+  const PairStiffnessFn k = stiffness ? stiffness : beam_pair_stiffness(m, t1, t2);
+  std::vector<MeshPhase> out;
+  out.reserve(phases.size());
+  for (double phase : phases) {
+    if (!(phase >= 0.0 && phase < 1.0)) throw std::invalid_argument("mesh_phases_at: a phase outside [0, 1)");
     MeshPhase ph;
-    ph.phase = double(j) / samples;
+    ph.phase = phase;
     for (double s = ph.phase * pb; s <= path.AE; s += pb) {
       const ContactRadii r = contact_radii(m.gear1, m.gear2, path, s);
-      PairContact c = contact(r.r1, r.r2);
+      PairContact c = contact_point(m, path, r.r1, r.r2);
       c.s = s;
       ph.pairs.push_back(c);
     }

@@ -153,6 +153,8 @@ struct PairContact {
   double separation = 0.0;     // both tip reliefs at this point [m]
   double stiffness = 0.0;      // elastic pair stiffness [N/m]
   double force = 0.0;          // [N] (0 = open; set by pair_ste)
+  int slice = 0;               // a helical pair's face-width slice (pair_helical.hpp); 0 for a spur pair
+  int tooth = 0;               // a helical pair's tooth pair (0: entering at A in slice 0 at phase 0)
 };
 struct MeshPhase {
   double phase = 0.0;          // in [0, 1)
@@ -162,6 +164,21 @@ struct MeshPhase {
 std::vector<MeshPhase> mesh_phases(const PairSteModel& m, int samples, const PairStiffnessFn& stiffness = {});
 std::vector<MeshPhase> mesh_phases(const PairSteModel& m, const ToothBeam& tooth1, const ToothBeam& tooth2,
                                    int samples, const PairStiffnessFn& stiffness = {});
+
+// The same contacts at any phases in [0, 1) (a helical pair's slices, pair_helical.hpp):
+// mesh_phases(m, samples) is mesh_phases_at(m, {j / samples}) (std::invalid_argument for a
+// phase outside [0, 1)).
+std::vector<MeshPhase> mesh_phases_at(const PairSteModel& m, const std::vector<double>& phases,
+                                      const PairStiffnessFn& stiffness = {});
+// The contact point at s from A (0 <= s <= AE): its radii on both gears and both tip reliefs
+// (no stiffness, no force).
+PairContact pair_contact_at(const PairSteModel& m, const PathOfContact& path, double s);
+
+// The beams' pair stiffness of m's reading (pair_stiffness), each cantilever factorised once.
+PairStiffnessFn beam_pair_stiffness(const PairSteModel& m);
+
+std::vector<MeshPhase> mesh_phases_at(const PairSteModel& m, const ToothBeam& tooth1, const ToothBeam& tooth2,
+                                      const std::vector<double>& phases, const PairStiffnessFn& stiffness = {});
 
 struct PairStePoint {
   MeshPhase mesh;              // with each pair's force
