@@ -15,8 +15,8 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, contact_rug, legend_styles, plot_branch,  # noqa: E402
-                   read_csv, rug_room, save)
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
+                   legend_styles, plot_branch, read_csv, rows_of, rug_room, save)
 from poincare import draw_hb_section, draw_poincare  # noqa: E402
 
 
@@ -61,23 +61,12 @@ def diagram_figure(d_dir, model, p, h):
     save(fig, d_dir / "bifurcation_diagram.png")
 
 
-def rows_of(d, branch):
-    """The rows of branch id `branch` (all rows of a table without the column)."""
-    if "branch" not in d:
-        return d if branch == 0 else {k: [] for k in d}
-    keep = [i for i, b in enumerate(d["branch"]) if int(b) == branch]
-    return {k: [v[i] for i in keep] for k, v in d.items()}
-
-
-PERIOD2_COLOURS = ["C2", "C4", "C5", "C6", "C8", "C9", "C1"]   # not red: the diagram draws chaos red
-
-
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     model = json.load(open(d_dir / "params.json"))
     full = read_csv(d_dir / "frc.csv")
     d = rows_of(full, 0)
-    ids = sorted({int(b) for b in full.get("branch", [])} - {0})
+    ids = branch_ids(full)
     diagram = d_dir / "bifurcation_diagram.csv"
     p = h = None
     if diagram.exists() and (d_dir / "bifurcation_diagram_hb.csv").exists():

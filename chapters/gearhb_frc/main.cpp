@@ -154,16 +154,12 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   std::vector<PeriodDoubledBranch> pd;
   if (model_.period_doubling_depth >= 1)
     pd = run.timed("period-2 branches", [&] { return period_doubled_branches(hb, c, o); });
-  std::vector<int> starts(c.bifurcations.size(), -1);
-  for (std::size_t k = 0; k < pd.size(); ++k) {
-    run.say(model_.name + ": " + pd[k].why);
-    if (!pd[k].curve.branch.points.empty()) starts[pd[k].from] = int(k) + 1;
-  }
+  for (const auto& b : pd) run.say(model_.name + ": " + b.why);
   Table frc = dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name));
-  Table bif = bifurcation_table(c, {}, starts);
+  Table bif = bifurcation_table(c, {}, branch_starts(c, pd));
   int period2_points = 0;
   for (std::size_t k = 0; k < pd.size(); ++k) {
-    if (pd[k].curve.branch.points.empty() || pd[k].curve.stable.size() != pd[k].curve.branch.points.size()) continue;
+    if (!has_points(pd[k])) continue;
     const BranchLabel label{2, int(k) + 1};
     frc.append(dof_response_table(*pd[k].model, pd[k].curve, model_.output, {}, label));
     bif.append(bifurcation_table(pd[k].curve, label));

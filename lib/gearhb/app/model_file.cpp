@@ -169,10 +169,7 @@ void read_settings(const json& j, const std::string& path, int n, ModelFile& m) 
     m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
     if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
   }
-  const json pd = j.value("period_doubling", json::object());
-  only_keys(pd, path, "period_doubling", {"depth"});
-  if (pd.contains("depth"))
-    m.period_doubling_depth = whole(pd["depth"], path, "period_doubling.depth", 0, 1);
+  m.period_doubling_depth = read_period_doubling_depth(j, path);
 }
 
 }  // namespace
@@ -225,11 +222,8 @@ std::string model_file_help() {
          "  omega.from, omega.to  frequency range [rad/s], swept from 'from' to 'to'\n"
          "  output.direction      n numbers: the plotted coordinate q'x\n"
          "  solver.exact_contact  flag (true | false, or 1 | 0): exact projection of the contact law (default), else sampled AFT\n"
-         "  solver.ds_max         largest arc-length step (default 0.02)\n"
-         "  period_doubling.depth 0: none; 1 (default): a period-2 branch by harmonic balance (base frequency\n"
-         "                        omega/2, 2H harmonics) from each located period doubling of the curve\n"
-         "                        (period-4 branches, depth 2, not yet)\n" +
-         bifurcation_diagram_help() +
+         "  solver.ds_max         largest arc-length step (default 0.02)\n" +
+         period_doubling_help() + bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"
          "  unknowns: densely when the contacts touch every DOF (1 DOF: about 0.15 s a point at H = 255,\n"

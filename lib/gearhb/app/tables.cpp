@@ -107,14 +107,15 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label,
-                               const RowProgress& progress) {
+                               const RowProgress& progress, const BranchLabel& label) {
   ResponseEvaluator ev(hb, q);
   std::vector<std::string> columns = common_columns();
   columns.insert(columns.end(), extra.begin(), extra.end());
   Table t(columns);
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     if (progress) progress(i);
-    std::vector<Table::Cell> row = common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "");
+    std::vector<Table::Cell> row =
+        common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "", label);
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);
       row.insert(row.end(), more.begin(), more.end());

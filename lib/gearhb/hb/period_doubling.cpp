@@ -359,4 +359,57 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
   return out;
 }
 
+bool has_points(const PeriodDoubledBranch& b) {
+  return !b.curve.branch.points.empty() && b.curve.stable.size() == b.curve.branch.points.size();
+}
+
+std::vector<int> branch_starts(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd) {
+  std::vector<int> starts(c.bifurcations.size(), -1);
+  for (std::size_t k = 0; k < pd.size(); ++k)
+    if (has_points(pd[k]) && pd[k].from < starts.size()) starts[pd[k].from] = int(k) + 1;
+  return starts;
+}
+
+Intervals stable_intervals(const FrequencyCurve& c, int period) {
+  const auto& P = c.branch.points;
+  Intervals out;
+  if (c.stable.size() != P.size()) return out;
+  for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+    const double a = period * P[k].omega, b = period * P[k + 1].omega;
+    if (c.stable[k] && c.stable[k + 1]) {
+      out.emplace_back(std::min(a, b), std::max(a, b));
+    } else if (c.stable[k] != c.stable[k + 1]) {
+      double at = 0.5 * (a + b);
+      for (const auto& bf : c.bifurcations)
+        if (bf.after_point == int(k)) {
+          at = period * bf.omega;
+          break;
+        }
+      const double from = c.stable[k] ? a : b;
+      out.emplace_back(std::min(from, at), std::max(from, at));
+    }
+  }
+  if (P.size() == 1 && c.stable[0]) out.emplace_back(period * P[0].omega, period * P[0].omega);
+  std::sort(out.begin(), out.end());
+  Intervals merged;
+  for (const auto& iv : out)
+    if (!merged.empty() && iv.first <= merged.back().second) merged.back().second = std::max(merged.back().second, iv.second);
+    else merged.push_back(iv);
+  return merged;
+}
+
+Intervals uncovered(double lo, double hi, Intervals covered) {
+  std::sort(covered.begin(), covered.end());
+  const double tiny = 1e-9 * (hi - lo);
+  Intervals gaps;
+  double at = lo;
+  for (const auto& [a, b] : covered) {
+    if (a - at > tiny && a > lo) gaps.emplace_back(at, std::min(a, hi));
+    at = std::max(at, b);
+    if (at >= hi) break;
+  }
+  if (hi - at > tiny) gaps.emplace_back(at, hi);
+  return gaps;
+}
+
 }  // namespace gearhb

@@ -55,6 +55,7 @@
 // Models with a time-varying contact stiffness have no exact flow: the switch reports it.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -115,5 +116,22 @@ struct PeriodDoubledBranch {
 std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
                                                          const SweepOptions& opt,
                                                          const PeriodDoublingOptions& pdo = {});
+
+// The branches of pd that have rows to write: points, each with its stability.
+bool has_points(const PeriodDoubledBranch& b);
+// For each bifurcation of c, the id (k + 1) of the branch pd[k] with points that it starts,
+// -1 where none (the `starts_branch` column of the bifurcation table).
+std::vector<int> branch_starts(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd);
+
+// Where a curve has a stable orbit (issue 34 §4: the ranges with no stable period-1 orbit are
+// the gaps of its period-1 curve's intervals). Forcing-frequency intervals, merged, in increasing
+// omega: each stretch between two consecutive stable points, and where the stability changes
+// between two points, from the stable one to the bifurcation located between them (the chord's
+// midpoint if none is listed there); `period`: the curve's omegas are omega / period.
+using Intervals = std::vector<std::pair<double, double>>;
+Intervals stable_intervals(const FrequencyCurve& c, int period = 1);
+// [lo, hi] less the union of `covered`: the gaps, in increasing omega (none narrower than
+// 1e-9 (hi - lo)).
+Intervals uncovered(double lo, double hi, Intervals covered);
 
 }  // namespace gearhb
