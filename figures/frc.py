@@ -88,7 +88,8 @@ def main():
     for n, bid in enumerate(ids):
         d2 = rows_of(full, bid)
         colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
-        plot_branch(ax, d2, "x_max", colour, "period 2 (branch %d): max, min over two periods" % bid)
+        period = int(d2["period"][0]) if "period" in d2 else 2
+        plot_branch(ax, d2, "x_max", colour, "period %d (branch %d): max, min over %d periods" % (period, bid, period))
         plot_branch(ax, d2, "x_min", colour)
     if ids:   # x_min over the period-2 branches' range (where the two periods differ most)
         w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]

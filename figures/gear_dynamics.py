@@ -61,13 +61,15 @@ def contact_rugs(ax, curves):
 
 def branches(torques, frc):
     """(label, colour, rows, short rug label) of every curve: per torque its period-1 curve (torque
-    colour) and its period-2 branches (PERIOD2_COLOURS, counted over the figure)."""
+    colour) and its period-2 (and period-4) branches (PERIOD2_COLOURS, counted over the figure)."""
     out, n = [], 0
     for T, d in zip(torques, frc):
         out.append((torque_label(T), torque_colour(T, torques), rows_of(d, 0), "T1 = %g" % T))
         for bid in branch_ids(d):
-            out.append(("%s: period 2 (branch %d), over two mesh periods" % (torque_label(T), bid),
-                        PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], rows_of(d, bid), "T1 = %g, p2 b%d" % (T, bid)))
+            rows = rows_of(d, bid)
+            p = int(rows["period"][0])
+            out.append(("%s: period %d (branch %d), over %d mesh periods" % (torque_label(T), p, bid, p),
+                        PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], rows, "T1 = %g, p%d b%d" % (T, p, bid)))
             n += 1
     return out
 
@@ -160,9 +162,9 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
                               "C_a = %.1f um%s, K_A = 1 (one curve per torque)"
                               % (kn["iso_quality_grade"], kn["iso_tip_relief_um"],
                                  " (running-in: no relief)" if kn["iso_tip_relief_from_running_in"] else "")))
-    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.19, 1.0))   # right of the rug labels
     if extra:
-        axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+        axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.19, 1.0))
     dyn = params.get("dynamics", {})
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
         params.get("name", "gear pair"), dyn.get("model", "one_dof"), dyn.get("mesh", "constant"),

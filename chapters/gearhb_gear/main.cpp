@@ -142,19 +142,19 @@ class GearPairFromFile {
 
   // The dynamics, per torque (README "The pair over its speed range").
   // One mesh model per torque: built once, its curve, summary and closed-contact frequency;
-  // the period-2 branches from its period doublings (hb/period_doubling.hpp) and theirs.
+  // the period-doubled branches from its period doublings (hb/period_doubling.hpp) and theirs.
   struct Response {
     DteGear mesh;
     FrequencyCurve curve;
     MeshCurveSummary summary;
     double f_natural = 0.0;   // the one-DOF closed-contact mesh frequency [Hz]
-    std::vector<PeriodDoubledBranch> period2;
-    std::vector<MeshCurveSummary> period2_summary;   // per branch (empty for one without points)
+    std::vector<PeriodDoubledBranch> doubled;   // period 2 (and 4: period_doubling.depth 2)
+    std::vector<MeshCurveSummary> doubled_summary;   // per branch (empty for one without points)
   };
   BearingSupport bearings() const;
   DteGear mesh_at(std::size_t i) const;
   Response response(Run& run, std::size_t i, const DteGear& mesh, const HarmonicBalance& hb) const;
-  void period2_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o, Response& r) const;
+  void doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o, Response& r) const;
   Table mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
                    const BranchLabel& label, const RowProgress& progress) const;
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
@@ -610,41 +610,42 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   o.continuation.ds_max = 0.05;
   r.curve = timed_sweep(run, hb, o, torque_label(i));
   r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
-  if (file_.period_doubling_depth >= 1) period2_branches(run, i, hb, o, r);
+  if (file_.period_doubling_depth >= 1) doubled_branches(run, i, hb, o, r);
   return r;
 }
 
-// Period-2 branches from the located period doublings of torque i's curve, switched as
+// Period-2 branches (and period 4 at depth 2) from the located period doublings of torque i's curve, switched as
 // gearhb_frc switches them (period_doubled_branches, over the same speed range); each says in
 // one line where it starts and how it ends (a switch that fails: where and why; the rest of
 // the run stands), and the gear's measures of its points (over two mesh periods).
-void GearPairFromFile::period2_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o,
+void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o,
                                         Response& r) const {
   const auto& B = r.curve.bifurcations;
   if (std::none_of(B.begin(), B.end(), [](const Bifurcation& b) { return b.type == BifurcationType::period_doubling; }))
     return;
   report_sweep_progress(run, o, torque_label(i) + ": period 2");
-  r.period2 = run.timed("period-2 branches T" + std::to_string(i + 1),
-                        [&] { return period_doubled_branches(hb, r.curve, o); });
-  for (std::size_t k = 0; k < r.period2.size(); ++k) {
-    const PeriodDoubledBranch& b = r.period2[k];
+  r.doubled = run.timed("period-doubled branches T" + std::to_string(i + 1), [&] {
+    return period_doubling_cascade(hb, r.curve, o, file_.period_doubling_depth);
+  });
+  for (std::size_t k = 0; k < r.doubled.size(); ++k) {
+    const PeriodDoubledBranch& b = r.doubled[k];
     run.say(torque_label(i) + ": " + b.why);
-    r.period2_summary.push_back(has_points(b) ? mesh_curve_summary(*b.model, b.curve, r.mesh.F0,
+    r.doubled_summary.push_back(has_points(b) ? mesh_curve_summary(*b.model, b.curve, r.mesh.F0,
                                                                    dte_coordinate(file_.dynamics.dofs))
                                               : MeshCurveSummary{});
     if (!has_points(b)) continue;
     // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods)
     char part[120];
-    std::snprintf(part, sizeof part, ": period-2 branch %zu, %.0f to %.0f rpm:", k + 1, speed_rpm(b.omega_start),
-                  speed_rpm(b.omega_end));
+    std::snprintf(part, sizeof part, ": period-%d branch %zu, %.0f to %.0f rpm:", b.period, k + 1,
+                  speed_rpm(b.omega_start), speed_rpm(b.omega_end));
     std::string line = torque_label(i) + part;
-    const Intervals st = stable_intervals(b.curve, 2);
+    const Intervals st = stable_intervals(b.curve, b.period);
     for (std::size_t j = 0; j < st.size(); ++j) {
       std::snprintf(part, sizeof part, "%s %.0f-%.0f", j == 0 ? " stable at" : ",", speed_rpm(st[j].first),
                     speed_rpm(st[j].second));
       line += part;
     }
-    const MeshCurveSummary& m = r.period2_summary.back();
+    const MeshCurveSummary& m = r.doubled_summary.back();
     std::snprintf(part, sizeof part, " rpm; largest stable K_v %.2f, DTE RMS %.2f um", m.dynamic_factor_peak,
                   m.dte_rms_peak * 1e6);
     run.say(st.empty() ? line + " unstable everywhere" : line + part);
@@ -674,12 +675,12 @@ Table GearPairFromFile::mesh_table(const HarmonicBalance& hb, const FrequencyCur
 void GearPairFromFile::response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
   const std::string n = std::to_string(i + 1);
   Table frc = mesh_table(hb, r.curve, r.summary, {}, table_progress(run, r.curve, torque_label(i)));
-  Table bif = bifurcation_table(r.curve, {}, branch_starts(r.curve, r.period2));
-  for (std::size_t k = 0; k < r.period2.size(); ++k) {
-    if (!has_points(r.period2[k])) continue;
-    const BranchLabel label{2, int(k) + 1};
-    frc.append(mesh_table(*r.period2[k].model, r.period2[k].curve, r.period2_summary[k], label, {}));
-    bif.append(bifurcation_table(r.period2[k].curve, label));
+  Table bif = bifurcation_table(r.curve, {}, branch_starts(r.curve, r.doubled));
+  for (std::size_t k = 0; k < r.doubled.size(); ++k) {
+    if (!has_points(r.doubled[k])) continue;
+    const BranchLabel label{r.doubled[k].period, int(k) + 1};
+    frc.append(mesh_table(*r.doubled[k].model, r.doubled[k].curve, r.doubled_summary[k], label, {}));
+    bif.append(bifurcation_table(r.doubled[k].curve, label, branch_starts(r.doubled[k].curve, r.doubled, int(k))));
   }
   run.write("frc_" + n + ".csv", frc);
   run.write("bifurcations_" + n + ".csv", bif);
@@ -739,14 +740,14 @@ void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const Har
   }
   double kv = r.summary.dynamic_factor_peak, rms = r.summary.dte_rms_peak;
   int from = 1;
-  for (std::size_t b = 0; b < r.period2.size(); ++b) {
-    if (!has_points(r.period2[b])) continue;
-    const Intervals more = stable_intervals(r.period2[b].curve, 2);
+  for (std::size_t b = 0; b < r.doubled.size(); ++b) {
+    if (!has_points(r.doubled[b])) continue;
+    const Intervals more = stable_intervals(r.doubled[b].curve, r.doubled[b].period);
     stable.insert(stable.end(), more.begin(), more.end());
-    for (std::size_t k = 0; k < r.period2[b].curve.stable.size(); ++k) {
-      if (!r.period2[b].curve.stable[k]) continue;
-      const MeshOrbitMeasures& m = r.period2_summary[b].points[k];
-      if (m.dynamic_factor > kv) kv = m.dynamic_factor, from = 2;
+    for (std::size_t k = 0; k < r.doubled[b].curve.stable.size(); ++k) {
+      if (!r.doubled[b].curve.stable[k]) continue;
+      const MeshOrbitMeasures& m = r.doubled_summary[b].points[k];
+      if (m.dynamic_factor > kv) kv = m.dynamic_factor, from = r.doubled[b].period;
       rms = std::max(rms, m.dte_rms);
     }
   }
@@ -823,7 +824,7 @@ int main(int argc, char** argv) {
               "with a speed range the response over speed (both flanks, Floquet, K_v) and ISO 6336-1's K_v.\n"
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
-              "also frc_<i>.csv (with the period-2 branches: columns period, branch), bifurcations_<i>.csv,\n"
+              "also frc_<i>.csv (with the period-2 and period-4 branches: columns period, branch), bifurcations_<i>.csv,\n"
               "check_time_integration_<i>.csv, modes.csv,\n"
               "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
               "fillet_stress_<i>.csv, contact_<i>.csv.\n\n" +

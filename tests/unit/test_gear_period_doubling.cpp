@@ -48,6 +48,23 @@ const LightLoad& light() {
   return e;
 }
 
+// GSL rk8pd on the ORIGINAL model at the mesh frequency from point i's HB state of branch b
+// (period p mesh periods): `transient` mesh periods (a multiple of p), then p more; the state
+// must be back at the shooting-corrected one after p periods and not after p / 2 (`apart`: how
+// far the half-period state must lie, in x_scale). Returns the settled state (xs, vs row 0).
+void expect_period_p(const TimeIntegrator& ti, const PeriodDoubledBranch& b, std::size_t i, int transient,
+                     const TimeIntegrationOptions& to, double apart, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs) {
+  const BranchPoint& q = b.curve.branch.points[i];
+  const int p = b.period;
+  const double omega = p * q.omega;   // the mesh frequency
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(*b.model, q.X, q.omega, x0, v0);
+  ti.poincare(x0, v0, omega, transient, p, to, xs, vs);
+  EXPECT_LT((xs.row(0).transpose() - b.curve.floquet[i].x0).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
+  EXPECT_LT((xs.row(p) - xs.row(0)).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
+  EXPECT_GT((xs.row(p / 2) - xs.row(0)).cwiseAbs().maxCoeff(), apart * to.x_scale) << omega;
+}
+
 }  // namespace
 
 TEST(GearPeriodDoubling, LightLoadStablePeriodTwoOrbitsAreSeenByTimeIntegration) {
@@ -67,15 +84,10 @@ TEST(GearPeriodDoubling, LightLoadStablePeriodTwoOrbitsAreSeenByTimeIntegration)
       const PointFloquet& f = b.curve.floquet[i];
       if (!b.curve.stable[i] || !f.corrected || f.modulus > 0.9) continue;
       const double omega = 2.0 * P[i].omega;   // the mesh frequency
-      // from the HB state, 400 mesh periods (|mu| <= 0.9 per two: < 1e-9 of a start error left)
-      Eigen::VectorXd x0, v0;
-      hb_initial_state(*b.model, P[i].X, P[i].omega, x0, v0);
-      Eigen::MatrixXd xs, vs;
-      ti.poincare(x0, v0, omega, 400, 2, to, xs, vs);
+      // from the HB state, 400 mesh periods (|mu| <= 0.9 per two: < 1e-9 of a start error left);
       // back at the corrected period-2 state after two periods, not after one
-      EXPECT_LT((xs.row(0).transpose() - f.x0).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
-      EXPECT_LT((xs.row(2) - xs.row(0)).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
-      EXPECT_GT((xs.row(1) - xs.row(0)).cwiseAbs().maxCoeff(), 1e-3 * to.x_scale) << omega;
+      Eigen::MatrixXd xs, vs;
+      expect_period_p(ti, b, i, 400, to, 1e-3, xs, vs);
       // DTE RMS and K_v of the integrated motion (two periods from the settled state), sampled
       // at two resolutions: the finer one's distance to the coarser bounds its crest deficiency
       const MeshMotionMeasures fine = mesh_motion_measures(e.hb, xs.row(0).transpose(), vs.row(0).transpose(), omega,
@@ -131,4 +143,32 @@ TEST(GearPeriodDoubling, UncoveredIsTheComplement) {
   EXPECT_EQ(gaps[1], std::make_pair(4.0, 9.0));
   EXPECT_EQ(uncovered(0.0, 1.0, {}).size(), 1u);
   EXPECT_TRUE(uncovered(0.0, 1.0, {{-1.0, 2.0}}).empty());
+}
+
+TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration) {
+  // Depth 2: the period-4 branches from the period doublings of the period-2 branches; their
+  // stable orbits against GSL rk8pd on the original model: back at the shooting-corrected
+  // period-4 state every four mesh periods, not every two.
+  const auto& e = light();
+  const std::vector<PeriodDoubledBranch> all = period_doubling_cascade(e.hb, e.c, e.o, 2);
+  const TimeIntegrator ti(e.hb);
+  TimeIntegrationOptions to;
+  to.x_scale = e.c.scaling.x[0];
+  int compared = 0, period4 = 0;
+  for (const auto& b : all) {
+    if (b.period != 4 || !has_points(b)) continue;
+    ++period4;
+    ASSERT_GE(b.parent, 0);
+    EXPECT_EQ(all[std::size_t(b.parent)].period, 2);
+    const auto& P = b.curve.branch.points;
+    for (std::size_t i = 1; i < P.size() && compared < 4; i += std::max<std::size_t>(1, P.size() / 4)) {
+      const PointFloquet& f = b.curve.floquet[i];
+      if (!b.curve.stable[i] || !f.corrected || f.modulus > 0.9) continue;
+      Eigen::MatrixXd xs, vs;
+      expect_period_p(ti, b, i, 800, to, 1e-4, xs, vs);   // 800: a whole number of period-4 orbits
+      ++compared;
+    }
+  }
+  EXPECT_GE(period4, 1);
+  EXPECT_GE(compared, 1);
 }
