@@ -61,6 +61,24 @@ def diagram_figure(d_dir, model, p, h):
     save(fig, d_dir / "bifurcation_diagram.png")
 
 
+def no_stable_period1(d_dir, axes):
+    """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*)
+    on every panel; its legend entry (none without such ranges)."""
+    from matplotlib.patches import Patch
+    kn_file = d_dir / "key_numbers.json"
+    kn = json.load(open(kn_file)) if kn_file.exists() else {}
+    n = int(kn.get("unstable_period1_ranges", {"value": 0})["value"])
+    ranges = [(kn["unstable_period1_from_omega_%d" % k]["value"], kn["unstable_period1_to_omega_%d" % k]["value"])
+              for k in range(1, n + 1)]
+    for ax in axes:
+        for a, b in ranges:
+            ax.axvspan(a, b, color="0.5", alpha=0.12, lw=0, zorder=0)
+    if not ranges:
+        return []
+    return [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s rad/s)"
+                  % ", ".join("%.4g-%.4g" % r for r in ranges))]
+
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     model = json.load(open(d_dir / "params.json"))
@@ -129,6 +147,7 @@ def main():
             if w:
                 ax.plot(w, ys, ls="none", marker=m, color=c, mfc="none", ms=8, label=kind.replace("_", " "))
     rug_room(ax)
+    shaded = no_stable_period1(d_dir, [a for a in (ax, axp) if a is not None])
     direction = model["output"]["direction"]
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
     ax.set_ylabel("output q'x, q = %s [m]" % direction)
@@ -140,6 +159,7 @@ def main():
                                                          model["omega"]["from"], model["omega"]["to"], beyond),
                  fontsize=9)
     h_main, _ = ax.get_legend_handles_labels()
+    h_main += shaded
     if p is not None:
         ax.set_xlabel("")
         handles = poincare_panel(axp, p, h, direction)

@@ -202,6 +202,14 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");
+  // The ranges with no stable period-1 orbit (issue 34 §4; frc.png shades them).
+  const Intervals gaps = uncovered(std::min(model_.omega_from, model_.omega_to),
+                                   std::max(model_.omega_from, model_.omega_to), stable_intervals(c));
+  key.add("unstable_period1_ranges", double(gaps.size()), "-");
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    key.add("unstable_period1_from_omega_" + std::to_string(k + 1), gaps[k].first, "rad/s");
+    key.add("unstable_period1_to_omega_" + std::to_string(k + 1), gaps[k].second, "rad/s");
+  }
   // The response at either end of the range (omega.from, omega.to): the first point and
   // the last, as a time integration from rest would see it where they are stable.
   const auto& P = c.branch.points;
@@ -234,6 +242,8 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
+  // the script reads the key numbers (the frame rewrites the same file when the steps are done)
+  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
 
