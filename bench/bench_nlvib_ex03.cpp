@@ -77,12 +77,18 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   const FrequencyCurve c = sweep_frequency(hb, o, "ex03");
   o.continuation.fast_iterations = int(st.range(0));
   std::size_t points = 0;
+  int rejected = 0, iterations = 0;
   for (auto _ : st) {
     const auto br = period_doubled_branches(hb, c, o);
     if (br.size() != 1 || br[0].end != PeriodDoubledBranch::End::merged) st.SkipWithError("no merged branch");
     points = br.empty() ? 0 : br[0].curve.branch.points.size();
+    rejected = br.empty() ? 0 : br[0].curve.branch.rejected_steps;
+    iterations = 0;
+    for (const auto& p : br.empty() ? std::vector<BranchPoint>{} : br[0].curve.branch.points) iterations += p.iterations;
   }
   st.counters["points"] = double(points);
+  st.counters["rejected"] = double(rejected);               // rejected continuation steps
+  st.counters["iterations"] = double(iterations);           // corrector iterations of the accepted points
 }
 // fast_iterations: the continuation's step-growth rule (3, the sweep's default: the period-2
 // corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).

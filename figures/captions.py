@@ -248,8 +248,10 @@ GEAR_CAPTIONS = {
                        "Below: the stress along both fillets there, tension under the loaded flank, compression under "
                        "the other; its peak lies near, not at, ISO's 30-degree point.",
     "response.png": "DTE RMS and dynamic factor K_v over speed per torque (stable solid, unstable dashed, "
-                    "bifurcations marked, ISO 6336-1 K_v dotted where computed); the rug below the axis is the "
-                    "contact of each flank (drive-flank loss, back-flank impact).",
+                    "bifurcations marked, ISO 6336-1 K_v dotted where computed), the period-2 (period-4) branches "
+                    "switched at the period doublings in colours of their own and the speeds with no stable "
+                    "period-1 orbit shaded (where there are any); the rug below the axis is the contact of each "
+                    "flank (drive-flank loss, back-flank impact), one row per curve.",
     "campbell.png": "Campbell diagram: mesh orders 1-4 against speed with the mesh natural frequencies; a "
                     "resonance where an order line meets a natural frequency.",
     "time_history.png": "Two periods of the DTE and the mesh force (drive and back flank) at the hardest contact "

@@ -19,8 +19,8 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, contact_rug, legend_styles, plot_branch,  # noqa: E402
-                   read_csv, rug_room, save)
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
+                   legend_styles, plot_branch, read_csv, rows_of, rug_room, save)
 from poincare import draw_hb_section, draw_poincare  # noqa: E402
 
 
@@ -92,6 +92,22 @@ def torus_panel(ax, t, b):
 
 
 PERIOD2_COLOURS = ["C2", "C4", "C5", "C6", "C8", "C9", "C1"]   # not red: the diagram draws chaos red
+def no_stable_period1(d_dir, axes):
+    """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*)
+    on every panel; its legend entry (none without such ranges)."""
+    from matplotlib.patches import Patch
+    kn_file = d_dir / "key_numbers.json"
+    kn = json.load(open(kn_file)) if kn_file.exists() else {}
+    n = int(kn.get("unstable_period1_ranges", {"value": 0})["value"])
+    ranges = [(kn["unstable_period1_from_omega_%d" % k]["value"], kn["unstable_period1_to_omega_%d" % k]["value"])
+              for k in range(1, n + 1)]
+    for ax in axes:
+        for a, b in ranges:
+            ax.axvspan(a, b, color="0.5", alpha=0.12, lw=0, zorder=0)
+    if not ranges:
+        return []
+    return [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s rad/s)"
+                  % ", ".join("%.4g-%.4g" % r for r in ranges))]
 
 
 def main():
@@ -99,7 +115,7 @@ def main():
     model = json.load(open(d_dir / "params.json"))
     full = read_csv(d_dir / "frc.csv")
     d = rows_of(full, 0)
-    ids = sorted({int(b) for b in full.get("branch", [])} - {0})
+    ids = branch_ids(full)
     diagram = d_dir / "bifurcation_diagram.csv"
     p = h = None
     if diagram.exists() and (d_dir / "bifurcation_diagram_hb.csv").exists():
@@ -124,7 +140,8 @@ def main():
     for n, bid in enumerate(ids):
         d2 = rows_of(full, bid)
         colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
-        plot_branch(ax, d2, "x_max", colour, "period 2 (branch %d): max, min over two periods" % bid)
+        period = int(d2["period"][0]) if "period" in d2 else 2
+        plot_branch(ax, d2, "x_max", colour, "period %d (branch %d): max, min over %d periods" % (period, bid, period))
         plot_branch(ax, d2, "x_min", colour)
     if ids:   # x_min over the period-2 branches' range (where the two periods differ most)
         w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]
@@ -170,6 +187,7 @@ def main():
             if w:
                 ax.plot(w, ys, ls="none", marker=m, color=c, mfc="none", ms=8, label=kind.replace("_", " "))
     rug_room(ax)
+    shaded = no_stable_period1(d_dir, [a for a in (ax, axp) if a is not None])
     direction = model["output"]["direction"]
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
     ax.set_ylabel("output q'x, q = %s [m]" % direction)
@@ -183,6 +201,7 @@ def main():
     h_main, _ = ax.get_legend_handles_labels()
     if t is not None:
         torus_panel(axt, t, read_csv(bif) if bif.exists() and bif.read_text().count("\n") > 1 else None)
+    h_main += shaded
     if p is not None:
         ax.set_xlabel("")
         handles = poincare_panel(axp, p, h, direction)

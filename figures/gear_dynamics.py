@@ -3,9 +3,13 @@
 Writes into DIR:
   response.png      DTE RMS and the dynamic factor K_v against the speed of gear 1, one colour
                     per torque, stable solid and unstable dashed (Floquet), bifurcations marked
-                    (fold o, period doubling s, Neimark-Sacker D), the contact class along
-                    each curve as a thin band under the panel (drive-flank loss orange, back-flank
-                    impact red), ISO 6336-1 method B's K_v dotted where iso_kv.csv exists;
+                    (fold o, period doubling s, Neimark-Sacker D) on the curve of their branch,
+                    the period-2 branches (frc_<i>.csv rows of period 2) in colours of their own,
+                    the speed ranges with no stable period-1 orbit shaded in the torque's colour
+                    (key numbers unstable_period1_*), the contact class along each curve (each
+                    torque's period-1 curve and each period-2 branch) as a thin band under the
+                    panel (drive-flank loss gold, back-flank impact purple), ISO 6336-1 method B's
+                    K_v dotted where iso_kv.csv exists;
                     with bifurcation_diagram.csv (the file's bifurcation_diagram key) one more
                     panel per torque whose period-1 branch has an unstable stretch: the Poincare
                     DTE (once per mesh period) over the HB branch at the same phase (poincare.py);
@@ -19,7 +23,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
-from style import CONTACT_COLOURS, plot_branch, read_csv, save, torque_colour
+from style import CONTACT_COLOURS, PERIOD2_COLOURS, branch_ids, plot_branch, read_csv, rows_of, save, torque_colour
 from poincare import draw_hb_section, draw_poincare
 
 # The drive flank opening is the mesh's intermittent contact (the rug colour of every chapter).
@@ -36,22 +40,61 @@ def nearest(d, omega, y):
     return d["speed_rpm"][i], d[y][i]
 
 
-def contact_rugs(ax, torques, frc):
-    """Thin bands below y = 0, one row per torque (labelled), coloured by each point's contact
-    class (nothing where the drive flank stays closed)."""
+def contact_rugs(ax, curves):
+    """Thin bands below y = 0, one row per curve (labelled: each torque's period-1 curve and each
+    of its period-2 branches, so that on coexisting branches the reader sees which one loses
+    contact), coloured by each point's contact class (nothing where the drive flank stays closed).
+    curves: (label, colour, rows of frc_<i>.csv) per row."""
     top = ax.get_ylim()[1]
     h = 0.035 * top
-    for row, (T, d) in enumerate(zip(torques, frc)):
+    for row, (label, colour, d) in enumerate(curves):
         y0 = -(row + 1) * 1.25 * h
         for kind in CONTACT_COLOUR:   # in this order: an impact is drawn over a loss where the branch folds
             for i in range(len(d["speed_rpm"]) - 1):
                 if d["contact"][i] == kind or (kind != "drive_loss" and d["contact"][i + 1] == kind):
                     ax.fill_between([d["speed_rpm"][i], d["speed_rpm"][i + 1]], y0, y0 + h,
                                     color=CONTACT_COLOUR[kind], lw=0)
-        ax.text(1.005, y0 + 0.5 * h, "T1 = %g" % T, transform=ax.get_yaxis_transform(), fontsize=6, va="center",
-                color=torque_colour(torques[row], torques))
+        ax.text(1.005, y0 + 0.5 * h, label, transform=ax.get_yaxis_transform(), fontsize=6, va="center", color=colour)
     ax.axhline(0.0, color="0.5", lw=0.8)
-    ax.set_ylim(-(len(torques) * 1.25 + 0.3) * h, top)
+    ax.set_ylim(-(len(curves) * 1.25 + 0.3) * h, top)
+
+
+def branches(torques, frc):
+    """(label, colour, rows, short rug label) of every curve: per torque its period-1 curve (torque
+    colour) and its period-2 (and period-4) branches (PERIOD2_COLOURS, counted over the figure)."""
+    out, n = [], 0
+    for T, d in zip(torques, frc):
+        out.append((torque_label(T), torque_colour(T, torques), rows_of(d, 0), "T1 = %g" % T))
+        for bid in branch_ids(d):
+            rows = rows_of(d, bid)
+            p = int(rows["period"][0])
+            out.append(("%s: period %d (branch %d), over %d mesh periods" % (torque_label(T), p, bid, p),
+                        PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], rows, "T1 = %g, p%d b%d" % (T, p, bid)))
+            n += 1
+    return out
+
+
+def no_stable_period1(kn, i):
+    """The speed ranges [rpm] of torque i (0-based) with no stable period-1 orbit (key numbers)."""
+    n = int(kn.get("unstable_period1_ranges_%d" % (i + 1), 0))
+    return [(kn["unstable_period1_from_rpm_%d_%d" % (i + 1, k)], kn["unstable_period1_to_rpm_%d_%d" % (i + 1, k)])
+            for k in range(1, n + 1)]
+
+
+def mark_no_stable_period1(axes, kn, torques):
+    """A light band in the torque's colour over every range with no stable period-1 orbit, on every
+    panel; its legend entries."""
+    handles = []
+    for i, T in enumerate(torques):
+        ranges = no_stable_period1(kn, i)
+        for ax in axes:
+            for a, b in ranges:
+                ax.axvspan(a, b, color=torque_colour(T, torques), alpha=0.09, lw=0, zorder=0)
+        if ranges:
+            handles.append(Patch(color=torque_colour(T, torques), alpha=0.25,
+                                 label="no stable period-1 orbit, %s (%s rpm)" % (
+                                     torque_label(T), ", ".join("%.0f-%.0f" % r for r in ranges))))
+    return handles
 
 
 def torque_rows(d, i):
@@ -77,23 +120,26 @@ def read_diagram(d_dir):
 
 def response_figure(d_dir, params, kn, torques, frc, bif):
     diagram = read_diagram(d_dir)
-    unstable = [i for i, d in enumerate(frc) if diagram and any(int(s) == 0 for s in d["stable"])]
+    unstable = [i for i, d in enumerate(frc) if diagram and any(int(s) == 0 for s in rows_of(d, 0)["stable"])]
+    curves = branches(torques, frc)
     fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
     for ax, y, label in ((axes[0], "dte_rms_um", "DTE RMS (oscillating part) [um]"),
                          (axes[1], "dynamic_factor", "dynamic factor K_v = max |mesh force| / F0")):
-        for i, (T, d) in enumerate(zip(torques, frc)):
-            col = torque_colour(T, torques)
-            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=torque_label(T))
+        for label_c, col, d, _ in curves:
+            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c)
+        for i, T in enumerate(torques):   # each event on the curve of its branch
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
-                xb, yb = nearest(d, bif[i]["omega"][k], y)
-                ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color=col, ms=7)
+                on = rows_of(frc[i], int(bif[i]["branch"][k]) if "branch" in bif[i] else 0)
+                if on["omega"]:
+                    xb, yb = nearest(on, bif[i]["omega"][k], y)
+                    ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color=torque_colour(T, torques), ms=7)
         if iso is not None and y == "dynamic_factor":   # before the rugs, so that the axis holds it whole
             for i, T in enumerate(torques):
                 ax.plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)
         ax.set_ylabel(label)
         ax.set_ylim(bottom=0)
-        contact_rugs(ax, torques, frc)
+        contact_rugs(ax, [(short, col, d) for _, col, d, short in curves])
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
     extra = {}
     for ax, i in zip(axes[2:], unstable):
@@ -101,22 +147,24 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
                                 "%s: bifurcation diagram by time integration (sweeps up and down)"
                                 % torque_label(torques[i])):
             extra.setdefault(hd.get_label(), hd)
+    shaded = mark_no_stable_period1(axes, kn, torques)
     axes[-1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
-    handles = [Line2D([], [], color=torque_colour(T, torques), label=torque_label(T)) for T in torques]
+    handles = [Line2D([], [], color=col, label=label_c) for label_c, col, _, _ in curves]
     handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
                 Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
     handles += [Line2D([], [], color="k", ls="none", marker=m, mfc="none", label=t.replace("_", " "))
                 for t, m in BIF_MARKER.items() if any(t in (b["type"] or []) for b in bif)]
-    handles += [Patch(color=c, label=k.replace("+", " + ").replace("_", " ") + " (bands below 0, one row per torque)")
+    handles += [Patch(color=c, label=k.replace("+", " + ").replace("_", " ") + " (bands below 0, one row per curve)")
                 for k, c in CONTACT_COLOUR.items() if any(k in d["contact"] for d in frc)]
+    handles += shaded
     if iso is not None:
         handles.append(Line2D([], [], color="k", ls=":", label="ISO 6336-1 method B K_v: ISO 1328-1 grade %d,\n"
                               "C_a = %.1f um%s, K_A = 1 (one curve per torque)"
                               % (kn["iso_quality_grade"], kn["iso_tip_relief_um"],
                                  " (running-in: no relief)" if kn["iso_tip_relief_from_running_in"] else "")))
-    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+    axes[0].legend(handles=handles, fontsize=7, loc="upper left", bbox_to_anchor=(1.19, 1.0))   # right of the rug labels
     if extra:
-        axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.07, 1.0))
+        axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.19, 1.0))
     dyn = params.get("dynamics", {})
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
         params.get("name", "gear pair"), dyn.get("model", "one_dof"), dyn.get("mesh", "constant"),

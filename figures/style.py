@@ -189,6 +189,23 @@ CONTACT_COLOURS = {"intermittent": "#e6b800", "full": "0.55",
 RUG_HEIGHT = 0.022     # axes fraction per rug row
 
 
+def rows_of(d, branch):
+    """The rows of branch id `branch` of a frequency-response table (all rows of a table without
+    the column): 0 the period-1 curve, k >= 1 period-2 branch k."""
+    if "branch" not in d:
+        return d if branch == 0 else {k: [] for k in d}
+    keep = [i for i, b in enumerate(d["branch"]) if int(b) == branch]
+    return {k: [v[i] for i in keep] for k, v in d.items()}
+
+
+def branch_ids(d):
+    """The ids of the period-2 (and higher) branches of a frequency-response table, in order."""
+    return sorted({int(b) for b in d.get("branch", [])} - {0})
+
+
+PERIOD2_COLOURS = ["C2", "C4", "C9", "C8", "C6", "C5", "C1"]   # not red: the diagram draws chaos red
+
+
 def torque_colour(T, torques=THESIS_TORQUES):
     """The colour of torque T among the figure's `torques`: the thesis torques by value, others by
     rank (lightest blue, heaviest red; more than three from a sequential map)."""

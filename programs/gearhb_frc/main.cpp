@@ -155,21 +155,17 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   // one line and the rest of the run stands.
   std::vector<PeriodDoubledBranch> pd;
   if (model_.period_doubling_depth >= 1)
-    pd = run.timed("period-2 branches", [&] { return period_doubled_branches(hb, c, o); });
-  std::vector<int> starts(c.bifurcations.size(), -1);
-  for (std::size_t k = 0; k < pd.size(); ++k) {
-    run.say(model_.name + ": " + pd[k].why);
-    if (!pd[k].curve.branch.points.empty()) starts[pd[k].from] = int(k) + 1;
-  }
+    pd = run.timed("period-2 branches", [&] { return period_doubling_cascade(hb, c, o, model_.period_doubling_depth); });
+  for (const auto& b : pd) run.say(model_.name + ": " + b.why);
   Table frc = dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name));
-  Table bif = bifurcation_table(c, {}, starts);
+  Table bif = bifurcation_table(c, {}, branch_starts(c, pd));
   int period2_points = 0;
   for (std::size_t k = 0; k < pd.size(); ++k) {
-    if (pd[k].curve.branch.points.empty() || pd[k].curve.stable.size() != pd[k].curve.branch.points.size()) continue;
-    const BranchLabel label{2, int(k) + 1};
+    if (!has_points(pd[k])) continue;
+    const BranchLabel label{pd[k].period, int(k) + 1};
     frc.append(dof_response_table(*pd[k].model, pd[k].curve, model_.output, {}, label));
-    bif.append(bifurcation_table(pd[k].curve, label));
-    period2_points += int(pd[k].curve.branch.points.size());
+    bif.append(bifurcation_table(pd[k].curve, label, branch_starts(pd[k].curve, pd, int(k))));
+    if (pd[k].period == 2) period2_points += int(pd[k].curve.branch.points.size());
   }
   run.write("frc.csv", frc);
   run.write("bifurcations.csv", bif);
@@ -184,12 +180,15 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
 void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd,
                                                     int period2_points) const {
   KeyNumbers& key = run.key_numbers();
-  int merged = 0;
-  for (const auto& b : pd) merged += b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
-  key.add("period2_branches", double(pd.size()), "-");
+  int merged = 0, period2 = 0;
+  for (const auto& b : pd) merged += b.period == 2 && b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
+  for (const auto& b : pd) period2 += b.period == 2 ? 1 : 0;
+  key.add("period2_branches", double(period2), "-");
+  if (pd.size() > std::size_t(period2)) key.add("period4_branches", double(pd.size() - std::size_t(period2)), "-");
   key.add("period2_branches_merged", double(merged), "-");
   key.add("period2_points", double(period2_points), "-");
   for (std::size_t k = 0; k < pd.size(); ++k) {   // where each branch starts and ends (forcing omega)
+    if (pd[k].period != 2) continue;
     const std::string id = std::to_string(k + 1);
     key.add("period2_omega_start_" + id, pd[k].omega_start, "rad/s");
     if (std::isfinite(pd[k].omega_end)) key.add("period2_omega_end_" + id, pd[k].omega_end, "rad/s");
@@ -206,6 +205,14 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
   key.add("points", double(c.branch.points.size()), "-");
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");
+  // The ranges with no stable period-1 orbit (issue 34 §4; frc.png shades them).
+  const Intervals gaps = uncovered(std::min(model_.omega_from, model_.omega_to),
+                                   std::max(model_.omega_from, model_.omega_to), stable_intervals(c));
+  key.add("unstable_period1_ranges", double(gaps.size()), "-");
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    key.add("unstable_period1_from_omega_" + std::to_string(k + 1), gaps[k].first, "rad/s");
+    key.add("unstable_period1_to_omega_" + std::to_string(k + 1), gaps[k].second, "rad/s");
+  }
   // The response at either end of the range (omega.from, omega.to): the first point and
   // the last, as a time integration from rest would see it where they are stable.
   const auto& P = c.branch.points;
@@ -263,6 +270,8 @@ void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& 
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
+  // the script reads the key numbers (the frame rewrites the same file when the steps are done)
+  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
 
@@ -272,7 +281,8 @@ int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
-              "Writes DIR/frc.csv (with the period-2 branches: columns period, branch), bifurcations.csv,\n"
+              "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches: columns\n"
+              "period, branch), bifurcations.csv,\n"
               "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
               "and frc.png; with the bifurcation_diagram key also bifurcation_diagram.csv and\n"
               "bifurcation_diagram.png; with the torus key also torus.csv (quasi-periodic branches).\n\n" +

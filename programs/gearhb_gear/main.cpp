@@ -27,7 +27,9 @@
 // mirrored, phase psi - theta; dte_model.hpp), free flight between; harmonic balance
 // with arc-length continuation over f_mesh, Floquet
 // stability of the corrected orbit, bifurcations, DTE RMS, dynamic factor K_v and the
-// contact of each flank at every point, checked against GSL time integration.
+// contact of each flank at every point, checked against GSL time integration; from each
+// located period doubling a period-2 branch (hb/period_doubling.hpp, as gearhb_frc), and
+// the speed ranges with no stable period-1 orbit with the K_v of the motion that exists there.
 // Or the six-DOF model (bearings, mesh along the line of action), from the same file.
 //
 // Steps: read_gear (in the study's checks: a bad file exits 2 before anything is
@@ -60,6 +62,7 @@
 #include "gearhb/gears/pair/loaded_pair.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/pair/pair_helical.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
 #include "gearhb/gears/pair/ste_continuous.hpp"
@@ -181,21 +184,29 @@ class GearPairFromFile {
   void draw(Run& run) const;
 
   // The dynamics, per torque (README "The pair over its speed range").
-  // One mesh model per torque: built once, its curve, summary and closed-contact frequency.
+  // One mesh model per torque: built once, its curve, summary and closed-contact frequency;
+  // the period-doubled branches from its period doublings (hb/period_doubling.hpp) and theirs.
   struct Response {
     DteGear mesh;
     FrequencyCurve curve;
     MeshCurveSummary summary;
     double f_natural = 0.0;   // the one-DOF closed-contact mesh frequency [Hz]
+    std::vector<PeriodDoubledBranch> doubled;   // period 2 (and 4: period_doubling.depth 2)
+    std::vector<MeshCurveSummary> doubled_summary;   // per branch (empty for one without points)
   };
   BearingSupport bearings() const;
   DteGear mesh_at(std::size_t i) const;
   Response response(Run& run, std::size_t i, const DteGear& mesh, const HarmonicBalance& hb) const;
+  void doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o, Response& r) const;
+  Table mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
+                   const BranchLabel& label, const RowProgress& progress) const;
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
+  void any_motion_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+                              const BifurcationDiagram* d) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
-  void bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r, Table& t,
-                           Table& hb_section) const;
+  BifurcationDiagram bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+                                         Table& t, Table& hb_section) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
@@ -509,7 +520,9 @@ void GearPairFromFile::dynamics(Run& run) const {
     response_key_numbers(run, i, r);
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
-    if (file_.diagram.on) bifurcation_diagram(run, i, hb, r, diagram, diagram_hb);
+    BifurcationDiagram bd;
+    if (file_.diagram.on) bd = bifurcation_diagram(run, i, hb, r, diagram, diagram_hb);
+    any_motion_key_numbers(run, i, hb, r, file_.diagram.on ? &bd : nullptr);
     const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
     for (std::size_t k = 0; k < f.size(); ++k)
       modes.add_row({long(i + 1), file_.torques[i], long(k + 1), f[k], speed_rpm(2.0 * M_PI * f[k])});
@@ -526,8 +539,8 @@ void GearPairFromFile::dynamics(Run& run) const {
 // With the file's bifurcation_diagram key: the diagram by time integration over the speed
 // range, up then down, from the HB orbit at the lowest speed (rows of bifurcation_diagram.csv:
 // the DTE at phase 0 of each mesh period, um; bifurcation_diagram_hb.csv: the HB branch's).
-void GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
-                                           Table& t, Table& hb_section) const {
+BifurcationDiagram GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb,
+                                                         const Response& r, Table& t, Table& hb_section) const {
   const std::string n = std::to_string(i + 1);
   const double lo = 2.0 * M_PI * file_.dynamics.f_mesh_from, hi = 2.0 * M_PI * file_.dynamics.f_mesh_to;
   const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, file_.diagram.options,
@@ -540,6 +553,7 @@ void GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
   run.say(torque_label(i) + ": " + diagram_summary(d, [&](double w) { return speed_rpm(w); }, "rpm"));
+  return d;
 }
 
 // Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
@@ -665,27 +679,80 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   o.continuation.ds_max = 0.05;
   r.curve = timed_sweep(run, hb, o, torque_label(i));
   r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
+  if (file_.period_doubling_depth >= 1) doubled_branches(run, i, hb, o, r);
   return r;
 }
 
-// frc_<i>.csv (the common columns, then the gear's) and bifurcations_<i>.csv.
+// Period-2 branches (and period 4 at depth 2) from the located period doublings of torque i's curve, switched as
+// gearhb_frc switches them (period_doubled_branches, over the same speed range); each says in
+// one line where it starts and how it ends (a switch that fails: where and why; the rest of
+// the run stands), and the gear's measures of its points (over two mesh periods).
+void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o,
+                                        Response& r) const {
+  const auto& B = r.curve.bifurcations;
+  if (std::none_of(B.begin(), B.end(), [](const Bifurcation& b) { return b.type == BifurcationType::period_doubling; }))
+    return;
+  report_sweep_progress(run, o, torque_label(i) + ": period 2");
+  r.doubled = run.timed("period-doubled branches T" + std::to_string(i + 1), [&] {
+    return period_doubling_cascade(hb, r.curve, o, file_.period_doubling_depth);
+  });
+  for (std::size_t k = 0; k < r.doubled.size(); ++k) {
+    const PeriodDoubledBranch& b = r.doubled[k];
+    run.say(torque_label(i) + ": " + b.why);
+    r.doubled_summary.push_back(has_points(b) ? mesh_curve_summary(*b.model, b.curve, r.mesh.F0,
+                                                                   dte_coordinate(file_.dynamics.dofs))
+                                              : MeshCurveSummary{});
+    if (!has_points(b)) continue;
+    // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods)
+    char part[120];
+    std::snprintf(part, sizeof part, ": period-%d branch %zu, %.0f to %.0f rpm:", b.period, k + 1,
+                  speed_rpm(b.omega_start), speed_rpm(b.omega_end));
+    std::string line = torque_label(i) + part;
+    const Intervals st = stable_intervals(b.curve, b.period);
+    for (std::size_t j = 0; j < st.size(); ++j) {
+      std::snprintf(part, sizeof part, "%s %.0f-%.0f", j == 0 ? " stable at" : ",", speed_rpm(st[j].first),
+                    speed_rpm(st[j].second));
+      line += part;
+    }
+    const MeshCurveSummary& m = r.doubled_summary.back();
+    std::snprintf(part, sizeof part, " rpm; largest stable K_v %.2f, DTE RMS %.2f um", m.dynamic_factor_peak,
+                  m.dte_rms_peak * 1e6);
+    run.say(st.empty() ? line + " unstable everywhere" : line + part);
+  }
+}
+
+// The rows of one curve of a torque (the common columns, then the gear's); `label` its period
+// and branch (a period-2 branch: hb its period-2 model, its omegas half the mesh frequency).
+Table GearPairFromFile::mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
+                                   const BranchLabel& label, const RowProgress& progress) const {
+  const auto& P = c.branch.points;
+  const auto& m = s.points;
+  return frequency_response_table(
+      hb, c, dte_coordinate(file_.dynamics.dofs),
+      {"f_mesh_hz", "speed_rpm", "dte_rms_um", "dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N", "dynamic_factor",
+       "contact_drive", "contact_back"},
+      [&](std::size_t k) -> std::vector<Table::Cell> {
+        const double w = label.period * P[k].omega;
+        return {w / (2.0 * M_PI), speed_rpm(w), m[k].dte_rms * 1e6, m[k].dte_ptp * 1e6, m[k].force_max, m[k].force_min,
+                m[k].dynamic_factor, std::string(to_string(m[k].drive)), std::string(to_string(m[k].back))};
+      },
+      [&](std::size_t k) { return std::string(to_string(m[k].contact)); }, progress, label);
+}
+
+// frc_<i>.csv and bifurcations_<i>.csv: the period-1 curve (period 1, branch 0), then each
+// period-2 branch with points (period 2, branch k), as gearhb_frc writes them.
 void GearPairFromFile::response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
   const std::string n = std::to_string(i + 1);
-  const auto& P = r.curve.branch.points;
-  const auto& m = r.summary.points;
-  run.write("frc_" + n + ".csv",
-            frequency_response_table(
-                hb, r.curve, dte_coordinate(file_.dynamics.dofs),
-                {"f_mesh_hz", "speed_rpm", "dte_rms_um", "dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N",
-                 "dynamic_factor", "contact_drive", "contact_back"},
-                [&](std::size_t k) -> std::vector<Table::Cell> {
-                  return {P[k].omega / (2.0 * M_PI), speed_rpm(P[k].omega), m[k].dte_rms * 1e6, m[k].dte_ptp * 1e6,
-                          m[k].force_max, m[k].force_min, m[k].dynamic_factor, std::string(to_string(m[k].drive)),
-                          std::string(to_string(m[k].back))};
-                },
-                [&](std::size_t k) { return std::string(to_string(m[k].contact)); },
-                table_progress(run, r.curve, torque_label(i))));
-  run.write("bifurcations_" + n + ".csv", bifurcation_table(r.curve));
+  Table frc = mesh_table(hb, r.curve, r.summary, {}, table_progress(run, r.curve, torque_label(i)));
+  Table bif = bifurcation_table(r.curve, {}, branch_starts(r.curve, r.doubled));
+  for (std::size_t k = 0; k < r.doubled.size(); ++k) {
+    if (!has_points(r.doubled[k])) continue;
+    const BranchLabel label{r.doubled[k].period, int(k) + 1};
+    frc.append(mesh_table(*r.doubled[k].model, r.doubled[k].curve, r.doubled_summary[k], label, {}));
+    bif.append(bifurcation_table(r.doubled[k].curve, label, branch_starts(r.doubled[k].curve, r.doubled, int(k))));
+  }
+  run.write("frc_" + n + ".csv", frc);
+  run.write("bifurcations_" + n + ".csv", bif);
 }
 
 // The key numbers of torque i (file order, 1-based); a transition that never happens is absent.
@@ -717,6 +784,62 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
                 file_.torques[i], s.dte_rms_peak * 1e6, s.dte_rms_peak_omega / (2.0 * M_PI), s.dynamic_factor_peak,
                 speed_rpm(s.dynamic_factor_peak_omega), r.curve.branch.points.size());
   run.say(line);
+}
+
+// Issue 34 §4, torque i: the speed ranges with no stable period-1 orbit (the gaps of the period-1
+// curve's stable intervals; unstable_period1_ranges_<i>, each unstable_period1_from_rpm_<i>_<k>,
+// unstable_period1_to_rpm_<i>_<k>), and the largest K_v and DTE RMS of the motion that exists
+// (max_kv_any_motion_<i>, max_dte_rms_any_motion_um_<i>): every stable period-1 and period-2 orbit
+// and, at the diagram's speeds in those ranges where it is not period 1, the time-integrated motion
+// (16 mesh periods from its first Poincare state, 512 samples each: mesh_motion_measures);
+// max_kv_any_motion_from_<i>: which gave the largest K_v (1, 2: the HB orbit of that period; 0: the
+// time integration); any_motion_complete_<i>: 0 where a range has neither a stable period-2 orbit
+// nor the diagram (its motion unknown, not counted).
+void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+                                              const BifurcationDiagram* d) const {
+  KeyNumbers& key = run.key_numbers();
+  const std::string n = std::to_string(i + 1);
+  const double lo = 2.0 * M_PI * file_.dynamics.f_mesh_from, hi = 2.0 * M_PI * file_.dynamics.f_mesh_to;
+  Intervals stable = stable_intervals(r.curve);
+  const Intervals gaps = uncovered(lo, hi, stable);
+  key.add("unstable_period1_ranges_" + n, double(gaps.size()), "-");
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    key.add("unstable_period1_from_rpm_" + n + "_" + std::to_string(k + 1), speed_rpm(gaps[k].first), "rpm");
+    key.add("unstable_period1_to_rpm_" + n + "_" + std::to_string(k + 1), speed_rpm(gaps[k].second), "rpm");
+  }
+  double kv = r.summary.dynamic_factor_peak, rms = r.summary.dte_rms_peak;
+  int from = 1;
+  for (std::size_t b = 0; b < r.doubled.size(); ++b) {
+    if (!has_points(r.doubled[b])) continue;
+    const Intervals more = stable_intervals(r.doubled[b].curve, r.doubled[b].period);
+    stable.insert(stable.end(), more.begin(), more.end());
+    for (std::size_t k = 0; k < r.doubled[b].curve.stable.size(); ++k) {
+      if (!r.doubled[b].curve.stable[k]) continue;
+      const MeshOrbitMeasures& m = r.doubled_summary[b].points[k];
+      if (m.dynamic_factor > kv) kv = m.dynamic_factor, from = r.doubled[b].period;
+      rms = std::max(rms, m.dte_rms);
+    }
+  }
+  const bool p1_everywhere = gaps.empty();
+  double kv_ti = 0.0;
+  if (d && !gaps.empty()) run.timed("any motion T" + n, [&] {
+    for (const DiagramPoint& p : d->points) {
+      const bool in_gap = std::any_of(gaps.begin(), gaps.end(), [&](auto& g) { return g.first <= p.omega && p.omega <= g.second; });
+      if (!in_gap || p.motion == Motion::failed || (p.motion == Motion::periodic && p.n == 1) || p.x.rows() == 0) continue;
+      const MeshMotionMeasures m = mesh_motion_measures(hb, p.x.row(0).transpose(), p.v.row(0).transpose(), p.omega, 16,
+                                                        512, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
+                                                        r.curve.scaling.x.cwiseAbs().maxCoeff());
+      kv_ti = std::max(kv_ti, m.dynamic_factor);
+      rms = std::max(rms, m.dte_rms);
+    }
+    return 0;
+  });
+  if (kv_ti > kv) kv = kv_ti, from = 0;
+  if (d && !gaps.empty()) key.add("max_kv_time_integration_" + n, kv_ti, "-");
+  key.add("max_kv_any_motion_" + n, kv, "-");
+  key.add("max_kv_any_motion_from_" + n, from, "-");
+  key.add("max_dte_rms_any_motion_um_" + n, rms * 1e6, "um");
+  key.add("any_motion_complete_" + n, p1_everywhere || d || uncovered(lo, hi, stable).empty() ? 1 : 0, "-");
 }
 
 // HB against GSL time integration of the same model at stable points (mesh_time_integration_check).
@@ -770,7 +893,8 @@ int main(int argc, char** argv) {
               "with a speed range the response over speed (both flanks, Floquet, K_v) and ISO 6336-1's K_v.\n"
               "Writes DIR/path_of_contact.csv, ste_<i>.csv (one per torque), spectrum.csv, harris.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
-              "also frc_<i>.csv, bifurcations_<i>.csv, check_time_integration_<i>.csv, modes.csv,\n"
+              "also frc_<i>.csv (with the period-2 and period-4 branches: columns period, branch), bifurcations_<i>.csv,\n"
+              "check_time_integration_<i>.csv, modes.csv,\n"
               "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
               "fillet_stress_<i>.csv, contact_<i>.csv; a helical or lead-modified face also load_map_<i>.csv.\n\n" +
                   gear_file_help());

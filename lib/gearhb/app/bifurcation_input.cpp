@@ -57,6 +57,21 @@ std::string bifurcation_diagram_help() {
          "                        writes bifurcation_diagram.csv and bifurcation_diagram.png\n";
 }
 
+int read_period_doubling_depth(const nlohmann::json& root, const std::string& file) {
+  if (!root.is_object() || !root.contains("period_doubling")) return 1;
+  const nlohmann::json& j = root["period_doubling"];
+  if (!j.is_object()) fail_key(file, "period_doubling", "must be an object ({\"depth\": 0 | 1 | 2})");
+  only_keys(j, file, "period_doubling", {"depth"});
+  return j.contains("depth") ? json_whole(j["depth"], file, "period_doubling.depth", 0, max_period_doubling_depth) : 1;
+}
+
+std::string period_doubling_help() {
+  return "  period_doubling.depth 0: none; 1 (default): a period-2 branch by harmonic balance (base frequency\n"
+         "                        omega/2, 2H harmonics) from each located period doubling of the curve;\n"
+         "                        2: also a period-4 branch (omega/4, 4H harmonics) from each located period\n"
+         "                        doubling of every period-2 branch (rows of period 2 and 4 in the tables)\n";
+}
+
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead) {

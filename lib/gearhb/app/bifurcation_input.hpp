@@ -33,6 +33,15 @@ BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, con
 // --help text of the key.
 std::string bifurcation_diagram_help();
 
+// The `period_doubling` key both programs share (issue 34 §1): {"depth": 0 | 1 | 2}, absent or
+// without depth: 1. 0: no branch switching; 1: a period-2 branch by harmonic balance from each
+// located period doubling of every period-1 curve; 2: also a period-4 branch from each located
+// period doubling of every period-2 branch (hb/period_doubling.hpp period_doubling_cascade). A
+// depth out of range or another key is a UsageError naming the key (exit 2).
+constexpr int max_period_doubling_depth = 2;
+int read_period_doubling_depth(const nlohmann::json& root, const std::string& file);
+std::string period_doubling_help();
+
 // The rows of one diagram: the cells `lead(omega)` (the program's frequency columns), then
 // sweep (up | down), the value scale q' x of each Poincare point, motion, n and lyapunov
 // (empty where not computed). A period-n point writes its n distinct points (the others repeat

@@ -196,10 +196,7 @@ void read_settings(const json& j, const std::string& path, int n, ModelFile& m) 
     m.ds_max = number(solver["ds_max"], path, "solver.ds_max");
     if (m.ds_max < 1e-6 || m.ds_max > 1) fail(path, "solver.ds_max", "must be in [1e-6, 1]");
   }
-  const json pd = j.value("period_doubling", json::object());
-  only_keys(pd, path, "period_doubling", {"depth"});
-  if (pd.contains("depth"))
-    m.period_doubling_depth = whole(pd["depth"], path, "period_doubling.depth", 0, 1);
+  m.period_doubling_depth = read_period_doubling_depth(j, path);
 }
 
 }  // namespace
@@ -255,9 +252,6 @@ std::string model_file_help() {
          "  output.direction      n numbers: the plotted coordinate q'x\n"
          "  solver.exact_contact  flag (true | false, or 1 | 0): exact projection of the contact law (default), else sampled AFT\n"
          "  solver.ds_max         largest arc-length step (default 0.02)\n"
-         "  period_doubling.depth 0: none; 1 (default): a period-2 branch by harmonic balance (base frequency\n"
-         "                        omega/2, 2H harmonics) from each located period doubling of the curve\n"
-         "                        (period-4 branches, depth 2, not yet)\n"
          "  torus                 optional object: a torus branch (quasi-periodic motion) by two-frequency\n"
          "                        harmonic balance from each Neimark-Sacker point of the curve (absent: none)\n"
          "  torus.harmonics1      H1 harmonics of omega on the torus (default min(10, H); 1..H)\n"
@@ -266,7 +260,7 @@ std::string model_file_help() {
          "  torus.lines           lines in the second angle for the contact forces (default 0 = 4 (2 H2 + 1))\n"
          "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.005; (0, 0.5])\n"
          "  torus.max_points      most points per torus branch (default 200)\n" +
-         bifurcation_diagram_help() +
+         period_doubling_help() + bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"
          "  unknowns: densely when the contacts touch every DOF (1 DOF: about 0.15 s a point at H = 255,\n"

@@ -103,13 +103,13 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label,
-                               const RowProgress& progress, const ResponseLayout& layout) {
+                               const RowProgress& progress, const BranchLabel& label, const ResponseLayout& layout) {
   ResponseEvaluator ev(hb, q);
   Table t(columns_of(frequency_columns(layout.axis), response_columns(), extra));
   for (std::size_t i = 0; i < c.branch.points.size(); ++i) {
     if (progress) progress(i);
     std::vector<Table::Cell> row =
-        common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "", {}, layout);
+        common_row(ev, c, i, exact_point(hb, c, i, {q}), contact_label ? contact_label(i) : "", label, layout);
     if (!extra.empty()) {
       const std::vector<Table::Cell> more = extra_row(i);
       row.insert(row.end(), more.begin(), more.end());
@@ -153,7 +153,7 @@ Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branch
 }
 
 Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c) {
-  return frequency_response_table(hb, c, Eigen::VectorXd::Constant(1, 1.0), {}, {}, {}, {}, {FrequencyAxis::mesh});
+  return frequency_response_table(hb, c, Eigen::VectorXd::Constant(1, 1.0), {}, {}, {}, {}, {}, {FrequencyAxis::mesh});
 }
 
 }  // namespace gearhb

@@ -54,12 +54,14 @@ Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& 
                                const RowProgress& progress = {});
 // The same with a program's own columns after the common ones: `extra` names them and
 // `extra_row(i)` gives point i's cells; `contact_label(i)`, if given, is point i's `contact`
-// in the program's vocabulary (e.g. a gear mesh's full | drive_loss | back_impact | ...).
+// in the program's vocabulary (e.g. a gear mesh's full | drive_loss | back_impact | ...);
+// `label` the rows' period and branch (a period-2 branch: hb its period-2 model).
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const Eigen::VectorXd& q,
                                const std::vector<std::string>& extra,
                                const std::function<std::vector<Table::Cell>(std::size_t)>& extra_row,
                                const std::function<std::string(std::size_t)>& contact_label = {},
-                               const RowProgress& progress = {}, const ResponseLayout& layout = {});
+                               const RowProgress& progress = {}, const BranchLabel& label = {},
+                               const ResponseLayout& layout = {});
 // The frequency response of a model file (gearhb_frc): the common columns for the output
 // coordinate, then q<i>_max, q<i>_min, q<i>_h1 for every DOF i = 1..n, then
 // q<i>_max_exact, q<i>_min_exact, q<i>_h1_exact, then contact_<j> for every contact j =

@@ -234,17 +234,19 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
     for (const auto& o : out) reached = reached || o.to == int(i);
     if (reached) continue;
     PeriodDoubledBranch r;
+    const double P = pdo.period;   // hb's omegas are the forcing frequency / P
+    r.period = 2 * pdo.period;
     r.from = i;
-    r.omega_start = bf.omega;
+    r.omega_start = P * bf.omega;
     std::ostringstream os;
-    os << "period-2 branch from the PD at omega = " << bf.omega << ": ";
+    os << "period-" << r.period << " branch from the PD at omega = " << P * bf.omega << ": ";
     try {
       r.model = subharmonic_model(hb, 2);
       const HarmonicBalance& hbp = *r.model;
       const SwitchPoint sp = critical_direction(hb, c, bf, opt, pdo, hbp);
       const BranchPoint& at = sp.branch_point;
       const Eigen::VectorXd& phi = sp.phi;
-      r.omega_branch_point = at.omega;
+      r.omega_branch_point = P * at.omega;
       r.direction_agreement = sp.agreement;
       Scaling s = c.scaling;
       s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
@@ -310,30 +312,30 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
       const BranchPoint& last = b.points.back();
       if (!b.complete) {
         const Failure& f = b.failures.empty() ? Failure{last.omega, 0.0, 0.0, "stopped"} : b.failures.back();
-        os << "failed at omega = " << 2.0 * f.omega << ": " << f.what;
+        os << "failed at omega = " << 2.0 * P * f.omega << ": " << f.what;
         r.end = PeriodDoubledBranch::End::failed;
-        r.omega_end = 2.0 * f.omega;
+        r.omega_end = 2.0 * P * f.omega;
       } else if (b.points.size() >= 3 && subharmonic_part(hbp, 2, last.X).dot(prev_odd) < 0.0) {
         try {
           b.points.back() = merge_point(hbp, b.points[b.points.size() - 2], last, s, prev_odd, co.tolerance);
         } catch (const std::exception&) {
           b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
         }
-        r.omega_end = 2.0 * b.points.back().omega;
+        r.omega_end = 2.0 * P * b.points.back().omega;
         double dmin = INFINITY;
         for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
           const auto& o = c.bifurcations[k];
-          const double dk = std::fabs(o.omega - r.omega_end);
+          const double dk = std::fabs(P * o.omega - r.omega_end);
           if (o.type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, r.to = int(k);
         }
         if (r.to >= 0 && dmin > 1e-3 * std::fabs(r.omega_end)) r.to = -1;
         r.end = PeriodDoubledBranch::End::merged;
-        os << "merges with the period-1 branch at omega = " << r.omega_end;
-        if (r.to >= 0) os << " (the PD located at " << c.bifurcations[std::size_t(r.to)].omega << ")";
-        else os << " where no PD of the period-1 branch was located";
+        os << "merges with the period-" << pdo.period << " branch at omega = " << r.omega_end;
+        if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
+        else os << " where no PD of the period-" << pdo.period << " branch was located";
       } else {
         r.end = PeriodDoubledBranch::End::left_range;
-        r.omega_end = 2.0 * last.omega;
+        r.omega_end = 2.0 * P * last.omega;
         os << "leaves the range at omega = " << r.omega_end;
       }
       c2.branch = std::move(b);
@@ -343,10 +345,10 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
       o2.omega_min /= 2.0;
       o2.omega_max /= 2.0;
       if (opt.step_progress)   // reported in the forcing frequency
-        o2.step_progress = [&opt](const std::string& step, const ContinuationProgress& q) {
+        o2.step_progress = [&opt, &r](const std::string& step, const ContinuationProgress& q) {
           ContinuationProgress f = q;
-          f.omega *= 2.0;
-          opt.step_progress("period-2 " + step, f);
+          f.omega *= r.period;
+          opt.step_progress("period-" + std::to_string(r.period) + " " + step, f);
         };
       analyse_stability(hbp, o2, c2);
     } catch (const std::exception& e) {
@@ -357,6 +359,85 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
     out.push_back(std::move(r));
   }
   return out;
+}
+
+bool has_points(const PeriodDoubledBranch& b) {
+  return !b.curve.branch.points.empty() && b.curve.stable.size() == b.curve.branch.points.size();
+}
+
+std::vector<int> branch_starts(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd, int parent) {
+  std::vector<int> starts(c.bifurcations.size(), -1);
+  for (std::size_t k = 0; k < pd.size(); ++k)
+    if (pd[k].parent == parent && has_points(pd[k]) && pd[k].from < starts.size()) starts[pd[k].from] = int(k) + 1;
+  return starts;
+}
+
+std::vector<PeriodDoubledBranch> period_doubling_cascade(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                         const SweepOptions& opt, int depth, PeriodDoublingOptions pdo) {
+  std::vector<PeriodDoubledBranch> out;
+  if (depth < 1) return out;
+  pdo.period = 1;
+  out = period_doubled_branches(hb, c, opt, pdo);
+  SweepOptions o = opt;   // in the base frequency of the parents' models
+  std::size_t begin = 0;
+  for (int d = 2; d <= depth; ++d) {
+    const std::size_t end = out.size();
+    o.omega_min /= 2.0;
+    o.omega_max /= 2.0;
+    for (std::size_t k = begin; k < end; ++k) {
+      if (!has_points(out[k])) continue;
+      pdo.period = out[k].period;
+      std::vector<PeriodDoubledBranch> more = period_doubled_branches(*out[k].model, out[k].curve, o, pdo);
+      for (auto& b : more) {
+        b.parent = int(k);
+        out.push_back(std::move(b));
+      }
+    }
+    begin = end;
+  }
+  return out;
+}
+
+Intervals stable_intervals(const FrequencyCurve& c, int period) {
+  const auto& P = c.branch.points;
+  Intervals out;
+  if (c.stable.size() != P.size()) return out;
+  for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+    const double a = period * P[k].omega, b = period * P[k + 1].omega;
+    if (c.stable[k] && c.stable[k + 1]) {
+      out.emplace_back(std::min(a, b), std::max(a, b));
+    } else if (c.stable[k] != c.stable[k + 1]) {
+      double at = 0.5 * (a + b);
+      for (const auto& bf : c.bifurcations)
+        if (bf.after_point == int(k)) {
+          at = period * bf.omega;
+          break;
+        }
+      const double from = c.stable[k] ? a : b;
+      out.emplace_back(std::min(from, at), std::max(from, at));
+    }
+  }
+  if (P.size() == 1 && c.stable[0]) out.emplace_back(period * P[0].omega, period * P[0].omega);
+  std::sort(out.begin(), out.end());
+  Intervals merged;
+  for (const auto& iv : out)
+    if (!merged.empty() && iv.first <= merged.back().second) merged.back().second = std::max(merged.back().second, iv.second);
+    else merged.push_back(iv);
+  return merged;
+}
+
+Intervals uncovered(double lo, double hi, Intervals covered) {
+  std::sort(covered.begin(), covered.end());
+  const double tiny = 1e-9 * (hi - lo);
+  Intervals gaps;
+  double at = lo;
+  for (const auto& [a, b] : covered) {
+    if (a - at > tiny && a > lo) gaps.emplace_back(at, std::min(a, hi));
+    at = std::max(at, b);
+    if (at >= hi) break;
+  }
+  if (hi - at > tiny) gaps.emplace_back(at, hi);
+  return gaps;
 }
 
 }  // namespace gearhb

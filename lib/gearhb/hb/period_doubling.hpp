@@ -51,10 +51,12 @@
 //
 // Stability of the period-2 points: analyse_stability on the period-2 model, i.e. Floquet
 // multipliers of the orbit corrected by shooting over two forcing periods, and its own
-// bifurcations (its PDs would start period-4 branches: depth 1 = period 2 only for now).
+// bifurcations (its PDs start period-4 branches: period_doubling_cascade, the same switch on
+// the period-2 model as hb, PeriodDoublingOptions::period = 2).
 // Models with a time-varying contact stiffness have no exact flow: the switch reports it.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -78,7 +80,11 @@ Eigen::VectorXd subharmonic_part(const HarmonicBalance& hbp, int p, const Eigen:
 
 struct PeriodDoublingOptions {
   double step = 0.02;    // scaled arc length of the first point off the PD
-  int samples = 512;     // samples of the eigen-solution over one forcing period
+  int samples = 512;     // samples of the eigen-solution over one period of hb
+  // hb's period in forcing periods: 1 for the forced model, 2 for a period-2 model (its
+  // branches are period 4; period_doubling_cascade). The branches' omegas and messages are
+  // forcing frequencies, period x hb's.
+  int period = 1;
 };
 
 // Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
@@ -95,7 +101,8 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
                                const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp);
 
 struct PeriodDoubledBranch {
-  int period = 2;
+  int period = 2;                // forcing periods of its orbits (2 x PeriodDoublingOptions::period)
+  int parent = -1;               // period_doubling_cascade: the index of the branch whose PD starts it (-1: c)
   std::size_t from = 0;          // index in c.bifurcations of the PD it starts at
   double omega_start = NAN;      // forcing frequency of that PD [rad/s]
   double omega_branch_point = NAN;   // the period-2 model's branch point there (SwitchPoint) [rad/s]
@@ -115,5 +122,32 @@ struct PeriodDoubledBranch {
 std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
                                                          const SweepOptions& opt,
                                                          const PeriodDoublingOptions& pdo = {});
+
+// Period-doubled branches up to period 2^depth (issue 34 §1: depth 1 period 2, 2 also period 4):
+// the period-2 branches of c, then the branches from the period doublings of each branch with
+// points (its model doubled again: 2^d H harmonics), level by level; `parent` the index in the
+// list of the branch a PD of which starts it (-1: c); omegas are forcing frequencies. depth < 1:
+// none.
+std::vector<PeriodDoubledBranch> period_doubling_cascade(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                         const SweepOptions& opt, int depth,
+                                                         PeriodDoublingOptions pdo = {});
+
+// The branches of pd that have rows to write: points, each with its stability.
+bool has_points(const PeriodDoubledBranch& b);
+// For each bifurcation of c (the curve of pd[parent], or the period-1 curve for -1), the id
+// (k + 1) of the branch pd[k] with points that it starts, -1 where none (the `starts_branch`
+// column of the bifurcation table).
+std::vector<int> branch_starts(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd, int parent = -1);
+
+// Where a curve has a stable orbit (issue 34 §4: the ranges with no stable period-1 orbit are
+// the gaps of its period-1 curve's intervals). Forcing-frequency intervals, merged, in increasing
+// omega: each stretch between two consecutive stable points, and where the stability changes
+// between two points, from the stable one to the bifurcation located between them (the chord's
+// midpoint if none is listed there); `period`: the curve's omegas are omega / period.
+using Intervals = std::vector<std::pair<double, double>>;
+Intervals stable_intervals(const FrequencyCurve& c, int period = 1);
+// [lo, hi] less the union of `covered`: the gaps, in increasing omega (none narrower than
+// 1e-9 (hi - lo)).
+Intervals uncovered(double lo, double hi, Intervals covered);
 
 }  // namespace gearhb

@@ -245,7 +245,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
                           "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
-                          "bifurcation_diagram"});
+                          "bifurcation_diagram", "period_doubling"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   const Reader r{path};
   GearFile f;
@@ -445,6 +445,9 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   f.diagram = read_bifurcation_diagram(j, path);
   if (f.diagram.on && !f.dynamics.present)
     fail_key(path, "bifurcation_diagram", "needs the speed range of the dynamics (speed)");
+  f.period_doubling_depth = read_period_doubling_depth(j, path);
+  if (j.contains("period_doubling") && !f.dynamics.present)
+    fail_key(path, "period_doubling", "needs the speed range of the dynamics (speed)");
   return f;
 }
 
@@ -537,7 +540,9 @@ std::string gear_file_help() {
          "  dynamics.time_check_points   stable points per curve checked by GSL time integration (default 8)\n"
          "  dynamics.iso_quality_grade   ISO 1328-1 grade of ISO 6336-1 method B's K_v (default 5)\n" +
          bifurcation_diagram_help() +
-         "                        (per torque, over the speed range, the DTE at each mesh period; needs speed)\n"
+         "                        (per torque, over the speed range, the DTE at each mesh period; needs speed)\n" +
+         period_doubling_help() +
+         "                        (per torque, frc_<i>.csv and bifurcations_<i>.csv; needs speed)\n"
          "  gears[i].mass, gears[i].bearing_stiffness  [kg], [N/m]: the six_dof model\n"
          "Checks (exit 2, one line naming the key): tip thickness s(ra) >= 0.2 m, tip clearance, involute\n"
          "interference, contact ratio >= 1, relief start inside the path of contact and above the base circle.\n"

@@ -213,6 +213,28 @@ MeshOrbitMeasures mesh_orbit_measures(const HarmonicBalance& hb, const Eigen::Ve
   return m;
 }
 
+namespace {
+
+// The smallest and largest mesh force N = drive - back over time samples (rows of xs, `per_period`
+// uniform samples a forcing period from phase 0), with the model's own contact law.
+std::pair<double, double> sampled_mesh_force_range(const HarmonicBalance& hb, const Eigen::MatrixXd& xs, int per_period) {
+  double Nmax = -INFINITY, Nmin = INFINITY;
+  for (Eigen::Index j = 0; j < xs.rows(); ++j) {
+    const double th = 2.0 * M_PI * double(j % per_period) / double(per_period);
+    double N = 0.0;
+    for (std::size_t k = 0; k < hb.contacts().size(); ++k) {
+      const UnilateralContact& ct = hb.contacts()[k];
+      double u = ct.gap + ct.normal.dot(xs.row(j).transpose());
+      if (ct.gap_harmonics.size() > 0) u += trig_series(ct.gap_harmonics, th);
+      N += (k == 0 ? 1.0 : -1.0) * contact_force(stiffness_at(ct, th), u);
+    }
+    Nmax = std::max(Nmax, N), Nmin = std::min(Nmin, N);
+  }
+  return {Nmin, Nmax};
+}
+
+}  // namespace
+
 MeshCurveSummary mesh_curve_summary(const HarmonicBalance& hb, const FrequencyCurve& c, double F0,
                                     const Eigen::VectorXd& q) {
   MeshCurveSummary s;
@@ -288,18 +310,7 @@ std::vector<MeshTimeComparison> mesh_time_integration_check(
     }
     // DTE and mesh force on the integrated period, with the model's own contact law
     const Eigen::VectorXd x = st.x * q;
-    double Nmax = -INFINITY, Nmin = INFINITY;
-    for (Eigen::Index j = 0; j < st.x.rows(); ++j) {
-      const double th = 2.0 * M_PI * double(j) / double(st.x.rows());
-      double N = 0.0;
-      for (std::size_t k = 0; k < hb.contacts().size(); ++k) {
-        const UnilateralContact& ct = hb.contacts()[k];
-        double u = ct.gap + ct.normal.dot(st.x.row(j).transpose());
-        if (ct.gap_harmonics.size() > 0) u += trig_series(ct.gap_harmonics, th);
-        N += (k == 0 ? 1.0 : -1.0) * contact_force(stiffness_at(ct, th), u);
-      }
-      Nmax = std::max(Nmax, N), Nmin = std::min(Nmin, N);
-    }
+    const auto [Nmin, Nmax] = sampled_mesh_force_range(hb, st.x, int(st.x.rows()));
     MeshTimeComparison r;
     r.omega = P[i].omega;
     r.contact = s.points[i].contact;
@@ -313,6 +324,21 @@ std::vector<MeshTimeComparison> mesh_time_integration_check(
     out.push_back(r);
   }
   return out;
+}
+
+MeshMotionMeasures mesh_motion_measures(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                        double omega, int periods, int samples, double F0, const Eigen::VectorXd& q,
+                                        double x_scale) {
+  TimeIntegrationOptions opt;
+  opt.x_scale = x_scale;
+  opt.samples_per_period = samples;
+  const Eigen::MatrixXd xs = TimeIntegrator(hb).sample(x0, v0, omega, 0, periods, opt);
+  const Eigen::VectorXd x = xs * q;
+  const auto [Nmin, Nmax] = sampled_mesh_force_range(hb, xs, samples);
+  MeshMotionMeasures m;
+  m.dte_rms = std::sqrt((x.array() - x.mean()).square().mean());
+  m.dynamic_factor = std::max(Nmax, -Nmin) / F0;
+  return m;
 }
 
 }  // namespace gearhb

@@ -169,4 +169,19 @@ std::vector<MeshTimeComparison> mesh_time_integration_check(
     const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s, double F0, const Eigen::VectorXd& q,
     int points = 8, const std::function<void(std::size_t point, int period, double mismatch)>& progress = {});
 
+// The DTE and the dynamic factor of a time-integrated motion that need not be periodic (where
+// no stable periodic orbit of the harmonic balance exists: period-n, chaotic): from (x0, v0) at
+// phase 0 and omega, `periods` forcing periods of GSL rk8pd (TimeIntegrator::sample, x_scale the
+// typical displacement), `samples` per period; the DTE RMS of the oscillating part over all the
+// samples and K_v = max |N| / F0 over them (N the mesh force of the model's own contact law at
+// each sample: a sampled maximum, a lower bound of the true one by the force's variation between
+// samples).
+struct MeshMotionMeasures {
+  double dte_rms = 0.0;          // [m]
+  double dynamic_factor = 0.0;   // max |N| / F0
+};
+MeshMotionMeasures mesh_motion_measures(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                                        double omega, int periods, int samples, double F0, const Eigen::VectorXd& q,
+                                        double x_scale);
+
 }  // namespace gearhb

@@ -1,0 +1,174 @@
+// Period-2 branches of a gear mesh (issue 34 §1-§4; gearhb_gear with hb/period_doubling.hpp)
+// and what the gear does where period 1 is unstable. The light-load relieved pair of
+// gearhb_gear's thesis_pair_light_load.json at 20 N m (zeta 0.03, H = 10, both flanks), over
+// the speeds of its first period doublings. Each check names its independent truth:
+//  - the stable period-2 HB orbits are period-2 motions of the ORIGINAL mesh model by GSL rk8pd
+//    time integration at the mesh frequency (no harmonic balance): after a transient the
+//    integration returns to the shooting-corrected period-2 state every two mesh periods and
+//    not every one; the HB orbit's DTE RMS and K_v against the integrated ones within the bound
+//    that HB's own orbit error gives (|rms_ac(a) - rms_ac(b)| <= max |a - b|; |N_a - N_b| <=
+//    kc max |x_a - x_b| for the piecewise-linear flank law);
+//  - stable_intervals / uncovered (the ranges with no stable period-1 orbit) against the
+//    stability flags of the points themselves.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
+#include "gearhb/hb/time_integration.hpp"
+
+using namespace gearhb;
+
+namespace {
+
+struct LightLoad {
+  DteGear g;
+  HarmonicBalance hb;
+  SweepOptions o;
+  FrequencyCurve c;
+  std::vector<PeriodDoubledBranch> br;
+  static DteGear mesh() {
+    PairSteModel m;
+    m.pair_hertz = TwoPairHertz::consistent;
+    m.relief1 = m.relief2 =
+        tip_relief(m.gear1, 13.9165e-6, ReliefStart::length, 8.856394302280649e-3, ReliefShape::linear);
+    return gear_pair_mesh(m, pair_ste(m, mesh_phases(m, 64), 20.0), 20.0, 0.0158, 0.0158, 0.03, 15e-6);
+  }
+  LightLoad() : g(mesh()), hb(gear_mesh_model(g, MeshDofs::one_dof, {}, 10, 0, DteModel::constant)) {
+    o.omega_min = 2.0 * M_PI * 300.0, o.omega_max = 2.0 * M_PI * 1400.0;
+    o.continuation.ds_max = 0.05;
+    c = sweep_frequency(hb, o, "light load");
+    br = period_doubled_branches(hb, c, o);
+  }
+};
+const LightLoad& light() {
+  static const LightLoad e;
+  return e;
+}
+
+// GSL rk8pd on the ORIGINAL model at the mesh frequency from point i's HB state of branch b
+// (period p mesh periods): `transient` mesh periods (a multiple of p), then p more; the state
+// must be back at the shooting-corrected one after p periods and not after p / 2 (`apart`: how
+// far the half-period state must lie, in x_scale). Returns the settled state (xs, vs row 0).
+void expect_period_p(const TimeIntegrator& ti, const PeriodDoubledBranch& b, std::size_t i, int transient,
+                     const TimeIntegrationOptions& to, double apart, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs) {
+  const BranchPoint& q = b.curve.branch.points[i];
+  const int p = b.period;
+  const double omega = p * q.omega;   // the mesh frequency
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(*b.model, q.X, q.omega, x0, v0);
+  ti.poincare(x0, v0, omega, transient, p, to, xs, vs);
+  EXPECT_LT((xs.row(0).transpose() - b.curve.floquet[i].x0).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
+  EXPECT_LT((xs.row(p) - xs.row(0)).cwiseAbs().maxCoeff(), 1e-7 * to.x_scale) << omega;
+  EXPECT_GT((xs.row(p / 2) - xs.row(0)).cwiseAbs().maxCoeff(), apart * to.x_scale) << omega;
+}
+
+}  // namespace
+
+TEST(GearPeriodDoubling, LightLoadStablePeriodTwoOrbitsAreSeenByTimeIntegration) {
+  const auto& e = light();
+  ASSERT_TRUE(e.c.complete) << e.c.failure;
+  ASSERT_FALSE(e.br.empty());
+  const Eigen::VectorXd q = dte_coordinate(MeshDofs::one_dof);
+  const TimeIntegrator ti(e.hb);   // the ORIGINAL model, at the mesh frequency
+  TimeIntegrationOptions to;
+  to.x_scale = e.c.scaling.x[0];
+  int compared = 0;
+  for (const auto& b : e.br) {
+    if (!has_points(b)) continue;
+    const auto& P = b.curve.branch.points;
+    const MeshCurveSummary s = mesh_curve_summary(*b.model, b.curve, e.g.F0, q);
+    for (std::size_t i = 1; i < P.size() && compared < 6; i += std::max<std::size_t>(1, P.size() / 5)) {
+      const PointFloquet& f = b.curve.floquet[i];
+      if (!b.curve.stable[i] || !f.corrected || f.modulus > 0.9) continue;
+      const double omega = 2.0 * P[i].omega;   // the mesh frequency
+      // from the HB state, 400 mesh periods (|mu| <= 0.9 per two: < 1e-9 of a start error left);
+      // back at the corrected period-2 state after two periods, not after one
+      Eigen::MatrixXd xs, vs;
+      expect_period_p(ti, b, i, 400, to, 1e-3, xs, vs);
+      // DTE RMS and K_v of the integrated motion (two periods from the settled state), sampled
+      // at two resolutions: the finer one's distance to the coarser bounds its crest deficiency
+      const MeshMotionMeasures fine = mesh_motion_measures(e.hb, xs.row(0).transpose(), vs.row(0).transpose(), omega,
+                                                           2, 16384, e.g.F0, q, to.x_scale);
+      const MeshMotionMeasures coarse = mesh_motion_measures(e.hb, xs.row(0).transpose(), vs.row(0).transpose(),
+                                                             omega, 2, 4096, e.g.F0, q, to.x_scale);
+      const double err = f.orbit_error;
+      EXPECT_NEAR(s.points[i].dte_rms, fine.dte_rms, err + std::fabs(fine.dte_rms - coarse.dte_rms) + 1e-12) << omega;
+      EXPECT_NEAR(s.points[i].dynamic_factor, fine.dynamic_factor,
+                  e.g.kc * err / e.g.F0 + std::fabs(fine.dynamic_factor - coarse.dynamic_factor) + 1e-12)
+          << omega;
+      ++compared;
+    }
+  }
+  EXPECT_GE(compared, 2);
+}
+
+TEST(GearPeriodDoubling, RangesWithoutAStablePeriodOneOrbit) {
+  const auto& e = light();
+  const auto& P = e.c.branch.points;
+  const Intervals st = stable_intervals(e.c);
+  const Intervals gaps = uncovered(e.o.omega_min, e.o.omega_max, st);
+  ASSERT_FALSE(gaps.empty());   // the period doublings of this range
+  // every stable point lies in a stable interval and outside every gap; a speed inside a gap
+  // has no stable point within the chord that brackets it
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    if (!e.c.stable[i]) continue;
+    for (const auto& [a, b] : gaps) EXPECT_FALSE(a < P[i].omega && P[i].omega < b) << P[i].omega;
+  }
+  for (const auto& [a, b] : gaps) {
+    const double mid = 0.5 * (a + b);
+    for (std::size_t k = 0; k + 1 < P.size(); ++k) {
+      const double lo = std::min(P[k].omega, P[k + 1].omega), hi = std::max(P[k].omega, P[k + 1].omega);
+      if (lo <= mid && mid <= hi) {
+        EXPECT_FALSE(e.c.stable[k] && e.c.stable[k + 1]) << mid;
+      }
+    }
+  }
+  // each gap ends at a located bifurcation of the curve (or the range's end)
+  for (const auto& [a, b] : gaps) {
+    for (double w : {a, b}) {
+      bool at = w == e.o.omega_min || w == e.o.omega_max;
+      for (const auto& bf : e.c.bifurcations) at = at || std::fabs(bf.omega - w) <= 1e-12 * w;
+      EXPECT_TRUE(at) << w;
+    }
+  }
+}
+
+TEST(GearPeriodDoubling, UncoveredIsTheComplement) {
+  const Intervals gaps = uncovered(0.0, 10.0, {{2.0, 3.0}, {-1.0, 1.0}, {2.5, 4.0}, {9.0, 12.0}});
+  ASSERT_EQ(gaps.size(), 2u);
+  EXPECT_EQ(gaps[0], std::make_pair(1.0, 2.0));
+  EXPECT_EQ(gaps[1], std::make_pair(4.0, 9.0));
+  EXPECT_EQ(uncovered(0.0, 1.0, {}).size(), 1u);
+  EXPECT_TRUE(uncovered(0.0, 1.0, {{-1.0, 2.0}}).empty());
+}
+
+TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration) {
+  // Depth 2: the period-4 branches from the period doublings of the period-2 branches; their
+  // stable orbits against GSL rk8pd on the original model: back at the shooting-corrected
+  // period-4 state every four mesh periods, not every two.
+  const auto& e = light();
+  const std::vector<PeriodDoubledBranch> all = period_doubling_cascade(e.hb, e.c, e.o, 2);
+  const TimeIntegrator ti(e.hb);
+  TimeIntegrationOptions to;
+  to.x_scale = e.c.scaling.x[0];
+  int compared = 0, period4 = 0;
+  for (const auto& b : all) {
+    if (b.period != 4 || !has_points(b)) continue;
+    ++period4;
+    ASSERT_GE(b.parent, 0);
+    EXPECT_EQ(all[std::size_t(b.parent)].period, 2);
+    const auto& P = b.curve.branch.points;
+    for (std::size_t i = 1; i < P.size() && compared < 4; i += std::max<std::size_t>(1, P.size() / 4)) {
+      const PointFloquet& f = b.curve.floquet[i];
+      if (!b.curve.stable[i] || !f.corrected || f.modulus > 0.9) continue;
+      Eigen::MatrixXd xs, vs;
+      expect_period_p(ti, b, i, 800, to, 1e-4, xs, vs);   // 800: a whole number of period-4 orbits
+      ++compared;
+    }
+  }
+  EXPECT_GE(period4, 1);
+  EXPECT_GE(compared, 1);
+}
