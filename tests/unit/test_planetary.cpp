@@ -1,0 +1,91 @@
+// The planetary set of Lin & Parker 1999 (gears/sets/planetary.hpp). Each check names its
+// independent truth: the published natural frequencies (reference/lin_parker_1999.md) and
+// the mode structure Lin & Parker prove for equally spaced planets.
+#include <cmath>
+#include <map>
+#include <utility>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/gears/sets/planetary.hpp"
+
+using namespace gearhb;
+
+namespace {
+
+// Lin & Parker 1999's example system (their Table 1 data, as issue 36 quotes it).
+PlanetarySet lin_parker_1999(int planets) {
+  PlanetarySet s;
+  s.carrier = {5.43, 6.29, 1e8, 0.0};
+  s.ring = {2.35, 3.0, 1e8, 1e9};
+  s.sun = {0.4, 0.39, 1e8, 0.0};
+  s.planet_mass = 0.66;
+  s.planet_inertia_r2 = 0.61;
+  s.planet_bearing = 1e8;
+  s.sun_mesh = s.ring_mesh = 5e8;
+  s.sun_pressure_angle = s.ring_pressure_angle = 24.6 * M_PI / 180.0;
+  s.planet_angles = equally_spaced(planets);
+  return s;
+}
+
+double hz(double omega) { return omega / (2.0 * M_PI); }
+
+}  // namespace
+
+// Lin & Parker 1999 Table 1, N = 3: the rotational modes at 0, 1475.7, 1930.3, 2658.3, 7462.8
+// and 11775.3 Hz (printed to 0.1 Hz, so within 0.05 Hz).
+TEST(Planetary, LinParkerRotationalFrequenciesOfThreePlanets) {
+  const std::vector<double> published = {0.0, 1475.7, 1930.3, 2658.3, 7462.8, 11775.3};
+  std::vector<double> rotational;
+  for (const PlanetaryMode& m : planetary_modes(lin_parker_1999(3)))
+    if (m.type == ModeType::rotational) rotational.push_back(hz(m.omega));
+  ASSERT_EQ(rotational.size(), published.size());
+  for (std::size_t i = 0; i < published.size(); ++i) EXPECT_NEAR(rotational[i], published[i], 0.05) << i;
+}
+
+// Lin & Parker's theorem for N equally spaced planets: 6 rotational modes (multiplicity 1),
+// 6 pairs of translational modes (multiplicity 2), 3 planet modes of multiplicity N - 3, and
+// nothing else (3 (N + 3) DOFs = 6 + 12 + 3 (N - 3)).
+TEST(Planetary, ModeTypesAndMultiplicitiesForThreeToSixPlanets) {
+  for (int N = 3; N <= 6; ++N) {
+    const std::vector<PlanetaryMode> modes = planetary_modes(lin_parker_1999(N));
+    ASSERT_EQ(int(modes.size()), 3 * (N + 3));
+    std::map<ModeType, std::map<int, int>> groups;   // type -> multiplicity -> groups
+    int last_group = -1;
+    for (const PlanetaryMode& m : modes) {
+      if (m.group == last_group) continue;
+      last_group = m.group;
+      ++groups[m.type][m.multiplicity];
+    }
+    std::map<ModeType, std::map<int, int>> theorem = {{ModeType::rotational, {{1, 6}}},
+                                                      {ModeType::translational, {{2, 6}}}};
+    if (N > 3) theorem[ModeType::planet] = {{N - 3, 3}};
+    EXPECT_EQ(groups, theorem) << "N = " << N;
+  }
+}
+
+// Unequally spaced planets (0, 80, 180, 270 deg) break the structure the theorem needs:
+// no frequency stays double (the translational pairs split) and some modes move the
+// central members in rotation and translation at once.
+TEST(Planetary, UnequalSpacingMixesTheModeTypes) {
+  PlanetarySet s = lin_parker_1999(4);
+  s.planet_angles = {0.0, 80.0 * M_PI / 180.0, M_PI, 270.0 * M_PI / 180.0};
+  int mixed = 0, pairs = 0;
+  for (const PlanetaryMode& m : planetary_modes(s)) {
+    mixed += m.type == ModeType::mixed ? 1 : 0;
+    pairs += m.multiplicity == 2 ? 1 : 0;
+  }
+  EXPECT_GT(mixed, 0);
+  EXPECT_EQ(pairs, 0);
+}
+
+// The gyroscopic eigenproblem at carrier speed 0 is the symmetric one by another method
+// (first-order form, general Schur eigenvalues vs the generalised self-adjoint solver).
+TEST(Planetary, FirstOrderFormAtRestIsTheSymmetricProblem) {
+  const PlanetarySet s = lin_parker_1999(5);
+  const std::vector<PlanetaryMode> modes = planetary_modes(s);
+  const Eigen::VectorXd omega = natural_frequencies_at_speed(s, 0.0);
+  ASSERT_EQ(omega.size(), Eigen::Index(modes.size()));
+  for (std::size_t i = 1; i < modes.size(); ++i)
+    EXPECT_NEAR(omega(Eigen::Index(i)), modes[i].omega, 1e-8 * modes.back().omega) << i;
+}
