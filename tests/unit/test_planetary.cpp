@@ -28,7 +28,7 @@ PlanetarySet lin_parker_1999(int planets) {
   return s;
 }
 
-double hz(double omega) { return omega / (2.0 * M_PI); }
+double lp_hz(double omega) { return omega / (2.0 * M_PI); }
 
 }  // namespace
 
@@ -38,7 +38,7 @@ TEST(Planetary, LinParkerRotationalFrequenciesOfThreePlanets) {
   const std::vector<double> published = {0.0, 1475.7, 1930.3, 2658.3, 7462.8, 11775.3};
   std::vector<double> rotational;
   for (const PlanetaryMode& m : planetary_modes(lin_parker_1999(3)))
-    if (m.type == ModeType::rotational) rotational.push_back(hz(m.omega));
+    if (m.type == ModeType::rotational) rotational.push_back(lp_hz(m.omega));
   ASSERT_EQ(rotational.size(), published.size());
   for (std::size_t i = 0; i < published.size(); ++i) EXPECT_NEAR(rotational[i], published[i], 0.05) << i;
 }

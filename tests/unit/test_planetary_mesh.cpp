@@ -18,7 +18,7 @@ namespace {
 // Lin & Parker 1999's set (reference/lin_parker_1999.md) with its output held: ring
 // torsion 1e9 N/m as theirs, the carrier on an output shaft of 1e8 N/m (theirs is free),
 // so that the loaded set has a static equilibrium. Teeth of the example file.
-PlanetarySet held_set(int planets) {
+PlanetarySet pm_held_set(int planets) {
   PlanetarySet s;
   s.carrier = {5.43, 6.29, 1e8, 1e8};
   s.ring = {2.35, 3.0, 1e8, 1e9};
@@ -32,25 +32,25 @@ PlanetarySet held_set(int planets) {
   return s;
 }
 
-const PlanetaryTeeth kTeeth{27, 33, 93, 0.0032, 1.0};
+const PlanetaryTeeth kPmTeeth{27, 33, 93, 0.0032, 1.0};
 
-PlanetaryMeshes meshes(const PlanetarySet& s, double ratio) {
+PlanetaryMeshes pm_meshes(const PlanetarySet& s, double ratio) {
   PlanetaryMeshes m;
   m.sun = {5e8, 1.6, ratio};
   m.ring = {5e8, 1.8, ratio};
-  m.phases = mesh_phases(kTeeth, s.planet_angles, 0.3);
+  m.phases = mesh_phases(kPmTeeth, s.planet_angles, 0.3);
   return m;
 }
 
 // The static load: 100 N m on the sun, as a force on u_s (base radius 38.7 mm).
-Eigen::VectorXd sun_torque(const PlanetarySet& s) {
+Eigen::VectorXd pm_sun_torque(const PlanetarySet& s) {
   Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
   f0(coordinate(Body::sun, 2)) = 100.0 / 0.0387;
   return f0;
 }
 
 // The harmonic-balance solution at mesh frequency omega, by Newton from the closed-contact one.
-Eigen::VectorXd solve(const HarmonicBalance& hb, double omega) {
+Eigen::VectorXd pm_solve(const HarmonicBalance& hb, double omega) {
   Eigen::VectorXd X = hb.closed_contact_solution(omega);
   const NewtonReport r = newton_solve(hb, X, omega, hb.scaling(omega, omega));
   EXPECT_TRUE(r.converged) << r.message;
@@ -58,7 +58,7 @@ Eigen::VectorXd solve(const HarmonicBalance& hb, double omega) {
 }
 
 // Harmonic l of coordinate i as a complex amplitude X_c - i X_s.
-std::complex<double> harmonic(const Eigen::VectorXd& X, int n, int l, int i) {
+std::complex<double> pm_harmonic(const Eigen::VectorXd& X, int n, int l, int i) {
   return {X((2 * l - 1) * n + i), -X(2 * l * n + i)};
 }
 
@@ -69,18 +69,18 @@ std::complex<double> harmonic(const Eigen::VectorXd& X, int n, int l, int i) {
 // (x0 its static deflection), harmonic by harmonic (core frequency_response). The relative
 // difference is O(eps): checked at two eps ten apart (a convergence study), below 3 eps.
 TEST(PlanetaryMesh, SmallVariationIsTheLinearForcedResponse) {
-  const PlanetarySet s = held_set(4);
+  const PlanetarySet s = pm_held_set(4);
   const double omega = 2.0 * M_PI * 1000.0;
   const int H = 6, n = s.dofs();
   double err[2];
   for (int k = 0; k < 2; ++k) {
     const double eps = k == 0 ? 1e-3 : 1e-4;
-    const PlanetaryMeshes m = meshes(s, 1.0 + eps);
-    const HarmonicBalance hb = planetary_harmonic_balance(s, m, 0.02, sun_torque(s), H);
-    const Eigen::VectorXd X = solve(hb, omega);
+    const PlanetaryMeshes m = pm_meshes(s, 1.0 + eps);
+    const HarmonicBalance hb = planetary_harmonic_balance(s, m, 0.02, pm_sun_torque(s), H);
+    const Eigen::VectorXd X = pm_solve(hb, omega);
     const PlanetaryMatrices mat = planetary_matrices(s);
     const LinearSystem mean{mat.M, hb.system().C, mat.K_bearing + mat.K_mesh};
-    const Eigen::VectorXd x0 = mean.K.ldlt().solve(sun_torque(s));
+    const Eigen::VectorXd x0 = mean.K.ldlt().solve(pm_sun_torque(s));
     double diff = 0.0, size = 0.0;
     for (int l = 1; l <= 3; ++l) {
       Eigen::VectorXcd F = Eigen::VectorXcd::Zero(n);
@@ -97,7 +97,7 @@ TEST(PlanetaryMesh, SmallVariationIsTheLinearForcedResponse) {
       }
       const Eigen::VectorXcd x1 = frequency_response(mean, F, l * omega);
       for (int i = 0; i < n; ++i) {
-        diff += std::norm(harmonic(X, n, l, i) - x1(i));
+        diff += std::norm(pm_harmonic(X, n, l, i) - x1(i));
         size += std::norm(x1(i));
       }
     }
@@ -113,19 +113,19 @@ TEST(PlanetaryMesh, SmallVariationIsTheLinearForcedResponse) {
 // neither; 2, 3: translation; 5: rotation), N = 3 an in-phase one (every l: rotation).
 TEST(PlanetaryMesh, PhasingSelectsTheHarmonicsOfTheSun) {
   for (int N : {3, 5}) {
-    const PlanetarySet s = held_set(N);
+    const PlanetarySet s = pm_held_set(N);
     const int H = 10, n = s.dofs();
-    const HarmonicBalance hb = planetary_harmonic_balance(s, meshes(s, 1.5), 0.02, sun_torque(s), H);
-    const Eigen::VectorXd X = solve(hb, 2.0 * M_PI * 300.0);
+    const HarmonicBalance hb = planetary_harmonic_balance(s, pm_meshes(s, 1.5), 0.02, pm_sun_torque(s), H);
+    const Eigen::VectorXd X = pm_solve(hb, 2.0 * M_PI * 300.0);
     double rot[H + 1], tra[H + 1], largest = 0.0;
     for (int l = 1; l <= H; ++l) {
-      rot[l] = std::abs(harmonic(X, n, l, coordinate(Body::sun, 2)));
-      tra[l] = std::hypot(std::abs(harmonic(X, n, l, coordinate(Body::sun, 0))),
-                          std::abs(harmonic(X, n, l, coordinate(Body::sun, 1))));
+      rot[l] = std::abs(pm_harmonic(X, n, l, coordinate(Body::sun, 2)));
+      tra[l] = std::hypot(std::abs(pm_harmonic(X, n, l, coordinate(Body::sun, 0))),
+                          std::abs(pm_harmonic(X, n, l, coordinate(Body::sun, 1))));
       largest = std::max({largest, rot[l], tra[l]});
     }
     for (int l = 1; l <= H; ++l) {
-      const int r = (l * kTeeth.sun) % N;
+      const int r = (l * kPmTeeth.sun) % N;
       const bool rotational = r == 0, translational = r == 1 || r == N - 1;
       if (rotational) EXPECT_GT(rot[l], 1e-6 * largest) << "N " << N << " l " << l;
       else EXPECT_LT(rot[l], 1e-10 * largest) << "N " << N << " l " << l;
