@@ -14,16 +14,8 @@ using namespace gearhb;
 
 namespace {
 PlanetarySet lin_parker(int planets, double carrier_shaft) {
-  PlanetarySet s;
-  s.carrier = {5.43, 6.29, 1e8, carrier_shaft};
-  s.ring = {2.35, 3.0, 1e8, 1e9};
-  s.sun = {0.4, 0.39, 1e8, 0.0};
-  s.planet_mass = 0.66;
-  s.planet_inertia_r2 = 0.61;
-  s.planet_bearing = 1e8;
-  s.sun_mesh = s.ring_mesh = 5e8;
-  s.sun_pressure_angle = s.ring_pressure_angle = 24.6 * M_PI / 180.0;
-  s.planet_angles = equally_spaced(planets);
+  PlanetarySet s = lin_parker_1999_set(planets);
+  s.carrier.torsional = carrier_shaft;
   return s;
 }
 HarmonicBalance loaded(int planets) {

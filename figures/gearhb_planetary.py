@@ -9,7 +9,11 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
                 (AC RMS of its rotation u_s and of its centre) with the points whose
                 Floquet multipliers were computed (unstable ones in red), and the largest
                 dynamic factor of the sun-planet and ring-planet meshes, the frequencies
-                where a mesh loses contact as a rug.
+                where a mesh loses contact as a rug;
+  campbell.png  (with `campbell`) the natural frequencies over carrier speed;
+  phasing.png   (with `response`) the largest amplitude over the curve of each mesh harmonic
+                of the sun's rotation and centre, with the mode family mesh phasing lets the
+                harmonic drive (sun_harmonics.csv's phasing column).
 """
 import json
 import math
@@ -120,12 +124,55 @@ def response_figure(d_dir, params):
     return save(fig, d_dir / "response.png")
 
 
+def phasing_figure(d_dir, params):
+    d = read_csv(d_dir / "sun_harmonics.csv")
+    H = int(max(d["harmonic"]))
+    u = [max(v for v, l in zip(d["u_um"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    xy = [max(v for v, l in zip(d["xy_um"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    family = [next(f for f, l in zip(d["phasing"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    ls = list(range(1, H + 1))
+    floor = 1e-12 * max(u + xy)   # a harmonic that phasing cancels is round-off: drawn at the floor
+    ax.bar([l - 0.18 for l in ls], [max(v, floor) for v in u], width=0.36, color="C0", label="sun rotation u_s")
+    ax.bar([l + 0.18 for l in ls], [max(v, floor) for v in xy], width=0.36, color="C1", label="sun centre x, y")
+    ax.set_yscale("log")
+    ax.set_ylim(floor / 3, max(u + xy) * 30)
+    for l, f in zip(ls, family):
+        if f == f and f:
+            ax.text(l, max(u + xy) * 3, {"rotational": "rot.", "translational": "transl.", "none": "none"}[f],
+                    ha="center", fontsize=7)
+    ax.set_xticks(ls)
+    ax.set_xlabel("mesh harmonic l")
+    ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-12 of the largest)")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.set_title("%s, N = %d, z_s = %d: the family each harmonic may drive (l z_s mod N) above the bars"
+                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"]), fontsize=9)
+    return save(fig, d_dir / "phasing.png")
+
+
+def campbell_figure(d_dir, params):
+    d = read_csv(d_dir / "campbell.csv")
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for mode in sorted(set(d["mode"])):
+        rows = [i for i, m in enumerate(d["mode"]) if m == mode]
+        ax.plot([d["carrier_rpm"][i] for i in rows], [d["frequency_hz"][i] for i in rows], color="C0", lw=1.0)
+    ax.set_xlabel("carrier speed [rpm]")
+    ax.set_ylabel("natural frequency in the carrier frame [Hz]")
+    ax.set_title("%s, N = %d: Campbell diagram (gyroscopic and centripetal terms;\n"
+                 "each line the k-th frequency at each speed, not a mode followed)"
+                 % (params.get("name", "planetary set"), params["planets"]), fontsize=9)
+    return save(fig, d_dir / "campbell.png")
+
+
 def main():
     d_dir = pathlib.Path(sys.argv[1])
     params = json.load(open(d_dir / "params.json"))
     modes_figure(d_dir, params)
+    if (d_dir / "campbell.csv").exists():
+        campbell_figure(d_dir, params)
     if "response" in params and (d_dir / "response.csv").exists():
         response_figure(d_dir, params)
+        phasing_figure(d_dir, params)
 
 
 if __name__ == "__main__":

@@ -20,7 +20,7 @@
 // its dynamic factor (largest force over the mean) and whether it loses contact.
 //
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
-// written), natural_frequencies, mode_shapes, response (loaded_model, response_curve,
+// written), natural_frequencies, mode_shapes, campbell, response (loaded_model, response_curve,
 // stability, response_table, response_key_numbers), draw.
 //
 // Sample runs:
@@ -66,11 +66,13 @@ class PlanetarySetFromFile {
   void read_set();
   std::vector<PlanetaryMode> natural_frequencies(Run& run) const;
   void mode_shapes(Run& run, const std::vector<PlanetaryMode>& modes) const;
+  void campbell(Run& run) const;
   void response(Run& run) const;
   HarmonicBalance loaded_model() const;
   FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb) const;
   void stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c, std::vector<bool>& evaluated) const;
   Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated) const;
+  Table sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void response_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                             const std::vector<bool>& evaluated) const;
   void draw(Run& run) const;
@@ -111,6 +113,7 @@ void PlanetarySetFromFile::run(Run& run) {
   run.write_text("params.json", file_.resolved.dump(2) + "\n");
   const std::vector<PlanetaryMode> modes = natural_frequencies(run);
   mode_shapes(run, modes);
+  if (file_.campbell_points > 0) campbell(run);
   if (file_.response.present) response(run);
   if (plot_) draw(run);
 }
@@ -176,6 +179,22 @@ void PlanetarySetFromFile::mode_shapes(Run& run, const std::vector<PlanetaryMode
   run.write("mode_shapes.csv", t);
 }
 
+// Step 3b (with `campbell`): campbell.csv, the natural frequencies of the rotating set
+// (gyroscopic and centripetal terms, natural_frequencies_at_speed) over carrier speed:
+// carrier_rpm, mode (ascending at each speed), frequency_hz (in the carrier frame).
+void PlanetarySetFromFile::campbell(Run& run) const {
+  Table t({"carrier_rpm", "mode", "frequency_hz"});
+  const int P = file_.campbell_points;
+  run.timed("campbell", [&] {
+    for (int k = 0; k < P; ++k) {
+      const double rpm = file_.campbell_rpm_to * k / (P - 1);
+      const Eigen::VectorXd omega = natural_frequencies_at_speed(file_.set, rpm * M_PI / 30.0);
+      for (Eigen::Index i = 0; i < omega.size(); ++i) t.add_row({rpm, long(i + 1), omega(i) / (2.0 * M_PI)});
+    }
+  });
+  run.write("campbell.csv", t);
+}
+
 // Step 4 (with `response`): the set under load over the mesh frequency.
 void PlanetarySetFromFile::response(Run& run) const {
   const HarmonicBalance hb = loaded_model();
@@ -184,6 +203,7 @@ void PlanetarySetFromFile::response(Run& run) const {
   stability(run, hb, c, evaluated);
   const Table t = response_table(hb, c, evaluated);
   run.write("response.csv", t);
+  run.write("sun_harmonics.csv", sun_harmonics_table(hb, c));
   response_key_numbers(run, hb, c, evaluated);
 }
 
@@ -262,6 +282,26 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
     row.insert(row.end(), states.begin(), states.end());
     t.add_row(std::move(row));
   }
+  return t;
+}
+
+// sun_harmonics.csv: the harmonic content of the sun's motion, one row per point and mesh
+// harmonic l: mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
+// sqrt of the x and y amplitudes squared), and the family that mesh phasing lets harmonic l
+// drive (README "Why planet phasing suppresses mesh harmonics"): phasing = rotational (l z_s
+// / N whole), translational ((l z_s +- 1) / N whole) or none; empty for unequal spacing.
+Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const int n = hb.dofs(), N = file_.set.planets(), zs = file_.teeth.sun;
+  Table t({"mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
+  for (const BranchPoint& p : c.branch.points)
+    for (int l = 1; l <= hb.harmonics(); ++l) {
+      auto amp = [&](int i) { return std::hypot(p.X((2 * l - 1) * n + i), p.X(2 * l * n + i)); };
+      const int r = (l * zs) % N;
+      const std::string family = !file_.equally_spaced ? "" : r == 0 ? "rotational"
+                                 : (r == 1 || r == N - 1) ? "translational" : "none";
+      t.add_row({p.omega / (2.0 * M_PI), long(l), 1e6 * amp(coordinate(Body::sun, 2)),
+                 1e6 * std::hypot(amp(coordinate(Body::sun, 0)), amp(coordinate(Body::sun, 1))), family});
+    }
   return t;
 }
 

@@ -13,21 +13,6 @@ using namespace gearhb;
 
 namespace {
 
-// Lin & Parker 1999's example system (their Table 1 data, as issue 36 quotes it).
-PlanetarySet lin_parker_1999(int planets) {
-  PlanetarySet s;
-  s.carrier = {5.43, 6.29, 1e8, 0.0};
-  s.ring = {2.35, 3.0, 1e8, 1e9};
-  s.sun = {0.4, 0.39, 1e8, 0.0};
-  s.planet_mass = 0.66;
-  s.planet_inertia_r2 = 0.61;
-  s.planet_bearing = 1e8;
-  s.sun_mesh = s.ring_mesh = 5e8;
-  s.sun_pressure_angle = s.ring_pressure_angle = 24.6 * M_PI / 180.0;
-  s.planet_angles = equally_spaced(planets);
-  return s;
-}
-
 double lp_hz(double omega) { return omega / (2.0 * M_PI); }
 
 }  // namespace
@@ -37,7 +22,7 @@ double lp_hz(double omega) { return omega / (2.0 * M_PI); }
 TEST(Planetary, LinParkerRotationalFrequenciesOfThreePlanets) {
   const std::vector<double> published = {0.0, 1475.7, 1930.3, 2658.3, 7462.8, 11775.3};
   std::vector<double> rotational;
-  for (const PlanetaryMode& m : planetary_modes(lin_parker_1999(3)))
+  for (const PlanetaryMode& m : planetary_modes(lin_parker_1999_set(3)))
     if (m.type == ModeType::rotational) rotational.push_back(lp_hz(m.omega));
   ASSERT_EQ(rotational.size(), published.size());
   for (std::size_t i = 0; i < published.size(); ++i) EXPECT_NEAR(rotational[i], published[i], 0.05) << i;
@@ -48,7 +33,7 @@ TEST(Planetary, LinParkerRotationalFrequenciesOfThreePlanets) {
 // nothing else (3 (N + 3) DOFs = 6 + 12 + 3 (N - 3)).
 TEST(Planetary, ModeTypesAndMultiplicitiesForThreeToSixPlanets) {
   for (int N = 3; N <= 6; ++N) {
-    const std::vector<PlanetaryMode> modes = planetary_modes(lin_parker_1999(N));
+    const std::vector<PlanetaryMode> modes = planetary_modes(lin_parker_1999_set(N));
     ASSERT_EQ(int(modes.size()), 3 * (N + 3));
     std::map<ModeType, std::map<int, int>> groups;   // type -> multiplicity -> groups
     int last_group = -1;
@@ -68,7 +53,7 @@ TEST(Planetary, ModeTypesAndMultiplicitiesForThreeToSixPlanets) {
 // no frequency stays double (the translational pairs split) and some modes move the
 // central members in rotation and translation at once.
 TEST(Planetary, UnequalSpacingMixesTheModeTypes) {
-  PlanetarySet s = lin_parker_1999(4);
+  PlanetarySet s = lin_parker_1999_set(4);
   s.planet_angles = {0.0, 80.0 * M_PI / 180.0, M_PI, 270.0 * M_PI / 180.0};
   int mixed = 0, pairs = 0;
   for (const PlanetaryMode& m : planetary_modes(s)) {
@@ -82,10 +67,26 @@ TEST(Planetary, UnequalSpacingMixesTheModeTypes) {
 // The gyroscopic eigenproblem at carrier speed 0 is the symmetric one by another method
 // (first-order form, general Schur eigenvalues vs the generalised self-adjoint solver).
 TEST(Planetary, FirstOrderFormAtRestIsTheSymmetricProblem) {
-  const PlanetarySet s = lin_parker_1999(5);
+  const PlanetarySet s = lin_parker_1999_set(5);
   const std::vector<PlanetaryMode> modes = planetary_modes(s);
   const Eigen::VectorXd omega = natural_frequencies_at_speed(s, 0.0);
   ASSERT_EQ(omega.size(), Eigen::Index(modes.size()));
   for (std::size_t i = 1; i < modes.size(); ++i)
     EXPECT_NEAR(omega(Eigen::Index(i)), modes[i].omega, 1e-8 * modes.back().omega) << i;
+}
+
+// The rotating frame (gyroscopic G, centripetal K_Omega): a body on isotropic bearings,
+// seen from a frame turning at Omega, vibrates at |omega_0 +- Omega| (x'' - 2 Omega y' +
+// (omega_0^2 - Omega^2) x = 0 and its twin, solved in closed form). With the meshes nearly
+// cut (1e-6 N/m) the sun is such a body: omega_0 = sqrt(k_s / m_s).
+TEST(Planetary, IsolatedSunInTheRotatingFrameSplitsByTheCarrierSpeed) {
+  PlanetarySet s = lin_parker_1999_set(3);
+  s.sun_mesh = s.ring_mesh = 1e-6;
+  const double omega0 = std::sqrt(s.sun.bearing / s.sun.mass), Omega = 2000.0;
+  const Eigen::VectorXd omega = natural_frequencies_at_speed(s, Omega);
+  for (double expected : {omega0 - Omega, omega0 + Omega}) {
+    double nearest = INFINITY;
+    for (Eigen::Index i = 0; i < omega.size(); ++i) nearest = std::min(nearest, std::fabs(omega(i) - expected));
+    EXPECT_LT(nearest, 1e-6 * omega0) << expected;
+  }
 }

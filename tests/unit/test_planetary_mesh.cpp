@@ -19,16 +19,8 @@ namespace {
 // torsion 1e9 N/m as theirs, the carrier on an output shaft of 1e8 N/m (theirs is free),
 // so that the loaded set has a static equilibrium. Teeth of the example file.
 PlanetarySet pm_held_set(int planets) {
-  PlanetarySet s;
-  s.carrier = {5.43, 6.29, 1e8, 1e8};
-  s.ring = {2.35, 3.0, 1e8, 1e9};
-  s.sun = {0.4, 0.39, 1e8, 0.0};
-  s.planet_mass = 0.66;
-  s.planet_inertia_r2 = 0.61;
-  s.planet_bearing = 1e8;
-  s.sun_mesh = s.ring_mesh = 5e8;
-  s.sun_pressure_angle = s.ring_pressure_angle = 24.6 * M_PI / 180.0;
-  s.planet_angles = equally_spaced(planets);
+  PlanetarySet s = lin_parker_1999_set(planets);
+  s.carrier.torsional = 1e8;
   return s;
 }
 

@@ -175,7 +175,7 @@ PlanetaryFile read_planetary_file(const std::string& path,
                                   const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "planets", "planet_angles_deg", "teeth", "module", "addendum", "pressure_angle_deg",
-                          "sun", "ring", "carrier", "planet", "mesh", "response"});
+                          "sun", "ring", "carrier", "planet", "mesh", "response", "campbell"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   PlanetaryFile f;
   f.resolved = j;
@@ -195,6 +195,12 @@ PlanetaryFile read_planetary_file(const std::string& path,
   s.planet_bearing = number(p, path, "planet", "bearing", 0.0, 1e13, "[0, 1e13] N/m");
   read_meshes(f, member(j, path, "mesh"), path);
   read_response(f, j, path);
+  if (j.contains("campbell")) {
+    const json& c = member(j, path, "campbell");
+    only_keys(c, path, "campbell", {"carrier_rpm_to", "points"});
+    f.campbell_rpm_to = number(c, path, "campbell", "carrier_rpm_to", 1.0, 1e6, "[1, 1e6] rpm");
+    f.campbell_points = whole(c, path, "campbell", "points", 2, 1001);
+  }
   return f;
 }
 
@@ -216,6 +222,7 @@ std::string planetary_file_help() {
          "  response                 optional: input (sun | ring | carrier), torque [N m] > 0, output,\n"
          "                           output_shaft [N/m] added to its torsional stiffness, mesh_hz.from/to,\n"
          "                           zeta (0.02), harmonics (8), stability_points (24)\n"
+         "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n"
          "Checks (exit 2 naming the key): z_r = z_s + 2 z_p, (z_s + z_r) / N whole (equal spacing) or\n"
          "(z_s + z_r) psi_n / 360 whole (given angles), tip circles of neighbouring planets apart.\n";
 }

@@ -26,6 +26,8 @@
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
 //                  "mesh_hz": {"from": 300, "to": 3000},               input, the output member held by a
 //                  "zeta": 0.02, "harmonics": 8, "stability_points": 24}   shaft of k_theta / r^2 [N/m]
+//     "campbell": {"carrier_rpm_to": 6000, "points": 31}   optional: the natural frequencies over
+//                                                  carrier speed 0..carrier_rpm_to (gyroscopic)
 //   }
 //
 // Checks, each a UsageError naming the key: the ranges of every number, z_r = z_s + 2 z_p
@@ -63,6 +65,8 @@ struct PlanetaryFile {
   bool equally_spaced = true;   // no planet_angles_deg in the file
   PlanetaryMeshes meshes;       // the rectangular waves and mesh phases (planetary_mesh.hpp)
   PlanetaryResponseInput response;
+  double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)
+  int campbell_points = 0;
   nlohmann::json resolved;      // the file after overrides (params.json)
 };
 

@@ -70,6 +70,20 @@ std::vector<double> equally_spaced(int planets) {
   return psi;
 }
 
+PlanetarySet lin_parker_1999_set(int planets) {
+  PlanetarySet s;
+  s.carrier = {5.43, 6.29, 1e8, 0.0};
+  s.ring = {2.35, 3.0, 1e8, 1e9};
+  s.sun = {0.4, 0.39, 1e8, 0.0};
+  s.planet_mass = 0.66;
+  s.planet_inertia_r2 = 0.61;
+  s.planet_bearing = 1e8;
+  s.sun_mesh = s.ring_mesh = 5e8;
+  s.sun_pressure_angle = s.ring_pressure_angle = 24.6 * M_PI / 180.0;
+  s.planet_angles = equally_spaced(planets);
+  return s;
+}
+
 Eigen::VectorXd sun_mesh_direction(const PlanetarySet& s, int n) {
   const double psi = s.planet_angles.at(std::size_t(n)) - s.sun_pressure_angle, a = s.sun_pressure_angle;
   Eigen::VectorXd d = Eigen::VectorXd::Zero(s.dofs());

@@ -59,6 +59,12 @@ struct PlanetarySet {
 // psi_n = 2 pi (n - 1) / N.
 std::vector<double> equally_spaced(int planets);
 
+// Lin & Parker 1999's example set (their Table 1 data; reference/lin_parker_1999.md) with
+// N equally spaced planets: sun, ring, carrier, planet masses 0.4, 2.35, 5.43, 0.66 kg,
+// I / r^2 0.39, 3.0, 6.29, 0.61 kg, every bearing 1e8 N/m, ring torsion 1e9 N/m (sun and
+// carrier free), k_sp = k_rp = 5e8 N/m, pressure angles 24.6 deg.
+PlanetarySet lin_parker_1999_set(int planets);
+
 // Indices of the coordinates (carrier = 0, ring = 1, sun = 2, planet n = 3 + n, n from 0).
 enum class Body { carrier = 0, ring = 1, sun = 2 };
 inline int coordinate(Body b, int k) { return 3 * int(b) + k; }          // k: 0 = x, 1 = y, 2 = u
