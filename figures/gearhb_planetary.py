@@ -132,7 +132,7 @@ def phasing_figure(d_dir, params):
     family = [next(f for f, l in zip(d["phasing"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
     fig, ax = plt.subplots(figsize=(7.0, 4.2))
     ls = list(range(1, H + 1))
-    floor = 1e-12 * max(u + xy)   # a harmonic that phasing cancels is round-off: drawn at the floor
+    floor = 1e-10 * max(u + xy)   # a harmonic that phasing cancels is round-off: drawn at the floor
     ax.bar([l - 0.18 for l in ls], [max(v, floor) for v in u], width=0.36, color="C0", label="sun rotation u_s")
     ax.bar([l + 0.18 for l in ls], [max(v, floor) for v in xy], width=0.36, color="C1", label="sun centre x, y")
     ax.set_yscale("log")
@@ -143,9 +143,9 @@ def phasing_figure(d_dir, params):
                     ha="center", fontsize=7)
     ax.set_xticks(ls)
     ax.set_xlabel("mesh harmonic l")
-    ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-12 of the largest)")
+    ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-10 of the largest)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    ax.set_title("%s, N = %d, z_s = %d: the family each harmonic may drive (l z_s mod N) above the bars"
+    ax.set_title("%s, N = %d, z_s = %d\nabove the bars: the family harmonic l may drive (l z_s mod N)"
                  % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"]), fontsize=9)
     return save(fig, d_dir / "phasing.png")
 
@@ -158,8 +158,8 @@ def campbell_figure(d_dir, params):
         ax.plot([d["carrier_rpm"][i] for i in rows], [d["frequency_hz"][i] for i in rows], color="C0", lw=1.0)
     ax.set_xlabel("carrier speed [rpm]")
     ax.set_ylabel("natural frequency in the carrier frame [Hz]")
-    ax.set_title("%s, N = %d: Campbell diagram (gyroscopic and centripetal terms;\n"
-                 "each line the k-th frequency at each speed, not a mode followed)"
+    ax.set_title("%s, N = %d: Campbell diagram\n(gyroscopic and centripetal terms; each line the k-th\n"
+                 "frequency at each speed, not a mode followed)"
                  % (params.get("name", "planetary set"), params["planets"]), fontsize=9)
     return save(fig, d_dir / "campbell.png")
 

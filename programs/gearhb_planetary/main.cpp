@@ -29,6 +29,7 @@
 // ===========================================================================
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <stdexcept>
 #include <string>
@@ -332,6 +333,12 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const HarmonicBalance&
   if (std::isfinite(first_loss)) key.add("contact_loss_lowest_mesh_hz", first_loss, "Hz");
   key.add("stability_points", double(checked), "-");
   key.add("unstable_points", double(unstable), "-");
+  char line[240];
+  std::snprintf(line, sizeof line, "largest K_v %.3f at %.1f Hz; a mesh loses contact at %d points%s; Floquet at %d points, %d unstable",
+                kv_max, kv_hz, loss_points,
+                std::isfinite(first_loss) ? (", the lowest at " + std::to_string(int(std::lround(first_loss))) + " Hz").c_str() : "",
+                checked, unstable);
+  run.say(file_.name + ": " + line);
 }
 
 // Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
