@@ -8,7 +8,7 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
   response.png  (with a `response` section) the sun's vibration over the mesh frequency
                 (AC RMS of its rotation u_s and of its centre) with the points whose
                 Floquet multipliers were computed (unstable ones in red), and the largest
-                dynamic factor of the sun-planet and ring-planet meshes, the frequencies
+                dynamic factor K_v of the sun-planet and ring-planet meshes, the frequencies
                 where a mesh loses contact as a rug;
   campbell.png  (with `campbell`) the natural frequencies over carrier speed;
   phasing.png   (with `response`) the largest amplitude over the curve of each mesh harmonic
@@ -94,7 +94,7 @@ def modes_figure(d_dir, params):
 
 def response_figure(d_dir, params):
     d = read_csv(d_dir / "response.csv")
-    hz, N = d["mesh_hz"], params["planets"]
+    hz, N = d["f_mesh_hz"], params["planets"]
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True)
     top.plot(hz, d["sun_u_rms_um"], color="C0", label="sun rotation u_s (AC RMS)")
     top.plot(hz, d["sun_xy_rms_um"], color="C1", label="sun centre x, y (AC RMS)")
@@ -108,14 +108,14 @@ def response_figure(d_dir, params):
     top.plot([], [], "x", color="red", ms=4, label="Floquet: unstable")
     top.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
     for kind, colour in (("sun", "C2"), ("ring", "C3")):
-        kv = [max(d["kv_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
+        kv = [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
         bottom.plot(hz, kv, color=colour, label="%s-planet meshes: largest K_v" % kind)
         loss = [hz[i] for i in range(len(hz))
-                if any(d["contact_%s_%d" % (kind, n + 1)][i] == "loss" for n in range(N))]
+                if any(d["contact_%s_%d" % (kind, n + 1)][i] != "full" for n in range(N))]
         bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
                     transform=bottom.get_xaxis_transform(), label="%s-planet mesh loses contact" % kind)
     rug_room(bottom, rows=2)
-    bottom.set_ylabel("largest force / mean force")
+    bottom.set_ylabel("K_v: largest force / static force")
     bottom.set_xlabel("mesh frequency [Hz]")
     bottom.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.suptitle("%s, N = %d planets, %g N m on the %s" % (params.get("name", "planetary set"), N,

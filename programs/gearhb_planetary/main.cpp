@@ -79,27 +79,36 @@ class PlanetarySetFromFile {
   void draw(Run& run) const;
 };
 
-// One mesh over the period of a point: its dynamic factor (largest force over the mean
-// force) and whether it loses contact (the penetration's minimum, refined, <= 0).
+// One mesh over the period of a point: its dynamic factor K_v (largest force over the
+// static force F0 of the mesh, README glossary) and its contact state over the period
+// (open | full | intermittent, refined between the samples: contact.hpp contact_state).
 struct MeshOverPeriod {
-  double kv = 0.0;
-  bool loses_contact = false;
+  double dynamic_factor = 0.0;
+  ContactState state = ContactState::full;
 };
 
-MeshOverPeriod mesh_over_period(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i) {
+// The static force of each mesh: kc d' x0, x0 the static deflection with every mesh closed
+// at its mean stiffness (the static part of the closed-contact solution).
+std::vector<double> static_mesh_forces(const HarmonicBalance& hb) {
+  const Eigen::VectorXd x0 = hb.closed_contact_solution(1.0).head(hb.dofs());
+  std::vector<double> F0;
+  for (std::size_t i = 0; i < hb.contacts().size(); ++i)
+    F0.push_back(hb.mean_stiffness(i) * (hb.contacts()[i].normal.dot(x0) + hb.contacts()[i].gap));
+  return F0;
+}
+
+MeshOverPeriod mesh_over_period(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i, double F0) {
   const int n = hb.dofs(), H = hb.harmonics(), J = 32 * (2 * H + 1);
   const UnilateralContact& ct = hb.contacts()[i];
   Eigen::VectorXd uc(2 * H + 1), us(J);
   for (int k = 0; k < 2 * H + 1; ++k) uc(k) = ct.normal.dot(X.segment(k * n, n)) + (k == 0 ? ct.gap : 0.0);
-  double fmax = 0.0, fsum = 0.0;
+  double fmax = 0.0;
   for (int j = 0; j < J; ++j) {
     const double th = 2.0 * M_PI * j / J;
     us(j) = trig_series(uc, th);
-    const double f = contact_force(stiffness_at(ct, th), us(j));
-    fmax = std::max(fmax, f);
-    fsum += f / J;
+    fmax = std::max(fmax, contact_force(stiffness_at(ct, th), us(j)));
   }
-  return {fsum > 0.0 ? fmax / fsum : 0.0, trig_extremes(uc, us).first <= 0.0};
+  return {fmax / F0, contact_state(uc, us)};
 }
 
 std::string mesh_name(int i, int planets) {
@@ -222,13 +231,13 @@ HarmonicBalance PlanetarySetFromFile::loaded_model() const {
 // Arc-length continuation over the mesh frequency, no stability yet (the next step).
 FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBalance& hb) const {
   SweepOptions o;
-  o.omega_min = 2.0 * M_PI * file_.response.mesh_hz_from;
-  o.omega_max = 2.0 * M_PI * file_.response.mesh_hz_to;
+  o.omega_min = 2.0 * M_PI * file_.response.f_mesh_hz_from;
+  o.omega_max = 2.0 * M_PI * file_.response.f_mesh_hz_to;
   o.stability = StabilityMethod::none;
   report_sweep_progress(run, o, file_.name);
   const FrequencyCurve c = run.timed("response", [&] { return sweep_frequency(hb, o, file_.name); });
   run.say(file_.name + ": " + c.branch.summary());
-  if (!c.complete) throw std::runtime_error("the response did not reach response.mesh_hz.to: " + c.failure);
+  if (!c.complete) throw std::runtime_error("the response did not reach response.f_mesh_hz.to: " + c.failure);
   return c;
 }
 
@@ -254,17 +263,18 @@ void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, Freque
   });
 }
 
-// response.csv: mesh_hz, sun_u_rms_um (AC RMS of the sun's rotation u_s), sun_xy_rms_um
+// response.csv: f_mesh_hz, sun_u_rms_um (AC RMS of the sun's rotation u_s), sun_xy_rms_um
 // (of its centre), stable and floquet_modulus (empty where not evaluated), and per mesh
-// (sun_1..N, ring_1..N) kv_<mesh> (largest force over the mean) and contact_<mesh>
-// (full | loss).
+// (sun_1..N, ring_1..N) dynamic_factor_<mesh> (K_v: largest force over the static one) and
+// contact_<mesh> (open | full | intermittent).
 Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
                                            const std::vector<bool>& evaluated) const {
   const int N = file_.set.planets(), n = hb.dofs(), H = hb.harmonics();
-  std::vector<std::string> columns{"mesh_hz", "sun_u_rms_um", "sun_xy_rms_um", "stable", "floquet_modulus"};
-  for (int i = 0; i < 2 * N; ++i) columns.push_back("kv_" + mesh_name(i, N));
+  std::vector<std::string> columns{"f_mesh_hz", "sun_u_rms_um", "sun_xy_rms_um", "stable", "floquet_modulus"};
+  for (int i = 0; i < 2 * N; ++i) columns.push_back("dynamic_factor_" + mesh_name(i, N));
   for (int i = 0; i < 2 * N; ++i) columns.push_back("contact_" + mesh_name(i, N));
   Table t(columns);
+  const std::vector<double> F0 = static_mesh_forces(hb);
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     const Eigen::VectorXd& X = c.branch.points[p].X;
     double u2 = 0.0, xy2 = 0.0;
@@ -276,9 +286,9 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
                                  cell(evaluated[p], c.stable[p] ? 1.0 : 0.0), cell(evaluated[p], c.floquet[p].modulus)};
     std::vector<Table::Cell> states;
     for (int i = 0; i < 2 * N; ++i) {
-      const MeshOverPeriod m = mesh_over_period(hb, X, std::size_t(i));
-      row.emplace_back(m.kv);
-      states.emplace_back(std::string(m.loses_contact ? "loss" : "full"));
+      const MeshOverPeriod m = mesh_over_period(hb, X, std::size_t(i), F0[std::size_t(i)]);
+      row.emplace_back(m.dynamic_factor);
+      states.emplace_back(std::string(to_string(m.state)));
     }
     row.insert(row.end(), states.begin(), states.end());
     t.add_row(std::move(row));
@@ -287,13 +297,13 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
 }
 
 // sun_harmonics.csv: the harmonic content of the sun's motion, one row per point and mesh
-// harmonic l: mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
+// harmonic l: f_mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
 // sqrt of the x and y amplitudes squared), and the family that mesh phasing lets harmonic l
 // drive (README "Why planet phasing suppresses mesh harmonics"): phasing = rotational (l z_s
 // / N whole), translational ((l z_s +- 1) / N whole) or none; empty for unequal spacing.
 Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const {
   const int n = hb.dofs(), N = file_.set.planets(), zs = file_.teeth.sun;
-  Table t({"mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
+  Table t({"f_mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
   for (const BranchPoint& p : c.branch.points)
     for (int l = 1; l <= hb.harmonics(); ++l) {
       auto amp = [&](int i) { return std::hypot(p.X((2 * l - 1) * n + i), p.X(2 * l * n + i)); };
@@ -312,14 +322,15 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const HarmonicBalance&
                                                 const FrequencyCurve& c, const std::vector<bool>& evaluated) const {
   KeyNumbers& key = run.key_numbers();
   double kv_max = 0.0, kv_hz = 0.0, first_loss = NAN;
+  const std::vector<double> F0 = static_mesh_forces(hb);
   int loss_points = 0, checked = 0, unstable = 0;
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     const double hz = c.branch.points[p].omega / (2.0 * M_PI);
     bool loss = false;
     for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
-      const MeshOverPeriod m = mesh_over_period(hb, c.branch.points[p].X, i);
-      if (m.kv > kv_max) kv_max = m.kv, kv_hz = hz;
-      loss = loss || m.loses_contact;
+      const MeshOverPeriod m = mesh_over_period(hb, c.branch.points[p].X, i, F0[i]);
+      if (m.dynamic_factor > kv_max) kv_max = m.dynamic_factor, kv_hz = hz;
+      loss = loss || m.state != ContactState::full;
     }
     loss_points += loss ? 1 : 0;
     if (loss && !(hz >= first_loss)) first_loss = hz;
@@ -327,10 +338,10 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const HarmonicBalance&
     unstable += evaluated[p] && !c.stable[p] ? 1 : 0;
   }
   key.add("response_points", double(c.branch.points.size()), "-");
-  key.add("kv_max", kv_max, "-");
-  key.add("kv_max_mesh_hz", kv_hz, "Hz");
+  key.add("dynamic_factor_max", kv_max, "-");
+  key.add("dynamic_factor_max_f_mesh_hz", kv_hz, "Hz");
   key.add("contact_loss_points", double(loss_points), "-");
-  if (std::isfinite(first_loss)) key.add("contact_loss_lowest_mesh_hz", first_loss, "Hz");
+  if (std::isfinite(first_loss)) key.add("contact_loss_lowest_f_mesh_hz", first_loss, "Hz");
   key.add("stability_points", double(checked), "-");
   key.add("unstable_points", double(unstable), "-");
   char line[240];

@@ -129,7 +129,7 @@ void read_meshes(PlanetaryFile& f, const json& m, const std::string& file) {
 void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
   if (!j.contains("response")) return;
   const json& r = member(j, file, "response");
-  only_keys(r, file, "response", {"input", "torque", "output", "output_shaft", "mesh_hz", "zeta", "harmonics",
+  only_keys(r, file, "response", {"input", "torque", "output", "output_shaft", "f_mesh_hz", "zeta", "harmonics",
                                   "stability_points"});
   PlanetaryResponseInput& p = f.response;
   p.present = true;
@@ -141,11 +141,13 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
   if (p.output == p.input) fail_key(file, "response.output", "must differ from response.input");
   p.torque = number(r, file, "response", "torque", 1e-3, 1e7, "[1e-3, 1e7] N m (> 0: the drive flanks carry it)");
   p.output_shaft = optional_number(r, file, "response", "output_shaft", 0.0, 0.0, 1e13, "[0, 1e13] N/m");
-  if (!r.contains("mesh_hz") || !r["mesh_hz"].is_object()) fail_key(file, "response.mesh_hz", "must be {\"from\", \"to\"} [Hz]");
-  only_keys(r["mesh_hz"], file, "response.mesh_hz", {"from", "to"});
-  p.mesh_hz_from = number(r["mesh_hz"], file, "response.mesh_hz", "from", 1.0, 1e6, "[1, 1e6] Hz");
-  p.mesh_hz_to = number(r["mesh_hz"], file, "response.mesh_hz", "to", 1.0, 1e6, "[1, 1e6] Hz");
-  if (!(p.mesh_hz_to > p.mesh_hz_from)) fail_key(file, "response.mesh_hz.to", "must be above response.mesh_hz.from");
+  if (!r.contains("f_mesh_hz") || !r["f_mesh_hz"].is_object())
+    fail_key(file, "response.f_mesh_hz", "must be {\"from\", \"to\"} [Hz]");
+  only_keys(r["f_mesh_hz"], file, "response.f_mesh_hz", {"from", "to"});
+  p.f_mesh_hz_from = number(r["f_mesh_hz"], file, "response.f_mesh_hz", "from", 1.0, 1e6, "[1, 1e6] Hz");
+  p.f_mesh_hz_to = number(r["f_mesh_hz"], file, "response.f_mesh_hz", "to", 1.0, 1e6, "[1, 1e6] Hz");
+  if (!(p.f_mesh_hz_to > p.f_mesh_hz_from))
+    fail_key(file, "response.f_mesh_hz.to", "must be above response.f_mesh_hz.from");
   p.zeta = optional_number(r, file, "response", "zeta", 0.02, 1e-4, 0.5, "[1e-4, 0.5]");
   p.harmonics = r.contains("harmonics") ? whole(r, file, "response", "harmonics", 1, 32) : 8;
   p.stability_points = r.contains("stability_points") ? whole(r, file, "response", "stability_points", 0, 200) : 24;
@@ -220,7 +222,7 @@ std::string planetary_file_help() {
          "  mesh.stiffness_ratio     k_double / k_single of both meshes (1: constant)\n"
          "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0)\n"
          "  response                 optional: input (sun | ring | carrier), torque [N m] > 0, output,\n"
-         "                           output_shaft [N/m] added to its torsional stiffness, mesh_hz.from/to,\n"
+         "                           output_shaft [N/m] added to its torsional stiffness, f_mesh_hz.from/to,\n"
          "                           zeta (0.02), harmonics (8), stability_points (24)\n"
          "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n"
          "Checks (exit 2 naming the key): z_r = z_s + 2 z_p, (z_s + z_r) / N whole (equal spacing) or\n"

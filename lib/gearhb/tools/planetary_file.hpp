@@ -24,7 +24,7 @@
 //                 "ring_sun_phase": 0},                                optional gamma_rs [mesh cycles] (0)
 //     "response": {"input": "sun", "torque": 100,                      optional: the response over
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
-//                  "mesh_hz": {"from": 300, "to": 3000},               input, the output member held by a
+//                  "f_mesh_hz": {"from": 300, "to": 3000},             input, the output member held by a
 //                  "zeta": 0.02, "harmonics": 8, "stability_points": 24}   shaft of k_theta / r^2 [N/m]
 //     "campbell": {"carrier_rpm_to": 6000, "points": 31}   optional: the natural frequencies over
 //                                                  carrier speed 0..carrier_rpm_to (gyroscopic)
@@ -52,7 +52,7 @@ struct PlanetaryResponseInput {
   Body input = Body::sun, output = Body::carrier;
   double torque = 0.0;           // on the input [N m], > 0: loads the drive flanks
   double output_shaft = 0.0;     // torsional stiffness added to the output [N/m] (k_theta / r^2)
-  double mesh_hz_from = 0.0, mesh_hz_to = 0.0;
+  double f_mesh_hz_from = 0.0, f_mesh_hz_to = 0.0;   // [Hz]
   double zeta = 0.02;            // modal damping ratio of the mean system
   int harmonics = 8;             // H
   int stability_points = 24;     // points of the curve whose Floquet multipliers are computed
