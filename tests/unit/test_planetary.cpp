@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/gears/sets/planetary.hpp"
 
 using namespace gearhb;
@@ -88,5 +90,32 @@ TEST(Planetary, IsolatedSunInTheRotatingFrameSplitsByTheCarrierSpeed) {
     double nearest = INFINITY;
     for (Eigen::Index i = 0; i < omega.size(); ++i) nearest = std::min(nearest, std::fabs(omega(i) - expected));
     EXPECT_LT(nearest, 1e-6 * omega0) << expected;
+  }
+}
+
+// A set with one planet whose carrier is held rigidly (1e16 N/m) and whose ring is cut off
+// (ring mesh 1e-6 N/m) is the sun-planet pair on bearings: its natural frequencies contain
+// those of chapter 6's six-DOF pair model (gears/pair/gear_pair.hpp, built there from the
+// thesis' own line-of-action projection T2) with the same masses, inertias, bearings and mesh
+// (planet torsion free, as a planet is: kth2 = 0). Frame and rotation senses differ; the
+// frequencies do not.
+TEST(Planetary, OnePlanetIsTheSixDofPairModel) {
+  GearPairParameters p;
+  p.kth2 = 0.0;
+  const Modes pair = modal_analysis(gear_pair_mass(p), gear_pair_support_stiffness(p) + gear_pair_mesh_stiffness(p));
+  PlanetarySet s = lin_parker_1999_set(1);
+  s.sun = {p.m1, p.I1 / (p.rb1 * p.rb1), p.kx1, p.kth1 / (p.rb1 * p.rb1)};
+  s.planet_mass = p.m2;
+  s.planet_inertia_r2 = p.I2 / (p.rb2 * p.rb2);
+  s.planet_bearing = p.kx2;
+  s.carrier.bearing = s.carrier.torsional = 1e16;
+  s.sun_mesh = p.kc;
+  s.ring_mesh = 1e-6;
+  s.sun_pressure_angle = p.pressure_angle_deg * M_PI / 180.0;
+  const std::vector<PlanetaryMode> set = planetary_modes(s);
+  for (Eigen::Index i = 0; i < pair.omega.size(); ++i) {
+    double nearest = INFINITY;
+    for (const PlanetaryMode& m : set) nearest = std::min(nearest, std::fabs(m.omega - pair.omega(i)));
+    EXPECT_LT(nearest, 1e-6 * pair.omega.maxCoeff()) << "pair mode " << i << " at " << pair.omega(i) << " rad/s";
   }
 }
