@@ -16,8 +16,9 @@
 // the mesh cycle, shifted by its mesh phase (Parker & Lin 2004), under the input torque,
 // the output held by its shaft; harmonic balance with exact contact and arc-length
 // continuation over the mesh frequency, the Floquet multipliers of the variational
-// equation about the HB orbit at up to stability_points points of the curve, and per mesh
-// its dynamic factor (largest force over the mean) and whether it loses contact.
+// equation about the HB orbit at every k-th point (k = ceil(points / stability_points)) and the
+// last one, and per mesh its dynamic factor K_v (largest force over the static one) and its
+// contact state.
 //
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
 // written), natural_frequencies, mode_shapes, campbell, response (loaded_model, response_curve,
@@ -243,7 +244,7 @@ FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBala
 
 // The Floquet multipliers of the variational equation about the HB orbit (floquet.hpp
 // floquet_of_hb_variational; about 0.2 s a point for N = 3, H = 8, so not at every point)
-// at stability_points points spread evenly over the curve (and its last point).
+// at every k-th point of the curve, k = ceil(points / stability_points), and at its last point.
 void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c,
                                      std::vector<bool>& evaluated) const {
   const std::size_t P = c.branch.points.size(), want = std::size_t(file_.response.stability_points);
