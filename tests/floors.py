@@ -23,7 +23,7 @@ FLOORS = {
     "app": {"core", "hb"},
     "tools": {"core", "hb", "fe", "gears", "app"},
 }
-ROOMS = ["geometry", "tooth", "rating", "pair", "dynamics"]   # gears/, lowest first
+ROOMS = ["geometry", "tooth", "rating", "pair", "dynamics", "sets"]   # gears/, lowest first
 NUMERICS = {"core", "hb", "fe", "gears"}
 SPEAKING = re.compile(r"std::(cout|cerr|clog|ofstream|fstream)\b|\bprintf\s*\(|\bfopen\s*\(|nlohmann")
 INCLUDE = re.compile(r'^\s*#\s*include\s+"gearhb/([a-z_]+)/(?:([a-z_]+)/)?[a-z0-9_]+\.hpp"', re.M)

@@ -73,6 +73,19 @@ TEST(Floquet, MeissnerSquareWaveStiffnessMatchesTheClosedFormTrace) {
   }
 }
 
+// Breakpoints given twice (contacts that switch at the same instant: the in-phase meshes of
+// a planetary set) leave a segment of zero length, which GSL's driver refuses (it crashed
+// gearhb_planetary, issue 36): the same closed-form Meissner trace with every breakpoint twice.
+TEST(Floquet, RepeatedBreakpointsAreOneBreakpoint) {
+  const double T = 2 * M_PI, a = 0.3, b = 0.1;
+  auto A = [&](double t, MatrixXd& out) {
+    out.resize(2, 2);
+    out << 0, 1, -(a + (std::cos(t) >= 0 ? b : -b)), 0;
+  };
+  const MatrixXd Phi = monodromy_linear_periodic(A, 2, T, {T / 4, T / 4, 3 * T / 4, 3 * T / 4});
+  EXPECT_NEAR(Phi.trace(), meissner_trace(a, b, T), 1e-10);
+}
+
 TEST(Floquet, MathieuFirstTongueFromTheVariationalEquation) {
   const double e = 0.1;
   const double lower = 0.25 - e / 2 - e * e / 8, upper = 0.25 + e / 2 - e * e / 8;   // +O(e^3) ~ 3e-5

@@ -547,8 +547,12 @@ Eigen::MatrixXd monodromy_linear_periodic(const std::function<void(double, Eigen
   gsl_odeiv2_system sys{linear_rhs, nullptr, std::size_t(dim) * std::size_t(dim), &ctx};
   double t = 0.0;
   for (double t1 : ends) {
+    // equal breakpoints (contacts that switch at the same instant, e.g. the in-phase meshes
+    // of a planetary set) leave no segment between them: GSL refuses a zero first step
+    if (!(t1 > t)) continue;
     // a fresh driver per segment: the step history must not straddle a jump of A
     gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * (t1 - t), tol, tol);
+    if (d == nullptr) throw std::runtime_error("monodromy_linear_periodic: GSL could not allocate the driver");
     const int status = gsl_odeiv2_driver_apply(d, &t, t1, Y.data());
     gsl_odeiv2_driver_free(d);
     if (status != GSL_SUCCESS)

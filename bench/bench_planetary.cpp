@@ -1,0 +1,63 @@
+// Planetary sets (gears/sets/planetary.hpp, planetary_mesh.hpp): the natural frequencies
+// and mode types of Lin & Parker's set, and the loaded five-planet set's response over
+// 300-3000 Hz mesh frequency (H = 8, no stability) and the Floquet multipliers of the
+// variational equation at one point of it, as gearhb_planetary runs them
+// (programs/gearhb_planetary/examples/lin_parker_1999_loaded.json). Times go to the report.
+//   build/bin/gearhb_bench --benchmark_filter=planetary
+#include <benchmark/benchmark.h>
+
+#include "gearhb/gears/sets/planetary_mesh.hpp"
+#include "gearhb/hb/floquet.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+
+using namespace gearhb;
+
+namespace {
+PlanetarySet lin_parker(int planets, double carrier_shaft) {
+  PlanetarySet s = lin_parker_1999_set(planets);
+  s.carrier.torsional = carrier_shaft;
+  return s;
+}
+HarmonicBalance loaded(int planets) {
+  const PlanetarySet s = lin_parker(planets, 1e8);
+  PlanetaryMeshes m;
+  m.sun = {5e8, 1.6, 1.5};
+  m.ring = {5e8, 1.8, 1.5};
+  m.phases = mesh_phases(PlanetaryTeeth{27, 33, 93, 0.0032, 1.0}, s.planet_angles, 0.0);
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
+  f0(coordinate(Body::sun, 2)) = 100.0 / (0.5 * 27 * 0.0032 * std::cos(s.sun_pressure_angle));
+  return planetary_harmonic_balance(s, m, 0.02, f0, 8);
+}
+SweepOptions range() {
+  SweepOptions o;
+  o.omega_min = 2.0 * M_PI * 300.0;
+  o.omega_max = 2.0 * M_PI * 3000.0;
+  o.stability = StabilityMethod::none;
+  return o;
+}
+}  // namespace
+
+static void BM_planetary_modes(benchmark::State& state) {
+  const PlanetarySet s = lin_parker(int(state.range(0)), 0.0);
+  for (auto _ : state) benchmark::DoNotOptimize(planetary_modes(s));
+}
+BENCHMARK(BM_planetary_modes)->Arg(3)->Arg(5)->Unit(benchmark::kMicrosecond);
+
+static void BM_planetary_response(benchmark::State& state) {
+  const HarmonicBalance hb = loaded(int(state.range(0)));
+  for (auto _ : state) {
+    const FrequencyCurve c = require_complete(sweep_frequency(hb, range(), "bench"), "bench");
+    state.counters["points"] = double(c.branch.points.size());
+  }
+}
+BENCHMARK(BM_planetary_response)->Arg(3)->Arg(5)->Unit(benchmark::kSecond)->Iterations(1);
+
+static void BM_planetary_floquet_point(benchmark::State& state) {
+  const HarmonicBalance hb = loaded(int(state.range(0)));
+  SweepOptions o = range();
+  o.omega_max = o.omega_min * 1.01;
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+  const BranchPoint& p = c.branch.points.back();
+  for (auto _ : state) benchmark::DoNotOptimize(floquet_of_hb_variational(hb, p.X, p.omega));
+}
+BENCHMARK(BM_planetary_floquet_point)->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond);

@@ -1,0 +1,179 @@
+#!/usr/bin/env python3
+"""Draw the figures of a gearhb_planetary run: gearhb_planetary.py DIR
+
+Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
+  modes.png     one mode shape of each type (the lowest nonzero rotational, translational
+                and planet mode): every body drawn at rest (grey) and displaced (colour),
+                its rotation as the turned spoke; the displacement scaled to be seen;
+  response.png  (with a `response` section) the sun's vibration over the mesh frequency
+                (AC RMS of its rotation u_s and of its centre) with the points whose
+                Floquet multipliers were computed (unstable ones in red), and the largest
+                dynamic factor K_v of the sun-planet and ring-planet meshes, the frequencies
+                where a mesh loses contact as a rug;
+  campbell.png  (with `campbell`) the natural frequencies over carrier speed;
+  phasing.png   (with `response`) the largest amplitude over the curve of each mesh harmonic
+                of the sun's rotation and centre, with the mode family mesh phasing lets the
+                harmonic drive (sun_harmonics.csv's phasing column).
+"""
+import json
+import math
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+import matplotlib.pyplot as plt  # noqa: E402
+
+from style import read_csv, rug_room, save  # noqa: E402
+
+COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
+
+
+def geometry(params):
+    t, m = params["teeth"], params["module"]
+    return {"sun": 0.5 * t["sun"] * m, "planet": 0.5 * t["planet"] * m, "ring": 0.5 * t["ring"] * m,
+            "a": 0.5 * (t["sun"] + t["planet"]) * m}
+
+
+def body_circle(ax, cx, cy, r, colour, ls="-", lw=1.0):
+    ax.add_patch(plt.Circle((cx, cy), r, fill=False, color=colour, ls=ls, lw=lw))
+
+
+def spoke(ax, cx, cy, r, angle, colour):
+    ax.plot([cx, cx + r * math.cos(angle)], [cy, cy + r * math.sin(angle)], color=colour, lw=1.0)
+
+
+def draw_shape(ax, rows, g, colour):
+    """rows: the mode_shapes.csv rows of one mode; shapes scaled so the largest move is 0.15 a."""
+    largest = max(max(abs(r["x"]), abs(r["y"]), abs(r["u"])) for r in rows) or 1.0
+    s = 0.15 * g["a"] / largest
+    for r in rows:
+        name = r["body"]
+        if name.startswith("planet"):
+            psi = math.radians(r["psi_deg"])
+            cx, cy, rad = g["a"] * math.cos(psi), g["a"] * math.sin(psi), g["planet"]
+        else:
+            cx, cy, rad = 0.0, 0.0, g["a"] if name == "carrier" else g[name]
+        ls = "--" if name == "carrier" else "-"
+        body_circle(ax, cx, cy, rad, "0.75", ls)
+        spoke(ax, cx, cy, rad, math.pi / 2, "0.75")
+        dx, dy, turn = s * r["x"], s * r["y"], s * r["u"] / rad
+        body_circle(ax, cx + dx, cy + dy, rad, colour, ls, 1.3)
+        spoke(ax, cx + dx, cy + dy, rad, math.pi / 2 + turn, colour)
+
+
+def modes_figure(d_dir, params):
+    modes, shapes = read_csv(d_dir / "modes.csv"), read_csv(d_dir / "mode_shapes.csv")
+    g = geometry(params)
+    chosen = []
+    for kind in ("rotational", "translational", "planet"):
+        for i, t in enumerate(modes["mode_type"]):
+            if t == kind and modes["frequency_hz"][i] > 1e-3 * max(modes["frequency_hz"]):
+                chosen.append((kind, i))
+                break
+    fig, axes = plt.subplots(1, len(chosen), figsize=(3.6 * len(chosen), 4.0))
+    axes = [axes] if len(chosen) == 1 else axes
+    for ax, (kind, i) in zip(axes, chosen):
+        number = modes["mode"][i]
+        rows = [{k: shapes[k][j] for k in shapes} for j in range(len(shapes["mode"])) if shapes["mode"][j] == number]
+        draw_shape(ax, rows, g, COLOURS[kind])
+        lim = 1.15 * g["ring"]
+        ax.set_xlim(-lim, lim)
+        ax.set_ylim(-lim, lim)
+        ax.set_aspect("equal")
+        ax.set_xticks([])
+        ax.set_yticks([])
+        ax.set_title("%s mode %d: %.1f Hz\nmultiplicity %d" % (kind, number, modes["frequency_hz"][i],
+                                                               modes["multiplicity"][i]), fontsize=9)
+    fig.suptitle("%s, N = %d (carrier speed 0, as in modes.csv): rest grey, mode shape in colour (scaled)"
+                 % (params.get("name", "planetary set"), params["planets"]), fontsize=10)
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    fig.savefig(d_dir / "modes.png")
+    plt.close(fig)
+    return str(d_dir / "modes.png")
+
+
+def response_figure(d_dir, params):
+    d = read_csv(d_dir / "response.csv")
+    hz, N = d["f_mesh_hz"], params["planets"]
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True)
+    top.plot(hz, d["sun_u_rms_um"], color="C0", label="sun rotation u_s (AC RMS)")
+    top.plot(hz, d["sun_xy_rms_um"], color="C1", label="sun centre x, y (AC RMS)")
+    for y, colour in (("sun_u_rms_um", "C0"), ("sun_xy_rms_um", "C1")):
+        for i, s in enumerate(d["stable"]):
+            if s == s:   # evaluated
+                top.plot(hz[i], d[y][i], "o" if s > 0.5 else "x", ms=4, color=colour if s > 0.5 else "red")
+    top.set_ylabel("um")
+    top.set_yscale("log")
+    top.plot([], [], "o", color="0.4", ms=4, label="Floquet: stable")
+    top.plot([], [], "x", color="red", ms=4, label="Floquet: unstable")
+    top.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    for kind, colour in (("sun", "C2"), ("ring", "C3")):
+        kv = [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
+        bottom.plot(hz, kv, color=colour, label="%s-planet meshes: largest K_v" % kind)
+        loss = [hz[i] for i in range(len(hz))
+                if any(d["contact_%s_%d" % (kind, n + 1)][i] != "full" for n in range(N))]
+        bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
+                    transform=bottom.get_xaxis_transform(), label="%s-planet mesh loses contact" % kind)
+    rug_room(bottom, rows=2)
+    bottom.set_ylabel("K_v: largest force / static force")
+    bottom.set_xlabel("mesh frequency [Hz]")
+    bottom.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    fig.suptitle("%s, N = %d planets, %g N m on the %s" % (params.get("name", "planetary set"), N,
+                                                           params["response"]["torque"],
+                                                           params["response"]["input"]), fontsize=10)
+    return save(fig, d_dir / "response.png")
+
+
+def phasing_figure(d_dir, params):
+    d = read_csv(d_dir / "sun_harmonics.csv")
+    H = int(max(d["harmonic"]))
+    u = [max(v for v, l in zip(d["u_um"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    xy = [max(v for v, l in zip(d["xy_um"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    family = [next(f for f, l in zip(d["phasing"], d["harmonic"]) if l == k) for k in range(1, H + 1)]
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    ls = list(range(1, H + 1))
+    floor = 1e-10 * max(u + xy)   # a harmonic that phasing cancels is round-off: drawn at the floor
+    ax.bar([l - 0.18 for l in ls], [max(v, floor) for v in u], width=0.36, color="C0", label="sun rotation u_s")
+    ax.bar([l + 0.18 for l in ls], [max(v, floor) for v in xy], width=0.36, color="C1", label="sun centre x, y")
+    ax.set_yscale("log")
+    ax.set_ylim(floor / 3, max(u + xy) * 30)
+    for l, f in zip(ls, family):
+        if f == f and f:
+            ax.text(l, max(u + xy) * 3, {"rotational": "rot.", "translational": "transl.", "none": "none"}[f],
+                    ha="center", fontsize=7)
+    ax.set_xticks(ls)
+    ax.set_xlabel("mesh harmonic l")
+    ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-10 of the largest)")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    ax.set_title("%s, N = %d, z_s = %d\nabove the bars: the family harmonic l may drive (l z_s mod N)"
+                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"]), fontsize=9)
+    return save(fig, d_dir / "phasing.png")
+
+
+def campbell_figure(d_dir, params):
+    d = read_csv(d_dir / "campbell.csv")
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    for mode in sorted(set(d["mode"])):
+        rows = [i for i, m in enumerate(d["mode"]) if m == mode]
+        ax.plot([d["carrier_rpm"][i] for i in rows], [d["frequency_hz"][i] for i in rows], color="C0", lw=1.0)
+    ax.set_xlabel("carrier speed [rpm]")
+    ax.set_ylabel("natural frequency in the carrier frame [Hz]")
+    ax.set_title("%s, N = %d: Campbell diagram\n(gyroscopic and centripetal terms; each line the k-th\n"
+                 "frequency at each speed, not a mode followed)"
+                 % (params.get("name", "planetary set"), params["planets"]), fontsize=9)
+    return save(fig, d_dir / "campbell.png")
+
+
+def main():
+    d_dir = pathlib.Path(sys.argv[1])
+    params = json.load(open(d_dir / "params.json"))
+    modes_figure(d_dir, params)
+    if (d_dir / "campbell.csv").exists():
+        campbell_figure(d_dir, params)
+    if "response" in params and (d_dir / "response.csv").exists():
+        response_figure(d_dir, params)
+        phasing_figure(d_dir, params)
+
+
+if __name__ == "__main__":
+    main()

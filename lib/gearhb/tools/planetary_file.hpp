@@ -1,0 +1,83 @@
+#pragma once
+// A planetary-set file for gearhb_planetary (programs/gearhb_planetary/README.md): the
+// set's drawing and the lumped parameters of Lin & Parker's model (gears/sets/planetary.hpp),
+// SI units, in the frame of the gear-pair file.
+//
+//   {
+//     "name": "Lin & Parker 1999 example set",
+//     "planets": 3,                                N, equally spaced unless
+//     "planet_angles_deg": [0, 120, 240],          optional: psi_n [deg], N entries, the first 0
+//     "teeth": {"sun": 27, "planet": 33, "ring": 93},   z_s, z_p, z_r = z_s + 2 z_p
+//     "module": 0.0032,                            m [m]
+//     "addendum": 1.0,                             optional h_a* (units of m), the tip circles
+//     "pressure_angle_deg": 24.6,                  operating pressure angle of both meshes
+//     "sun":     {"mass": 0.4,  "inertia_r2": 0.39, "bearing": 1e8, "torsional": 0},
+//     "ring":    {"mass": 2.35, "inertia_r2": 3.0,  "bearing": 1e8, "torsional": 1e9},
+//     "carrier": {"mass": 5.43, "inertia_r2": 6.29, "bearing": 1e8, "torsional": 0},
+//                                                  m [kg], I / r^2 [kg] (r: base radius, the
+//                                                  carrier's: the planet-centre radius), radial
+//                                                  bearing [N/m], torsional k_theta / r^2 [N/m]
+//     "planet":  {"mass": 0.66, "inertia_r2": 0.61, "bearing": 1e8},   bearing: radial and tangential
+//     "mesh":    {"sun_planet": 5e8, "ring_planet": 5e8,              mean mesh stiffness [N/m]
+//                 "sun_contact_ratio": 1.6, "ring_contact_ratio": 1.8, optional (default 1.6, 1.8)
+//                 "stiffness_ratio": 1.5,                              optional k_double / k_single (1)
+//                 "ring_sun_phase": 0},                                optional gamma_rs [mesh cycles] (0)
+//     "response": {"input": "sun", "torque": 100,                      optional: the response over
+//                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
+//                  "f_mesh_hz": {"from": 300, "to": 3000},             input, the output member held by a
+//                  "zeta": 0.02, "harmonics": 8, "stability_points": 24}   shaft of k_theta / r^2 [N/m]
+//     "campbell": {"carrier_rpm_to": 6000, "points": 31}   optional: the natural frequencies over
+//                                                  carrier speed 0..carrier_rpm_to (gyroscopic)
+//   }
+//
+// Checks, each a UsageError naming the key: the ranges of every number, z_r = z_s + 2 z_p
+// (teeth.ring: profile shifts are not modelled), the assembly condition ((z_s + z_r) / N
+// whole for equally spaced planets: key planets; (z_s + z_r) psi_n / 360 whole for given
+// angles: key planet_angles_deg.n), planets whose tip circles overlap (key planets or
+// planet_angles_deg).
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "gearhb/gears/sets/planetary.hpp"
+#include "gearhb/gears/sets/planetary_mesh.hpp"
+
+namespace gearhb {
+
+// The response over mesh frequency (`response`; programs/gearhb_planetary/README.md).
+struct PlanetaryResponseInput {
+  bool present = false;
+  Body input = Body::sun, output = Body::carrier;
+  double torque = 0.0;           // on the input [N m], > 0: loads the drive flanks
+  double output_shaft = 0.0;     // torsional stiffness added to the output [N/m] (k_theta / r^2)
+  double f_mesh_hz_from = 0.0, f_mesh_hz_to = 0.0;   // [Hz]
+  double zeta = 0.02;            // modal damping ratio of the mean system
+  int harmonics = 8;             // H
+  int stability_points = 24;     // points of the curve whose Floquet multipliers are computed
+};
+
+struct PlanetaryFile {
+  std::string name;
+  PlanetaryTeeth teeth;
+  PlanetarySet set;
+  bool equally_spaced = true;   // no planet_angles_deg in the file
+  PlanetaryMeshes meshes;       // the rectangular waves and mesh phases (planetary_mesh.hpp)
+  PlanetaryResponseInput response;
+  double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)
+  int campbell_points = 0;
+  nlohmann::json resolved;      // the file after overrides (params.json)
+};
+
+PlanetaryFile read_planetary_file(const std::string& path,
+                                  const std::vector<std::pair<std::string, std::string>>& overrides);
+
+// The radius r of a member's rotational coordinate u = r theta [m]: the base radius of the
+// sun and the ring, the planet-centre radius of the carrier.
+double member_radius(const PlanetaryTeeth& t, double pressure_angle, Body b);
+
+// Text for --help: every key, its unit and meaning.
+std::string planetary_file_help();
+
+}  // namespace gearhb

@@ -1,0 +1,373 @@
+// ===========================================================================
+// gearhb_planetary: a planetary or star gear set from its drawing
+// ===========================================================================
+//
+// From a planetary-set file (tools/planetary_file.hpp; README of this folder): the
+// linear model of Lin & Parker (1999, J. Vib. Acoust. 121:316; gears/sets/planetary.hpp),
+// three DOFs per body (sun, ring, carrier, N planets) in the carrier frame, the
+// sun-planet and ring-planet meshes along their lines of action, the bearings; carrier
+// speed 0 (no gyroscopic or centripetal terms, as Lin & Parker's Table 1):
+//   M q'' + (K_b + K_m) q = 0.
+// Its natural frequencies and modes, each classified as rotational, translational or
+// planet mode with its multiplicity (1, 2 and N - 3 for equally spaced planets).
+//
+// With a `response` section, the set over its mesh frequency (gears/sets/planetary_mesh.hpp):
+// every mesh a unilateral contact (drive flank) whose stiffness is a rectangular wave over
+// the mesh cycle, shifted by its mesh phase (Parker & Lin 2004), under the input torque,
+// the output held by its shaft; harmonic balance with exact contact and arc-length
+// continuation over the mesh frequency, the Floquet multipliers of the variational
+// equation about the HB orbit at every k-th point (k = ceil(points / stability_points)) and the
+// last one, and per mesh its dynamic factor K_v (largest force over the static one) and its
+// contact state.
+//
+// Steps: read_set (in the study's checks: a bad file exits 2 before anything is
+// written), natural_frequencies, mode_shapes, campbell, response (loaded_model, response_curve,
+// stability, response_table, response_key_numbers), draw.
+//
+// Sample runs:
+//   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --out /tmp/lp
+//   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --set planets=4
+// ===========================================================================
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "gearhb/app/case_table.hpp"
+#include "gearhb/app/study.hpp"
+#include "gearhb/app/tables.hpp"
+#include "gearhb/core/fourier.hpp"
+#include "gearhb/gears/sets/planetary_mesh.hpp"
+#include "gearhb/hb/contact.hpp"
+#include "gearhb/hb/floquet.hpp"
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/gears/sets/planetary.hpp"
+#include "gearhb/tools/planetary_file.hpp"
+
+#ifndef GEARHB_FIGURES_DIR
+#define GEARHB_FIGURES_DIR ""
+#endif
+
+using namespace gearhb;
+
+namespace {
+
+class PlanetarySetFromFile {
+ public:
+  explicit PlanetarySetFromFile(Study& study);
+  void run(Run& run);
+
+ private:
+  Study& study_;
+  bool plot_ = true;
+  PlanetaryFile file_;
+
+  void read_set();
+  std::vector<PlanetaryMode> natural_frequencies(Run& run) const;
+  void mode_shapes(Run& run, const std::vector<PlanetaryMode>& modes) const;
+  void campbell(Run& run) const;
+  void response(Run& run) const;
+  HarmonicBalance loaded_model() const;
+  FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb) const;
+  void stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c, std::vector<bool>& evaluated) const;
+  Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated) const;
+  Table sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void response_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                            const std::vector<bool>& evaluated) const;
+  void draw(Run& run) const;
+};
+
+// One mesh over the period of a point: its dynamic factor K_v (largest force over the
+// static force F0 of the mesh, README glossary) and its contact state over the period
+// (open | full | intermittent, refined between the samples: contact.hpp contact_state).
+struct MeshOverPeriod {
+  double dynamic_factor = 0.0;
+  ContactState state = ContactState::full;
+};
+
+// The static force of each mesh: kc d' x0, x0 the static deflection with every mesh closed
+// at its mean stiffness (the static part of the closed-contact solution).
+std::vector<double> static_mesh_forces(const HarmonicBalance& hb) {
+  const Eigen::VectorXd x0 = hb.closed_contact_solution(1.0).head(hb.dofs());
+  std::vector<double> F0;
+  for (std::size_t i = 0; i < hb.contacts().size(); ++i)
+    F0.push_back(hb.mean_stiffness(i) * (hb.contacts()[i].normal.dot(x0) + hb.contacts()[i].gap));
+  return F0;
+}
+
+MeshOverPeriod mesh_over_period(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i, double F0) {
+  const int n = hb.dofs(), H = hb.harmonics(), J = 32 * (2 * H + 1);
+  const UnilateralContact& ct = hb.contacts()[i];
+  Eigen::VectorXd uc(2 * H + 1), us(J);
+  for (int k = 0; k < 2 * H + 1; ++k) uc(k) = ct.normal.dot(X.segment(k * n, n)) + (k == 0 ? ct.gap : 0.0);
+  double fmax = 0.0;
+  for (int j = 0; j < J; ++j) {
+    const double th = 2.0 * M_PI * j / J;
+    us(j) = trig_series(uc, th);
+    fmax = std::max(fmax, contact_force(stiffness_at(ct, th), us(j)));
+  }
+  return {fmax / F0, contact_state(uc, us)};
+}
+
+std::string mesh_name(int i, int planets) {
+  return (i < planets ? "sun_" : "ring_") + std::to_string(i % planets + 1);
+}
+
+PlanetarySetFromFile::PlanetarySetFromFile(Study& study) : study_(study) {
+  file_program(study, "SET.json", &plot_, [this] { read_set(); });
+}
+
+void PlanetarySetFromFile::run(Run& run) {
+  run.write_text("params.json", file_.resolved.dump(2) + "\n");
+  const std::vector<PlanetaryMode> modes = natural_frequencies(run);
+  mode_shapes(run, modes);
+  if (file_.campbell_points > 0) campbell(run);
+  if (file_.response.present) response(run);
+  if (plot_) draw(run);
+}
+
+// Step 1 (in the checks, before anything is written): the set file and the overrides.
+void PlanetarySetFromFile::read_set() {
+  file_ = read_planetary_file(study_.positional(), study_.parameters().unregistered());
+}
+
+// Step 2: the natural frequencies and their types. modes.csv: mode, frequency_hz,
+// mode_type (rotational | translational | planet | mixed), multiplicity, group (the
+// frequency group, from 1). Key numbers: the frequency of each group per type
+// (frequency_hz_<type>_<k>, k from 1 in ascending order), the number of groups of each
+// type (groups_<type>) and the planet modes' multiplicity.
+std::vector<PlanetaryMode> PlanetarySetFromFile::natural_frequencies(Run& run) const {
+  const std::vector<PlanetaryMode> modes = run.timed("modes", [&] { return planetary_modes(file_.set); });
+  Table t({"mode", "frequency_hz", "mode_type", "multiplicity", "group"});
+  std::map<ModeType, int> groups;
+  int last_group = -1;
+  KeyNumbers& key = run.key_numbers();
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const PlanetaryMode& m = modes[i];
+    const double f = m.omega / (2.0 * M_PI);
+    t.add_row({long(i + 1), f, to_string(m.type), long(m.multiplicity), long(m.group + 1)});
+    if (m.group == last_group) continue;
+    last_group = m.group;
+    const int k = ++groups[m.type];
+    key.add("frequency_hz_" + to_string(m.type) + "_" + std::to_string(k), f, "Hz");
+    if (m.type == ModeType::planet) key.add("multiplicity_planet", double(m.multiplicity), "-");
+  }
+  run.write("modes.csv", t);
+  for (ModeType type : {ModeType::rotational, ModeType::translational, ModeType::planet, ModeType::mixed})
+    key.add("groups_" + to_string(type), double(groups[type]), "-");
+  key.add("modes", double(modes.size()), "-");
+  run.say(file_.name + ": " + std::to_string(file_.set.planets()) + " planets, " + std::to_string(modes.size()) +
+          " modes: " + std::to_string(groups[ModeType::rotational]) + " rotational, " +
+          std::to_string(groups[ModeType::translational]) + " translational pairs, " +
+          std::to_string(groups[ModeType::planet]) + " planet groups, " + std::to_string(groups[ModeType::mixed]) +
+          " mixed");
+  return modes;
+}
+
+// Step 3: mode_shapes.csv, one row per mode and body: mode, body (sun | ring | carrier |
+// planet_<n>), psi_deg (the planet's angle; 0 for a central member), x, y (its centre's
+// displacement in the carrier frame; a planet's zeta, eta turned by psi), u (r theta),
+// all of the mass-normalised shape [1/sqrt(kg)].
+void PlanetarySetFromFile::mode_shapes(Run& run, const std::vector<PlanetaryMode>& modes) const {
+  Table t({"mode", "body", "psi_deg", "x", "y", "u"});
+  const PlanetarySet& s = file_.set;
+  for (std::size_t i = 0; i < modes.size(); ++i) {
+    const Eigen::VectorXd& q = modes[i].shape;
+    for (auto [name, body] : {std::pair{"sun", Body::sun}, std::pair{"ring", Body::ring}, std::pair{"carrier", Body::carrier}})
+      t.add_row({long(i + 1), std::string(name), 0.0, q(coordinate(body, 0)), q(coordinate(body, 1)),
+                 q(coordinate(body, 2))});
+    for (int n = 0; n < s.planets(); ++n) {
+      const double psi = s.planet_angles[std::size_t(n)], zeta = q(planet_coordinate(n, 0)),
+                   eta = q(planet_coordinate(n, 1));
+      t.add_row({long(i + 1), "planet_" + std::to_string(n + 1), psi * 180.0 / M_PI,
+                 zeta * std::cos(psi) - eta * std::sin(psi), zeta * std::sin(psi) + eta * std::cos(psi),
+                 q(planet_coordinate(n, 2))});
+    }
+  }
+  run.write("mode_shapes.csv", t);
+}
+
+// Step 3b (with `campbell`): campbell.csv, the natural frequencies of the rotating set
+// (gyroscopic and centripetal terms, natural_frequencies_at_speed) over carrier speed:
+// carrier_rpm, mode (ascending at each speed), frequency_hz (in the carrier frame).
+void PlanetarySetFromFile::campbell(Run& run) const {
+  Table t({"carrier_rpm", "mode", "frequency_hz"});
+  const int P = file_.campbell_points;
+  run.timed("campbell", [&] {
+    for (int k = 0; k < P; ++k) {
+      const double rpm = file_.campbell_rpm_to * k / (P - 1);
+      const Eigen::VectorXd omega = natural_frequencies_at_speed(file_.set, rpm * M_PI / 30.0);
+      for (Eigen::Index i = 0; i < omega.size(); ++i) t.add_row({rpm, long(i + 1), omega(i) / (2.0 * M_PI)});
+    }
+  });
+  run.write("campbell.csv", t);
+}
+
+// Step 4 (with `response`): the set under load over the mesh frequency.
+void PlanetarySetFromFile::response(Run& run) const {
+  const HarmonicBalance hb = loaded_model();
+  FrequencyCurve c = response_curve(run, hb);
+  std::vector<bool> evaluated;
+  stability(run, hb, c, evaluated);
+  const Table t = response_table(hb, c, evaluated);
+  run.write("response.csv", t);
+  run.write("sun_harmonics.csv", sun_harmonics_table(hb, c));
+  response_key_numbers(run, hb, c, evaluated);
+}
+
+// The loaded set: the output's shaft added to its torsional stiffness, the input torque
+// T / r on the input's u (r: member_radius), the meshes as contacts.
+HarmonicBalance PlanetarySetFromFile::loaded_model() const {
+  const PlanetaryResponseInput& r = file_.response;
+  PlanetarySet s = file_.set;
+  (r.output == Body::sun ? s.sun : r.output == Body::ring ? s.ring : s.carrier).torsional += r.output_shaft;
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
+  f0(coordinate(r.input, 2)) = r.torque / member_radius(file_.teeth, s.sun_pressure_angle, r.input);
+  return planetary_harmonic_balance(s, file_.meshes, r.zeta, f0, r.harmonics);
+}
+
+// Arc-length continuation over the mesh frequency, no stability yet (the next step).
+FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBalance& hb) const {
+  SweepOptions o;
+  o.omega_min = 2.0 * M_PI * file_.response.f_mesh_hz_from;
+  o.omega_max = 2.0 * M_PI * file_.response.f_mesh_hz_to;
+  o.stability = StabilityMethod::none;
+  report_sweep_progress(run, o, file_.name);
+  const FrequencyCurve c = run.timed("response", [&] { return sweep_frequency(hb, o, file_.name); });
+  run.say(file_.name + ": " + c.branch.summary());
+  if (!c.complete) throw std::runtime_error("the response did not reach response.f_mesh_hz.to: " + c.failure);
+  return c;
+}
+
+// The Floquet multipliers of the variational equation about the HB orbit (floquet.hpp
+// floquet_of_hb_variational; about 0.2 s a point for N = 3, H = 8, so not at every point)
+// at every k-th point of the curve, k = ceil(points / stability_points), and at its last point.
+void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c,
+                                     std::vector<bool>& evaluated) const {
+  const std::size_t P = c.branch.points.size(), want = std::size_t(file_.response.stability_points);
+  evaluated.assign(P, false);
+  c.stable.assign(P, true);
+  c.floquet.assign(P, PointFloquet{});
+  if (want == 0) return;
+  const std::size_t every = std::max<std::size_t>(1, (P + want - 1) / want);
+  run.timed("stability", [&] {
+    for (std::size_t i = 0; i < P; ++i) {
+      if (i % every != 0 && i + 1 != P) continue;
+      const FloquetResult f = floquet_of_hb_variational(hb, c.branch.points[i].X, c.branch.points[i].omega);
+      evaluated[i] = true;
+      c.stable[i] = f.stable;
+      c.floquet[i].modulus = f.modulus;
+    }
+  });
+}
+
+// response.csv: f_mesh_hz, sun_u_rms_um (AC RMS of the sun's rotation u_s), sun_xy_rms_um
+// (of its centre), stable and floquet_modulus (empty where not evaluated), and per mesh
+// (sun_1..N, ring_1..N) dynamic_factor_<mesh> (K_v: largest force over the static one) and
+// contact_<mesh> (open | full | intermittent).
+Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                           const std::vector<bool>& evaluated) const {
+  const int N = file_.set.planets(), n = hb.dofs(), H = hb.harmonics();
+  std::vector<std::string> columns{"f_mesh_hz", "sun_u_rms_um", "sun_xy_rms_um", "stable", "floquet_modulus"};
+  for (int i = 0; i < 2 * N; ++i) columns.push_back("dynamic_factor_" + mesh_name(i, N));
+  for (int i = 0; i < 2 * N; ++i) columns.push_back("contact_" + mesh_name(i, N));
+  Table t(columns);
+  const std::vector<double> F0 = static_mesh_forces(hb);
+  for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
+    const Eigen::VectorXd& X = c.branch.points[p].X;
+    double u2 = 0.0, xy2 = 0.0;
+    for (int k = 1; k <= 2 * H; ++k) {
+      u2 += 0.5 * std::pow(X(k * n + coordinate(Body::sun, 2)), 2);
+      xy2 += 0.5 * (std::pow(X(k * n + coordinate(Body::sun, 0)), 2) + std::pow(X(k * n + coordinate(Body::sun, 1)), 2));
+    }
+    std::vector<Table::Cell> row{c.branch.points[p].omega / (2.0 * M_PI), 1e6 * std::sqrt(u2), 1e6 * std::sqrt(xy2),
+                                 cell(evaluated[p], c.stable[p] ? 1.0 : 0.0), cell(evaluated[p], c.floquet[p].modulus)};
+    std::vector<Table::Cell> states;
+    for (int i = 0; i < 2 * N; ++i) {
+      const MeshOverPeriod m = mesh_over_period(hb, X, std::size_t(i), F0[std::size_t(i)]);
+      row.emplace_back(m.dynamic_factor);
+      states.emplace_back(std::string(to_string(m.state)));
+    }
+    row.insert(row.end(), states.begin(), states.end());
+    t.add_row(std::move(row));
+  }
+  return t;
+}
+
+// sun_harmonics.csv: the harmonic content of the sun's motion, one row per point and mesh
+// harmonic l: f_mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
+// sqrt of the x and y amplitudes squared), and the family that mesh phasing lets harmonic l
+// drive (README "Why planet phasing suppresses mesh harmonics"): phasing = rotational (l z_s
+// / N whole), translational ((l z_s +- 1) / N whole) or none; empty for unequal spacing.
+Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const int n = hb.dofs(), N = file_.set.planets(), zs = file_.teeth.sun;
+  Table t({"f_mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
+  for (const BranchPoint& p : c.branch.points)
+    for (int l = 1; l <= hb.harmonics(); ++l) {
+      auto amp = [&](int i) { return std::hypot(p.X((2 * l - 1) * n + i), p.X(2 * l * n + i)); };
+      const int r = (l * zs) % N;
+      const std::string family = !file_.equally_spaced ? "" : r == 0 ? "rotational"
+                                 : (r == 1 || r == N - 1) ? "translational" : "none";
+      t.add_row({p.omega / (2.0 * M_PI), long(l), 1e6 * amp(coordinate(Body::sun, 2)),
+                 1e6 * std::hypot(amp(coordinate(Body::sun, 0)), amp(coordinate(Body::sun, 1))), family});
+    }
+  return t;
+}
+
+// The curve's key numbers: points, the largest dynamic factor and where, the points with
+// a mesh losing contact and the first such mesh frequency, the stability evaluated.
+void PlanetarySetFromFile::response_key_numbers(Run& run, const HarmonicBalance& hb,
+                                                const FrequencyCurve& c, const std::vector<bool>& evaluated) const {
+  KeyNumbers& key = run.key_numbers();
+  double kv_max = 0.0, kv_hz = 0.0, first_loss = NAN;
+  const std::vector<double> F0 = static_mesh_forces(hb);
+  int loss_points = 0, checked = 0, unstable = 0;
+  for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
+    const double hz = c.branch.points[p].omega / (2.0 * M_PI);
+    bool loss = false;
+    for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
+      const MeshOverPeriod m = mesh_over_period(hb, c.branch.points[p].X, i, F0[i]);
+      if (m.dynamic_factor > kv_max) kv_max = m.dynamic_factor, kv_hz = hz;
+      loss = loss || m.state != ContactState::full;
+    }
+    loss_points += loss ? 1 : 0;
+    if (loss && !(hz >= first_loss)) first_loss = hz;
+    checked += evaluated[p] ? 1 : 0;
+    unstable += evaluated[p] && !c.stable[p] ? 1 : 0;
+  }
+  key.add("response_points", double(c.branch.points.size()), "-");
+  key.add("dynamic_factor_max", kv_max, "-");
+  key.add("dynamic_factor_max_f_mesh_hz", kv_hz, "Hz");
+  key.add("contact_loss_points", double(loss_points), "-");
+  if (std::isfinite(first_loss)) key.add("contact_loss_lowest_f_mesh_hz", first_loss, "Hz");
+  key.add("stability_points", double(checked), "-");
+  key.add("unstable_points", double(unstable), "-");
+  char line[240];
+  std::snprintf(line, sizeof line, "largest K_v %.3f at %.1f Hz; a mesh loses contact at %d points%s; Floquet at %d points, %d unstable",
+                kv_max, kv_hz, loss_points,
+                std::isfinite(first_loss) ? (", the lowest at " + std::to_string(int(std::lround(first_loss))) + " Hz").c_str() : "",
+                checked, unstable);
+  run.say(file_.name + ": " + line);
+}
+
+// Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
+void PlanetarySetFromFile::draw(Run& run) const {
+  draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/gearhb_planetary.py",
+                   "modes.png");
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  Study study("gearhb_planetary",
+              "gearhb_planetary: a planetary or star gear set from its drawing (Lin & Parker 1999)\n"
+              "  M q'' + (K_b + K_m) q = 0, three DOFs per body in the carrier frame\n"
+              "Writes DIR/modes.csv (frequency_hz, mode_type, multiplicity), mode_shapes.csv,\n"
+              "key_numbers.json, params.json (the resolved file), timings.csv and modes.png.\n\n" +
+                  planetary_file_help());
+  PlanetarySetFromFile program(study);
+  return study.run(argc, argv, [&](Run& run) { program.run(run); });
+}
