@@ -124,16 +124,16 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     curves = branches(torques, frc)
     fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
-    for ax, y, label in ((axes[0], "dte_rms_um", "DTE RMS (oscillating part) [um]"),
-                         (axes[1], "dynamic_factor", "dynamic factor K_v = max |mesh force| / F0")):
+    for ax, y, scale, label in ((axes[0], "x_rms_ac", 1e6, "DTE RMS (oscillating part) [um]"),
+                                (axes[1], "dynamic_factor", 1.0, "dynamic factor K_v = max |mesh force| / F0")):
         for label_c, col, d, _ in curves:
-            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c)
+            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c, scale=scale)
         for i, T in enumerate(torques):   # each event on the curve of its branch
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
                 on = rows_of(frc[i], int(bif[i]["branch"][k]) if "branch" in bif[i] else 0)
                 if on["omega"]:
                     xb, yb = nearest(on, bif[i]["omega"][k], y)
-                    ax.plot([xb], [yb], BIF_MARKER.get(t, "x"), mfc="none", color=torque_colour(T, torques), ms=7)
+                    ax.plot([xb], [yb * scale], BIF_MARKER.get(t, "x"), mfc="none", color=torque_colour(T, torques), ms=7)
         if iso is not None and y == "dynamic_factor":   # before the rugs, so that the axis holds it whole
             for i, T in enumerate(torques):
                 ax.plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)

@@ -38,8 +38,8 @@ def draw(data, fig_dir):
     for r, (scene, example, i) in enumerate(SCENES):
         for name, suffix, colour in MODELS:
             frc, kn, sweep_s, modes = load(data, example + suffix, i)
-            for c, y in enumerate(("dte_rms_um", "dynamic_factor")):
-                plot_branch(axes[r][c], frc, y=y, x="speed_rpm", color=colour)
+            for c, (y, scale) in enumerate((("x_rms_ac", 1e6), ("dynamic_factor", 1.0))):
+                plot_branch(axes[r][c], frc, y=y, x="speed_rpm", color=colour, scale=scale)
             rows.append((scene, name, kn["dte_rms_peak_um_%d" % i], kn["dynamic_factor_peak_%d" % i],
                          kn.get("back_impact_first_f_mesh_hz_%d" % i), sweep_s, len(frc["omega"]), modes))
         axes[r][0].set_ylabel("%s\nDTE RMS [um]" % scene)

@@ -89,7 +89,7 @@ def compare(out, rows, axes, keys):
         ste = read(d / "ste_1.csv")
         a1.plot([num(s["phase"]) for s in ste], [num(s["ste_um"]) for s in ste], style, label=label)
         frc = read(d / "frc_1.csv")
-        a2.plot([num(s["f_mesh_hz"]) for s in frc], [num(s["dte_rms_um"]) for s in frc], style, label=label)
+        a2.plot([num(s["f_mesh_hz"]) for s in frc], [1e6 * num(s["x_rms_ac"]) for s in frc], style, label=label)
     a1.set_xlabel("mesh phase")
     a1.set_ylabel("STE [um]")
     a1.set_title("loaded STE at %s = %g" % (py, top), fontsize=9)

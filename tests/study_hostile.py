@@ -56,7 +56,7 @@ ulimit -c 0
 case $mode in
   0.0) mkdir -p "$out" && printf '{"x": {"value": %s, "unit": "1"}}\n' "$torque" > "$out/key_numbers.json" &&
        printf 'phase,ste_um\n0,1\n1,2\n' > "$out/ste_1.csv" &&
-       printf 'f_mesh_hz,dte_rms_um\n1,1\n2,2\n' > "$out/frc_1.csv" ;;
+       printf 'omega,f_mesh_hz,x_rms_ac\n1,1,1e-6\n2,2,2e-6\n' > "$out/frc_1.csv" ;;
   1.0) trap '' TERM; echo $$ > "$out.pids"; sleep 1000 & echo $! >> "$out.pids"; wait ;;
   2.0) printf 'fake: a first line\nfake: bad byte \377\376 in a name\n' >&2; exit 1 ;;
   3.0) kill -SEGV $$ ;;

@@ -725,18 +725,16 @@ void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicB
 // and branch (a period-2 branch: hb its period-2 model, its omegas half the mesh frequency).
 Table GearPairFromFile::mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
                                    const BranchLabel& label, const RowProgress& progress) const {
-  const auto& P = c.branch.points;
   const auto& m = s.points;
   return frequency_response_table(
       hb, c, dte_coordinate(file_.dynamics.dofs),
-      {"f_mesh_hz", "speed_rpm", "dte_rms_um", "dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N", "dynamic_factor",
-       "contact_drive", "contact_back"},
+      {"dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N", "dynamic_factor", "contact_drive", "contact_back"},
       [&](std::size_t k) -> std::vector<Table::Cell> {
-        const double w = label.period * P[k].omega;
-        return {w / (2.0 * M_PI), speed_rpm(w), m[k].dte_rms * 1e6, m[k].dte_ptp * 1e6, m[k].force_max, m[k].force_min,
-                m[k].dynamic_factor, std::string(to_string(m[k].drive)), std::string(to_string(m[k].back))};
+        return {m[k].dte_ptp * 1e6, m[k].force_max, m[k].force_min, m[k].dynamic_factor,
+                std::string(to_string(m[k].drive)), std::string(to_string(m[k].back))};
       },
-      [&](std::size_t k) { return std::string(to_string(m[k].contact)); }, progress, label);
+      [&](std::size_t k) { return std::string(to_string(m[k].contact)); }, progress, label,
+      {FrequencyAxis::gear, double(file_.pair.gear1.teeth)});
 }
 
 // frc_<i>.csv and bifurcations_<i>.csv: the period-1 curve (period 1, branch 0), then each
@@ -856,13 +854,14 @@ void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const Har
     return mesh_time_integration_check(hb, r.curve, r.summary, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
                                        file_.dynamics.time_check_points, progress);
   });
-  Table t({"f_mesh_hz", "contact", "dte_rms_um_hb", "dte_rms_um_ti", "dynamic_factor_hb", "dynamic_factor_ti",
-           "rel_diff", "periods"});
+  Table t(check_columns(FrequencyAxis::gear, {"x_rms_ac", "dynamic_factor"}));
   double worst = 0.0;
   long impacts = 0, losses = 0;
   for (const auto& c : rows) {
-    t.add_row({c.omega / (2.0 * M_PI), std::string(to_string(c.contact)), c.dte_rms_hb * 1e6, c.dte_rms_ti * 1e6,
-               c.dynamic_factor_hb, c.dynamic_factor_ti, c.rel_diff, long(c.periods)});
+    std::vector<Table::Cell> row = frequency_cells(FrequencyAxis::gear, c.omega, file_.pair.gear1.teeth);
+    row.insert(row.end(), {std::string(to_string(c.contact)), c.dte_rms_hb, c.dte_rms_ti, c.dynamic_factor_hb,
+                           c.dynamic_factor_ti, c.rel_diff, long(c.periods)});
+    t.add_row(std::move(row));
     worst = std::max(worst, c.rel_diff);
     impacts += (c.contact == MeshContact::back_impact || c.contact == MeshContact::drive_loss_back_impact) ? 1 : 0;
     losses += c.contact == MeshContact::drive_loss ? 1 : 0;
