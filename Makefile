@@ -49,7 +49,7 @@ test: build
 
 # Regenerate the console output quoted in the chapter READMEs (CTest checks it).
 docs: build
-	@$(PYTHON) tests/readme_console.py --write $(BUILD) chapters/*/README.md programs/*/README.md
+	@$(PYTHON) tests/readme_console.py --write $(BUILD) chapters/*/README.md programs/*/README.md programs/*/NOTES.md
 
 bench: build
 	@$(BUILD)/bin/gearhb_bench

@@ -1,7 +1,7 @@
 // A gear pair from its drawing (issue 20): the loaded STE of one pair, 3 torques x
 // 64 phases, chapter 7's beam model (target < 50 ms on one core). Two pairs: the
 // thesis gear (z 50/50) and the FZG type C pair (z 16/24, shifted, consistent Hertz).
-// Times go to programs/gearhb_gear/README.md. Last: one whole design with its dynamics.
+// Times go to programs/gearhb_gear/NOTES.md. Last: one whole design with its dynamics.
 #include <benchmark/benchmark.h>
 
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"

@@ -3,7 +3,7 @@
 // the slices' sections and stiffnesses built, then the load shared over slices x pairs per
 // torque (target <= 50 ms on one core). Two readings: Hertz inside the sharing (the example
 // file's: a nested Brent over about 50 contacts per phase) and no Hertz (the linear active set,
-// the potential-energy method's path). Times go to programs/gearhb_gear/README.md.
+// the potential-energy method's path). Times go to programs/gearhb_gear/NOTES.md.
 #include <benchmark/benchmark.h>
 
 #include "gearhb/gears/pair/pair_helical.hpp"

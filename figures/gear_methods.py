@@ -13,7 +13,7 @@ Writes into FIG_DIR (default DATA_ROOT):
   gear_methods_harris.png  the thesis gear's Harris map (STE peak-to-peak against torque) with
                            and without the long linear tip relief of thesis_pair_relief.json,
                            both methods.
-and prints the comparison table (markdown) of programs/gearhb_gear/README.md.
+and prints the comparison table (markdown) of programs/gearhb_gear/NOTES.md.
 """
 import json
 import pathlib

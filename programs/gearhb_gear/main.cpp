@@ -542,7 +542,7 @@ void GearPairFromFile::dynamics(Run& run) const {
 BifurcationDiagram GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb,
                                                          const Response& r, Table& t, Table& hb_section) const {
   const std::string n = std::to_string(i + 1);
-  const double lo = 2.0 * M_PI * file_.dynamics.f_mesh_from, hi = 2.0 * M_PI * file_.dynamics.f_mesh_to;
+  const double lo = 2.0 * M_PI * file_.dynamics.f_min_hz, hi = 2.0 * M_PI * file_.dynamics.f_max_hz;
   const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, file_.diagram.options,
                                                 "bifurcation_diagram_" + n, torque_label(i) + ": ");
   auto lead = [&](double w) {
@@ -588,7 +588,7 @@ void GearPairFromFile::iso_dynamic_factor(Run& run) const {
   }
   Table t(columns);
   std::vector<double> peak(inputs.size(), 0.0);
-  const double z1 = file_.pair.gear1.teeth, from = 60.0 * d.f_mesh_from / z1, to = 60.0 * d.f_mesh_to / z1;
+  const double z1 = file_.pair.gear1.teeth, from = 60.0 * d.f_min_hz / z1, to = 60.0 * d.f_max_hz / z1;
   for (int j = 0; j < kSpeeds; ++j) {
     const double n1 = from + (to - from) * j / (kSpeeds - 1);
     std::vector<double> row{n1};
@@ -673,8 +673,8 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   r.mesh = mesh;
   r.f_natural = closed_contact_frequencies(mesh, MeshDofs::one_dof, {}).front();
   SweepOptions o;
-  o.omega_min = 2.0 * M_PI * d.f_mesh_from;
-  o.omega_max = 2.0 * M_PI * d.f_mesh_to;
+  o.omega_min = 2.0 * M_PI * d.f_min_hz;
+  o.omega_max = 2.0 * M_PI * d.f_max_hz;
   o.direction = d.direction;
   o.continuation.ds_max = 0.05;
   r.curve = timed_sweep(run, hb, o, torque_label(i));
@@ -797,7 +797,7 @@ void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const Har
                                               const BifurcationDiagram* d) const {
   KeyNumbers& key = run.key_numbers();
   const std::string n = std::to_string(i + 1);
-  const double lo = 2.0 * M_PI * file_.dynamics.f_mesh_from, hi = 2.0 * M_PI * file_.dynamics.f_mesh_to;
+  const double lo = 2.0 * M_PI * file_.dynamics.f_min_hz, hi = 2.0 * M_PI * file_.dynamics.f_max_hz;
   Intervals stable = stable_intervals(r.curve);
   const Intervals gaps = uncovered(lo, hi, stable);
   key.add("unstable_period1_ranges_" + n, double(gaps.size()), "-");

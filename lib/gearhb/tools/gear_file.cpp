@@ -155,8 +155,8 @@ void read_dynamics(GearFile& f, const json& j, const std::string& path) {
   const double hi = r.number(sp, "speed", "to", 1e-3, 1e7, "[1e-3, 1e7]");
   if (!(hi > lo)) fail_key(path, "speed.to", "must exceed speed.from");
   const double to_hz = d.speed_in_rpm ? f.pair.gear1.teeth / 60.0 : 1.0;   // f_mesh = z1 n1 / 60
-  d.f_mesh_from = lo * to_hz, d.f_mesh_to = hi * to_hz;
-  if (!(d.f_mesh_to <= 1e6)) fail_key(path, "speed.to", "gives a mesh frequency above 1 MHz");
+  d.f_min_hz = lo * to_hz, d.f_max_hz = hi * to_hz;
+  if (!(d.f_max_hz <= 1e6)) fail_key(path, "speed.to", "gives a mesh frequency above 1 MHz");
   only_keys(dyn, path, "dynamics", {"model", "mesh", "zeta", "bearing_zeta", "harmonics", "sweep", "back_flank",
                                     "time_check_points", "iso_quality_grade"});
   d.dofs = r.choice(dyn, "dynamics", "model", {"one_dof", "six_dof"}, 0) == 1 ? MeshDofs::bearings : MeshDofs::one_dof;

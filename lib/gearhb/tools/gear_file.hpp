@@ -70,7 +70,7 @@ struct GearFileGear {
 struct GearDynamicsInput {
   bool present = false;            // the file has a speed range
   bool speed_in_rpm = false;       // speed.unit: rpm of gear 1, or mesh_hz
-  double f_mesh_from = 0.0, f_mesh_to = 0.0;   // the range as mesh frequencies [Hz]
+  double f_min_hz = 0.0, f_max_hz = 0.0;   // the range as mesh frequencies [Hz]
   MeshDofs dofs = MeshDofs::one_dof;           // dynamics.model one_dof | six_dof
   DteModel mesh = DteModel::constant;          // dynamics.mesh constant | parametric
   double zeta = 0.08;              // mesh damping ratio (chapter 8)
