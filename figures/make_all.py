@@ -15,6 +15,8 @@ figures/tooth_model_chart.py the tooth models' error against cost
 figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png),
 figures/helical_ste.py the STE peak-to-peak of a helical pair against its helix angle
 (build/figures/gear_helical_ste.png, build/data/gearhb_gear/helical_ste/helical_ste.csv);
+then every example of programs/gearhb_planetary/examples/ into
+build/data/gearhb_planetary/<example>/ (figures copied to build/figures/planetary_<example>_*.png);
 build/figures/index.html (figures/report.py)
 links them all. build/figures/timings.csv records each step's wall time of this run (the only
 timings the READMEs point to; `make bench` measures the library's).
@@ -105,6 +107,16 @@ def main():
         import gear_models
         for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):
             print("[figures]   %s" % png, flush=True)
+    planetary = build / "bin" / "gearhb_planetary"
+    if planetary.is_file() and not args.only:
+        for example in sorted((HERE.parent / "programs" / "gearhb_planetary" / "examples").glob("*.json")):
+            out = build / "data" / "gearhb_planetary" / example.stem
+            print("[figures] %s %s --out %s" % (planetary, example.name, out), flush=True)
+            t0 = time.time()
+            subprocess.run([str(planetary), str(example), "--quiet", "--out", str(out)], check=True)
+            timings.append(("gearhb_planetary " + example.stem, time.time() - t0))
+            for png in sorted(out.glob("*.png")):
+                shutil.copy(png, fig_dir / ("planetary_%s_%s" % (example.stem, png.name)))
     timings[0] = ("make_figures_total", time.time() - start)
     with open(fig_dir / "timings.csv", "w") as f:
         f.write("step,wall_s\n" + "".join("%s,%.1f\n" % t for t in timings))
