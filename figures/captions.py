@@ -252,10 +252,11 @@ GEAR_CAPTIONS = {
                     "switched at the period doublings in colours of their own and the speeds with no stable "
                     "period-1 orbit shaded (where there are any); the rug below the axis is the contact of each "
                     "flank (drive-flank loss, back-flank impact), one row per curve.",
-    "campbell.png": "Campbell diagram: mesh orders 1-4 against speed with the mesh natural frequencies; a "
-                    "resonance where an order line meets a natural frequency.",
+    "campbell.png": "Campbell diagram: mesh orders 1-4 against speed with the natural frequencies of the "
+                    "linear, always-closed mesh. An order line crosses one where that linear mesh would resonate; the "
+                    "computed peaks (response.png) lie lower wherever the teeth separate, the softening of contact loss.",
     "time_history.png": "Two periods of the DTE and the mesh force (drive and back flank) at the hardest contact "
                         "of the run: where the teeth separate and where the back flank is hit.",
-    "dte_spectrum.png": "DTE per mesh order at three speeds (below, at and above the peak): which order carries "
-                        "the response.",
+    "dte_spectrum.png": "DTE per mesh order at the speeds named in its legend (the peak's among them): which "
+                        "order carries the response.",
 }

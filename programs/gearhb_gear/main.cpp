@@ -209,7 +209,7 @@ class GearPairFromFile {
                                          Table& t, Table& hb_section) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
-  double speed_rpm(double omega) const { return 60.0 * omega / (2.0 * M_PI) / file_.pair.gear1.teeth; }
+  double speed_rpm(double omega) const { return 60.0 * hz(omega) / file_.pair.gear1.teeth; }
   std::string torque_label(std::size_t i) const;   // "T1 = 100 N m": names torque i's curve in progress lines
 };
 
@@ -393,6 +393,28 @@ void GearPairFromFile::transmission_error(Run& run) const {
   run.write("spectrum.csv", spectrum_table(spectrum_columns, spectra, H));
 }
 
+// fillet_stress_<i>.csv: along both fillets of each gear's tooth at the contact position of
+// its peak root stress.
+Table fillet_stress_table(const FePairModel& fe, const std::vector<FeRootStressPoint> (&r)[2]) {
+  Table along({"gear", "s_from_A_m", "side", "radius_m", "tangent_deg", "stress_MPa"});
+  for (int j = 0; j < 2; ++j) {
+    const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
+    const auto& stations = (j == 0 ? fe.gear1() : fe.gear2()).fillet_stations();
+    // Per side, ordered from the root up; a node shared by two fillet edges is read in both
+    // triangles: the mean of the two (their difference is the discretisation's).
+    std::map<std::pair<bool, double>, std::array<double, 3>> rows;   // (other side, radius) -> tangent, sum, count
+    for (const auto& [station, sigma] : peak->fillet) {
+      const FilletStation& st = stations[std::size_t(station)];
+      auto& row = rows[{!st.loaded_side, st.radius}];
+      row[0] = st.tangent_deg, row[1] += sigma, row[2] += 1;
+    }
+    for (const auto& [where, row] : rows)
+      along.add_row({long(j + 1), peak->s, std::string(where.first ? "other" : "loaded"), where.second, row[0],
+                     row[1] / row[2] / 1e6});
+  }
+  return along;
+}
+
 // Step 4b (method fe): the root stress of each gear's teeth over the path of contact
 // (root_stress_<i>.csv: the largest tensile stress on the fillet below the loaded flank,
 // where it sits; fillet_stress_<i>.csv: along both fillets at the peak) beside ISO 6336-3
@@ -420,24 +442,7 @@ void GearPairFromFile::root_stress_and_contact(Run& run) const {
       t.add_row({r[0][k].s, r[0][k].stress / 1e6, a.radius, a.tangent_deg, r[1][k].stress / 1e6, b.radius, b.tangent_deg});
     }
     run.write("root_stress_" + n + ".csv", t);
-    // Along both fillets of each gear's tooth at the contact position of its peak.
-    Table along({"gear", "s_from_A_m", "side", "radius_m", "tangent_deg", "stress_MPa"});
-    for (int j = 0; j < 2; ++j) {
-      const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
-      const auto& stations = (j == 0 ? fe.gear1() : fe.gear2()).fillet_stations();
-      // Per side, ordered from the root up; a node shared by two fillet edges is read in both
-      // triangles: the mean of the two (their difference is the discretisation's).
-      std::map<std::pair<bool, double>, std::array<double, 3>> rows;   // (other side, radius) -> tangent, sum, count
-      for (const auto& [station, sigma] : peak->fillet) {
-        const FilletStation& st = stations[std::size_t(station)];
-        auto& row = rows[{!st.loaded_side, st.radius}];
-        row[0] = st.tangent_deg, row[1] += sigma, row[2] += 1;
-      }
-      for (const auto& [where, row] : rows)
-        along.add_row({long(j + 1), peak->s, std::string(where.first ? "other" : "loaded"), where.second, row[0],
-                       row[1] / row[2] / 1e6});
-    }
-    run.write("fillet_stress_" + n + ".csv", along);
+    run.write("fillet_stress_" + n + ".csv", fillet_stress_table(fe, r));
     for (int j = 0; j < 2; ++j) {
       const std::string gj = std::to_string(j + 1) + "_" + n;
       const auto peak = std::max_element(r[j].begin(), r[j].end(), [](auto& x, auto& y) { return x.stress < y.stress; });
@@ -546,7 +551,7 @@ BifurcationDiagram GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i
   const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, file_.diagram.options,
                                                 "bifurcation_diagram_" + n, torque_label(i) + ": ");
   auto lead = [&](double w) {
-    return std::vector<Table::Cell>{long(i + 1), file_.torques[i], w / (2.0 * M_PI), speed_rpm(w)};
+    return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
   add_bifurcation_rows(t, d, q, 1e6, lead);
@@ -619,7 +624,7 @@ void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size
     if (best == P.size()) continue;
     const Eigen::VectorXd c = hb.project(P[best].X, q);
     for (int k = 1; k <= hb.harmonics(); ++k)
-      spectrum.add_row({long(i + 1), P[best].omega / (2.0 * M_PI), long(k), 1e6 * std::hypot(c[2 * k - 1], c[2 * k])});
+      spectrum.add_row({long(i + 1), hz(P[best].omega), long(k), 1e6 * std::hypot(c[2 * k - 1], c[2 * k])});
   }
   std::size_t pick = P.size();
   auto rank = [&](std::size_t k) {   // back impacts first, then drive losses, then K_v
@@ -639,7 +644,7 @@ void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size
   for (int period = 0; period < 2; ++period)
     for (Eigen::Index j = 0; j < x.size(); ++j) {
       const double ph = period + double(j) / double(x.size());
-      history.add_row({long(i + 1), P[pick].omega / (2.0 * M_PI), ph, 1e3 * T * ph, 1e6 * x[j], fd[j] - fb[j], fd[j], fb[j]});
+      history.add_row({long(i + 1), hz(P[pick].omega), ph, 1e3 * T * ph, 1e6 * x[j], fd[j] - fb[j], fd[j], fb[j]});
     }
 }
 
@@ -764,13 +769,13 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   key.add("mesh_stiffness_kc_N_per_m_" + n, r.mesh.kc, "N/m");
   key.add("equivalent_mass_kg_" + n, r.mesh.me, "kg");
   key.add("dte_rms_peak_um_" + n, s.dte_rms_peak * 1e6, "um");
-  key.add("dte_rms_peak_f_mesh_hz_" + n, s.dte_rms_peak_omega / (2.0 * M_PI), "Hz");
+  key.add("dte_rms_peak_f_mesh_hz_" + n, hz(s.dte_rms_peak_omega), "Hz");
   key.add("dynamic_factor_peak_" + n, s.dynamic_factor_peak, "-");
   key.add("dynamic_factor_peak_speed_rpm_" + n, speed_rpm(s.dynamic_factor_peak_omega), "rpm");
   if (std::isfinite(s.drive_loss_first_omega))
-    key.add("drive_loss_first_f_mesh_hz_" + n, s.drive_loss_first_omega / (2.0 * M_PI), "Hz");
+    key.add("drive_loss_first_f_mesh_hz_" + n, hz(s.drive_loss_first_omega), "Hz");
   if (std::isfinite(s.back_impact_first_omega))
-    key.add("back_impact_first_f_mesh_hz_" + n, s.back_impact_first_omega / (2.0 * M_PI), "Hz");
+    key.add("back_impact_first_f_mesh_hz_" + n, hz(s.back_impact_first_omega), "Hz");
   key.add("mean_force_rel_dev_" + n, s.mean_force_rel_dev, "-");
   long unstable = 0;
   for (bool st : r.curve.stable) unstable += st ? 0 : 1;
@@ -779,7 +784,7 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   key.add("bifurcations_" + n, double(r.curve.bifurcations.size()), "-");
   char line[200];
   std::snprintf(line, sizeof line, "T1 = %g N m: peak DTE RMS %.4f um at %.1f Hz, peak K_v %.4f at %.0f rpm, %zu points",
-                file_.torques[i], s.dte_rms_peak * 1e6, s.dte_rms_peak_omega / (2.0 * M_PI), s.dynamic_factor_peak,
+                file_.torques[i], s.dte_rms_peak * 1e6, hz(s.dte_rms_peak_omega), s.dynamic_factor_peak,
                 speed_rpm(s.dynamic_factor_peak_omega), r.curve.branch.points.size());
   run.say(line);
 }
