@@ -239,29 +239,23 @@ void check_helical(GearFile& f, const json& model, const std::string& path) {
     fail_key(path, "dynamics.model", "six_dof takes no helix angle (no axial DOFs): one_dof");
   }
 
-}  // namespace
+// The pair's basic numbers the gears are built from.
+struct PairBasics {
+  double m = 0.0, alpha = 0.0, ha = 0.0, hf = 0.0, gap = 0.0;
+};
 
-GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
-  json j = read_json_file(path);
-  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
-                          "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
-                          "bifurcation_diagram", "period_doubling"});
-  for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
-  const Reader r{path};
-  GearFile f;
-  f.resolved = j;
-  f.name = json_name(j, path, "name", "gear pair");
-
-  // --- the pair -----------------------------------------------------------------
-  const double m = r.number(j, "", "module", 1e-5, 1.0, "[1e-5, 1] m");
-  const double alpha = r.number(j, "", "pressure_angle_deg", 10.0, 35.0, "[10, 35] deg");
+// The pair's drawing keys: module, pressure angle, helix, the basic rack, the backlash.
+PairBasics read_pair_keys(GearFile& f, const json& j, const Reader& r, const std::string& path) {
+  PairBasics b;
+  const double m = b.m = r.number(j, "", "module", 1e-5, 1.0, "[1e-5, 1] m");
+  const double alpha = b.alpha = r.number(j, "", "pressure_angle_deg", 10.0, 35.0, "[10, 35] deg");
   // Helical (pair_helical.hpp): module and pressure angle are then the normal ones.
   HelicalPair& h = f.helical;
   h.helix_angle = r.optional(j, "", "helix_angle_deg", 0.0, 0.0, 45.0, "[0, 45] deg") * M_PI / 180.0;
   h.left_hand = r.choice(j, "", "hand", {"right", "left"}, 0) == 1;
   h.normal_module = m;
   h.normal_pressure_angle_deg = alpha;
-  double gap = 0.0;   // double helical: the gap between the halves [m], out of both face widths
+  double& gap = b.gap;   // double helical: the gap between the halves [m], out of both face widths
   if (j.contains("double_helical")) {
     const json& d = j["double_helical"];
     if (!d.is_object()) fail_key(path, "double_helical", "must be an object {gap}");
@@ -272,13 +266,18 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   }
   const json rack = j.value("basic_rack", json::object());
   only_keys(rack, path, "basic_rack", {"addendum", "dedendum", "root_radius"});
-  const double ha = r.optional(rack, "basic_rack", "addendum", 1.0, 0.5, 2.0, "[0.5, 2] (units of m)");
-  const double hf = r.optional(rack, "basic_rack", "dedendum", 1.25, 0.5, 2.5, "[0.5, 2.5] (units of m)");
+  b.ha = r.optional(rack, "basic_rack", "addendum", 1.0, 0.5, 2.0, "[0.5, 2] (units of m)");
+  const double hf = b.hf = r.optional(rack, "basic_rack", "dedendum", 1.25, 0.5, 2.5, "[0.5, 2.5] (units of m)");
   f.root_radius_coefficient = r.optional(rack, "basic_rack", "root_radius", 0.38, 0.0, 0.6, "[0, 0.6] (units of m)");
   f.dedendum_coefficient = hf;
-  if (!(hf >= ha)) fail_key(path, "basic_rack.dedendum", "must be >= the addendum (no negative tip clearance)");
+  if (!(hf >= b.ha)) fail_key(path, "basic_rack.dedendum", "must be >= the addendum (no negative tip clearance)");
   f.backlash = r.optional(j, "", "backlash", 0.0, 0.0, 0.5 * M_PI * m, "[0, pi m / 2] m");
 
+  return b;
+}
+
+// The torques [N m], 1 to 16.
+void read_torques(GearFile& f, const json& j, const std::string& path) {
   if (!j.contains("torques")) fail_key(path, "torques", "is missing");
   if (!j["torques"].is_array() || j["torques"].empty() || j["torques"].size() > 16)
     fail_key(path, "torques", "must be a list of 1 to 16 torques [N m]");
@@ -289,16 +288,45 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     f.torques.push_back(T);
   }
 
-  // --- the gears ------------------------------------------------------------------
+}
+
+// A gear's tip relief (gears.<i>.tip_relief): amount, shape, and where it starts.
+struct ReliefInput {
+  double amount = 0.0, start = 0.0;
+  ReliefStart kind = ReliefStart::length;
+  ReliefShape shape = ReliefShape::linear;
+};
+ReliefInput read_tip_relief(const json& tr, const Reader& r, const std::string& t) {
+  ReliefInput ri;
+  only_keys(tr, r.file, t, {"amount", "start", "shape"});
+  ri.amount = r.number(tr, t, "amount", 0.0, 1e-3, "[0, 1e-3] m");
+  ri.shape = r.choice(tr, t, "shape", {"linear", "parabolic"}, 0) == 0 ? ReliefShape::linear : ReliefShape::parabolic;
+  if (!tr.contains("start")) fail_key(r.file, t + ".start", "is missing (one of roll_angle_deg, diameter, length)");
+  const json& st = tr["start"];
+  only_keys(st, r.file, t + ".start", {"roll_angle_deg", "diameter", "length"});
+  if (st.size() != 1) fail_key(r.file, t + ".start", "must give exactly one of roll_angle_deg, diameter, length");
+  if (st.contains("roll_angle_deg")) {
+    ri.kind = ReliefStart::roll_angle_deg;
+    ri.start = r.number(st, t + ".start", "roll_angle_deg", 0.0, 90.0, "[0, 90] deg");
+  } else if (st.contains("diameter")) {
+    ri.kind = ReliefStart::diameter;
+    ri.start = r.number(st, t + ".start", "diameter", 0.0, 20.0, "[0, 20] m");
+  } else {
+    ri.kind = ReliefStart::length;
+    ri.start = r.number(st, t + ".start", "length", 0.0, 1.0, "[0, 1] m");
+  }
+  return ri;
+}
+
+// The two gears (driver, driven), their tip reliefs and the centre distance.
+void read_gears(GearFile& f, const json& j, const Reader& r, const PairBasics& pb, const std::string& path) {
+  const double m = pb.m, alpha = pb.alpha, ha = pb.ha, hf = pb.hf, gap = pb.gap;
+  HelicalPair& h = f.helical;
   if (!j.contains("gears")) fail_key(path, "gears", "is missing");
   if (!j["gears"].is_array() || j["gears"].size() != 2) fail_key(path, "gears", "must be a list of 2 gears (driver, driven)");
   GearGeometry* geo[2] = {&f.pair.gear1, &f.pair.gear2};
   double* E[2] = {&f.pair.youngs_modulus1, &f.pair.youngs_modulus2};
-  struct ReliefInput {
-    double amount = 0.0, start = 0.0;
-    ReliefStart kind = ReliefStart::length;
-    ReliefShape shape = ReliefShape::linear;
-  } relief[2];
+  ReliefInput relief[2];
   for (int i = 0; i < 2; ++i) {
     const std::string prefix = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
@@ -328,28 +356,7 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
       fail_key(path, prefix + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
     if (G.root_radius() <= 0.0) fail_key(path, prefix + ".z", "gives no root circle (rf <= 0)");
-    if (g.contains("tip_relief")) {
-      const std::string t = prefix + ".tip_relief";
-      const json& tr = g["tip_relief"];
-      only_keys(tr, path, t, {"amount", "start", "shape"});
-      relief[i].amount = r.number(tr, t, "amount", 0.0, 1e-3, "[0, 1e-3] m");
-      relief[i].shape = r.choice(tr, t, "shape", {"linear", "parabolic"}, 0) == 0 ? ReliefShape::linear
-                                                                                  : ReliefShape::parabolic;
-      if (!tr.contains("start")) fail_key(path, t + ".start", "is missing (one of roll_angle_deg, diameter, length)");
-      const json& st = tr["start"];
-      only_keys(st, path, t + ".start", {"roll_angle_deg", "diameter", "length"});
-      if (st.size() != 1) fail_key(path, t + ".start", "must give exactly one of roll_angle_deg, diameter, length");
-      if (st.contains("roll_angle_deg")) {
-        relief[i].kind = ReliefStart::roll_angle_deg;
-        relief[i].start = r.number(st, t + ".start", "roll_angle_deg", 0.0, 90.0, "[0, 90] deg");
-      } else if (st.contains("diameter")) {
-        relief[i].kind = ReliefStart::diameter;
-        relief[i].start = r.number(st, t + ".start", "diameter", 0.0, 20.0, "[0, 20] m");
-      } else {
-        relief[i].kind = ReliefStart::length;
-        relief[i].start = r.number(st, t + ".start", "length", 0.0, 1.0, "[0, 1] m");
-      }
-    }
+    if (g.contains("tip_relief")) relief[i] = read_tip_relief(g["tip_relief"], r, prefix + ".tip_relief");
   }
   const double rb_sum = f.pair.gear1.base_radius() + f.pair.gear2.base_radius();
   f.pair.centre_distance = r.optional(j, "", "centre_distance", 0.0, 0.0, 100.0, "[0, 100] m");
@@ -362,7 +369,11 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     (i == 0 ? f.pair.relief1 : f.pair.relief2) = t;
   }
 
-  // --- the reading of the beam model ------------------------------------------------
+}
+
+// The tooth model and its readings (model.*): the defaults are the tooth-model chart's choice
+// (figures/tooth_model_chart.py).
+json read_model_keys(GearFile& f, const json& j, const Reader& r, const std::string& path) {
   const json model = j.value("model", json::object());
   only_keys(model, path, "model", {"method", "phases", "positions_per_base_pitch", "tooth_elements", "thickness_at",
                                    "hertz", "pair_hertz", "pair_stiffness", "tooth_force", "fe_mesh", "pe_coupling",
@@ -400,6 +411,11 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   if (f.method == ToothModel::fe && f.pair.tooth_force != ToothForce::over_base_radius)
     fail_key(path, "model.tooth_force", "must be base_radius with method fe (its force acts along the line of action)");
 
+  return model;
+}
+
+// The Harris map's torque range.
+void read_harris(GearFile& f, const json& j, const Reader& r, const std::string& path) {
   const json harris = j.value("harris", json::object());
   only_keys(harris, path, "harris", {"from", "to", "points"});
   const double Tmax = *std::max_element(f.torques.begin(), f.torques.end());
@@ -408,8 +424,10 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   f.harris_points = harris.contains("points") ? json_whole(harris["points"], path, "harris.points", 2, 200) : 19;
   if (!(f.harris_to > f.harris_from)) fail_key(path, "harris.to", "must exceed harris.from");
 
-  read_dynamics(f, j, path);
+}
 
+// The checks of the whole pair, each naming its key: geometry, backlash, the method's own.
+void check_pair(GearFile& f, const json& j, const json& model, const std::string& path) {
   // --- geometry checks (each names its key) ---------------------------------------------
   const PathOfContact p = f.pair.path();
   const GeometryProblem problem = gear_pair_problem(f.pair.gear1, f.pair.gear2, p, f.pair.relief1, f.pair.relief2);
@@ -442,6 +460,27 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
     if (ne < P || ne >= 2 * P)
       fail_key(path, "model.positions_per_base_pitch", "needs P <= tooth elements (" + std::to_string(ne) + ") < 2 P");
   }
+}
+
+}  // namespace
+
+GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
+  json j = read_json_file(path);
+  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
+                          "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
+                          "bifurcation_diagram", "period_doubling"});
+  for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
+  const Reader r{path};
+  GearFile f;
+  f.resolved = j;
+  f.name = json_name(j, path, "name", "gear pair");
+  const PairBasics basics = read_pair_keys(f, j, r, path);
+  read_torques(f, j, path);
+  read_gears(f, j, r, basics, path);
+  const json model = read_model_keys(f, j, r, path);
+  read_harris(f, j, r, path);
+  read_dynamics(f, j, path);
+  check_pair(f, j, model, path);
   f.diagram = read_bifurcation_diagram(j, path);
   if (f.diagram.on && !f.dynamics.present)
     fail_key(path, "bifurcation_diagram", "needs the speed range of the dynamics (speed)");
