@@ -34,6 +34,19 @@ HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
 
 
+def run_examples(program, prefix, build, fig_dir, timings):
+    """Run every example of programs/<program>/examples/ into build/data/<program>/<example>/ (the
+    program draws its own figures there) and copy them to build/figures/<prefix>_<example>_*.png."""
+    for example in sorted((HERE.parent / "programs" / program.name / "examples").glob("*.json")):
+        out = build / "data" / program.name / example.stem
+        print("[figures] %s %s --out %s" % (program, example.name, out), flush=True)
+        t0 = time.time()
+        subprocess.run([str(program), str(example), "--quiet", "--out", str(out)], check=True)
+        timings.append(("%s %s" % (program.name, example.stem), time.time() - t0))
+        for png in sorted(out.glob("*.png")):
+            shutil.copy(png, fig_dir / ("%s_%s_%s" % (prefix, example.stem, png.name)))
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--build", default="build")
@@ -79,14 +92,7 @@ def main():
             print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
     gear = build / "bin" / "gearhb_gear"
     if gear.is_file() and not args.only:
-        for example in sorted((HERE.parent / "programs" / "gearhb_gear" / "examples").glob("*.json")):
-            out = build / "data" / "gearhb_gear" / example.stem
-            print("[figures] %s %s --out %s" % (gear, example.name, out), flush=True)
-            t0 = time.time()
-            subprocess.run([str(gear), str(example), "--quiet", "--out", str(out)], check=True)
-            timings.append(("gearhb_gear " + example.stem, time.time() - t0))
-            for png in sorted(out.glob("*.png")):
-                shutil.copy(png, fig_dir / ("gear_%s_%s" % (example.stem, png.name)))
+        run_examples(gear, "gear", build, fig_dir, timings)
         # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
         import gear_methods
         for png in gear_methods.draw(build / "data" / "gearhb_gear", fig_dir):
@@ -109,14 +115,7 @@ def main():
             print("[figures]   %s" % png, flush=True)
     planetary = build / "bin" / "gearhb_planetary"
     if planetary.is_file() and not args.only:
-        for example in sorted((HERE.parent / "programs" / "gearhb_planetary" / "examples").glob("*.json")):
-            out = build / "data" / "gearhb_planetary" / example.stem
-            print("[figures] %s %s --out %s" % (planetary, example.name, out), flush=True)
-            t0 = time.time()
-            subprocess.run([str(planetary), str(example), "--quiet", "--out", str(out)], check=True)
-            timings.append(("gearhb_planetary " + example.stem, time.time() - t0))
-            for png in sorted(out.glob("*.png")):
-                shutil.copy(png, fig_dir / ("planetary_%s_%s" % (example.stem, png.name)))
+        run_examples(planetary, "planetary", build, fig_dir, timings)
     timings[0] = ("make_figures_total", time.time() - start)
     with open(fig_dir / "timings.csv", "w") as f:
         f.write("step,wall_s\n" + "".join("%s,%.1f\n" % t for t in timings))
