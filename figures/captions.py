@@ -307,3 +307,20 @@ PLANETARY_CAPTIONS = {
                     "the largest K_v of the sun-planet and of the ring-planet meshes, with a rug where a mesh of "
                     "that kind loses contact.",
 }
+
+# The figures of a gearhb_frc run, copied as frc_<example>_<figure>: figure -> caption.
+FRC_CAPTIONS = {
+    "frc.png": "The frequency response of a model file (gearhb_frc): the output's largest and least value over a "
+               "period against the forcing frequency, stable solid, unstable dashed (Floquet), bifurcations "
+               "marked, the contact state as a rug at the bottom. Where the file asks for them: the period-2 "
+               "branches switched at the period doublings (colours of their own, x_min close up on the right), a "
+               "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right), the Poincare "
+               "points of the bifurcation diagram by time integration (below); the frequencies with no stable "
+               "period-1 orbit shaded.",
+    "bifurcation_diagram.png": "The bifurcation diagram by time integration (GSL, exact contact switching): the "
+                               "output at phase 0 of each forcing period after the transient, sweeping up (top) "
+                               "and down (bottom), each point coloured by what the motion is (period n, "
+                               "quasi-periodic, chaotic by its largest Lyapunov exponent), under the harmonic "
+                               "balance's period-1 curve at the same phase. Notice that the two views agree where "
+                               "both apply: the stable HB curve runs through the period-1 points.",
+}

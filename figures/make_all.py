@@ -15,7 +15,9 @@ figures/tooth_model_chart.py the tooth models' error against cost
 figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png),
 figures/helical_ste.py the STE peak-to-peak of a helical pair against its helix angle
 (build/figures/gear_helical_ste.png, build/data/gearhb_gear/helical_ste/helical_ste.csv);
-then every example of programs/gearhb_planetary/examples/ into
+then every example of programs/gearhb_frc/examples/ into build/data/gearhb_frc/<example>/
+(figures copied to build/figures/frc_<example>_*.png), and every example of
+programs/gearhb_planetary/examples/ into
 build/data/gearhb_planetary/<example>/ (figures copied to build/figures/planetary_<example>_*.png);
 build/figures/index.html (figures/report.py)
 links them all. build/figures/timings.csv records each step's wall time of this run (the only
@@ -113,6 +115,9 @@ def main():
         import gear_models
         for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):
             print("[figures]   %s" % png, flush=True)
+    frc = build / "bin" / "gearhb_frc"
+    if frc.is_file() and not args.only:
+        run_examples(frc, "frc", build, fig_dir, timings)
     planetary = build / "bin" / "gearhb_planetary"
     if planetary.is_file() and not args.only:
         run_examples(planetary, "planetary", build, fig_dir, timings)
