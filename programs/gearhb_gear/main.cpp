@@ -223,7 +223,7 @@ void GearPairFromFile::run(Run& run) {
   helix_key_numbers(run);
   tooth_model(run);
   transmission_error(run);
-  if (loaded_->fe_model()) root_stress_and_contact(run);
+  if (loaded_->fe_model() && !file_.helical.sliced()) root_stress_and_contact(run);   // a spur section only
   iso6336(run);
   harris_map(run);
   if (file_.dynamics.present) dynamics(run), iso_dynamic_factor(run);
@@ -323,7 +323,9 @@ void GearPairFromFile::helix_key_numbers(Run& run) const {
 // model with its own shafts and bodies must not count it twice).
 void GearPairFromFile::tooth_model(Run& run) {
   const PairSteModel& m = file_.pair;
-  if (file_.method == ToothModel::fe) {
+  if (file_.method == ToothModel::fe && file_.helical.sliced()) {
+    loaded_ = run.timed("fe_model", [&] { return sliced_fe_loaded_pair(m, file_.helical, file_.phases, file_.fe); });
+  } else if (file_.method == ToothModel::fe) {
     loaded_ = run.timed("fe_model", [&] { return fe_loaded_pair(m, file_.phases, file_.fe); });
   } else {
     PairStiffnessFn k;
