@@ -278,6 +278,20 @@ write("iso_tr_6336_30_ex01", "iso_tr_6336_30_ex01.json", ["--set", "plot=0"], n,
                 "note": "not a key number of this file: it has no speed range and the TR data at hand give no relief start for its C_a = 70 um; the library's K_v formulas alone: Iso6336.DynamicFactorIsoTr6336_30Example01 (1.00319)"
         }
       }})
+# --- the thesis pair made helical, potential energy, over its speed range (issue 35) ------------------
+n = geometry_numbers("helical_pair", GEOM_KEYS + HELIX_KEYS)
+n.update(iso_numbers("helical_pair"))
+n["iso6336_c_gamma_beta"] = entry("iso6336_c_gamma_beta", GEO["helical_pair"]["iso6336_c_gamma_beta"], ISO,
+                                  {"rel": 1e-12}, "the same formula evaluated twice; round-off only")
+n.update(pe_numbers("helical_pair", [1, 2, 3]))
+for k in [k for k in n if k.startswith(("ste_", "mesh_stiffness_", "single_pair_"))]:
+    n[k]["source"] = PE_SOURCE + "; sliced as its docstring says (issue 35: 20 slices, stagger eps_beta y / b)"
+n.update(dynamics_numbers([1, 2, 3]))
+# No iso_kv_numbers: gear_pair_closed_forms.py writes ISO 6336-1's K_v for spur pairs only (z, eps_alpha,
+# c_gamma_alpha); the helical K_v of the library is checked against ISO/TR 6336-30 Ex. 01's published 1.003
+# (tests/unit/test_pair_helical.cpp, PairHelical.IsoTr6336_30Example01DynamicFactor).
+write("helical_pair", "helical_pair.json", ["--set", "plot=0"], n)
+
 # --- the ROSS test gear (petrobras/ross), beam model, consistent reading ------------------
 n = geometry_numbers("ross_pair", GEOM_KEYS)
 n["contact_ratio"]["published_value"] = 1.7897798668
