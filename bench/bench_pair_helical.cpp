@@ -63,3 +63,48 @@ static void BM_helical_pair_ex01_20_slices_3_torques_64_phases_linear(benchmark:
   run(state, HertzCount::none);
 }
 BENCHMARK(BM_helical_pair_ex01_20_slices_3_torques_64_phases_linear)->Unit(benchmark::kMillisecond);
+
+// Method fe by slices (issue 35 a): programs/gearhb_gear/examples/helical_pair_fe.json (the thesis
+// pair made helical, m_n 3 mm, beta 20 deg, b 20 mm, bores 25 mm), 20 slices x 64 phases.
+// build: meshing, assembly, factor and the influence coefficients of every slice contact (one
+// FE solve per distinct point per gear); ste: the 3 torques' block contact problems alone.
+namespace {
+
+PairSteModel helical_thesis_pair(HelicalPair& h, FePairOptions& o) {
+  const double beta = 20.0 * M_PI / 180.0;
+  GearGeometry g;   // the thesis gear: z 50, m 3 mm, 20 deg, b 20 mm
+  h.helix_angle = beta;
+  h.normal_module = g.module;
+  h.slices = 20;
+  PairSteModel m;
+  m.gear1 = m.gear2 = transverse_section(g, beta);
+  m.youngs_modulus1 = m.youngs_modulus2 = 207e9;
+  m.hertz = HertzCount::none;
+  m.tooth_force = ToothForce::over_base_radius;
+  o.gear1.rim_radius = o.gear2.rim_radius = 0.025;
+  return m;
+}
+
+}  // namespace
+
+static void BM_helical_pair_fe_20_slices_64_phases_build(benchmark::State& state) {
+  HelicalPair h;
+  FePairOptions o;
+  const PairSteModel m = helical_thesis_pair(h, o);
+  for (auto _ : state) benchmark::DoNotOptimize(sliced_fe_loaded_pair(m, h, 64, o));
+}
+BENCHMARK(BM_helical_pair_fe_20_slices_64_phases_build)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+static void BM_helical_pair_fe_20_slices_3_torques_64_phases_ste(benchmark::State& state) {
+  HelicalPair h;
+  FePairOptions o;
+  const PairSteModel m = helical_thesis_pair(h, o);
+  const auto pair = sliced_fe_loaded_pair(m, h, 64, o);
+  for (auto _ : state) {
+    double sum = 0.0;
+    for (double T : {100.0, 200.0, 300.0})
+      for (const PairStePoint& p : pair->ste(T)) sum += p.ste;
+    benchmark::DoNotOptimize(sum);
+  }
+}
+BENCHMARK(BM_helical_pair_fe_20_slices_3_torques_64_phases_ste)->Unit(benchmark::kMillisecond);

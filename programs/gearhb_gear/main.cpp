@@ -204,6 +204,7 @@ class GearPairFromFile {
   void any_motion_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
                               const BifurcationDiagram* d) const;
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
+  void axial_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   BifurcationDiagram bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
                                          Table& t, Table& hb_section) const;
@@ -223,7 +224,7 @@ void GearPairFromFile::run(Run& run) {
   helix_key_numbers(run);
   tooth_model(run);
   transmission_error(run);
-  if (loaded_->fe_model()) root_stress_and_contact(run);
+  if (loaded_->fe_model() && !file_.helical.sliced()) root_stress_and_contact(run);   // a spur section only
   iso6336(run);
   harris_map(run);
   if (file_.dynamics.present) dynamics(run), iso_dynamic_factor(run);
@@ -323,7 +324,9 @@ void GearPairFromFile::helix_key_numbers(Run& run) const {
 // model with its own shafts and bodies must not count it twice).
 void GearPairFromFile::tooth_model(Run& run) {
   const PairSteModel& m = file_.pair;
-  if (file_.method == ToothModel::fe) {
+  if (file_.method == ToothModel::fe && file_.helical.sliced()) {
+    loaded_ = run.timed("fe_model", [&] { return sliced_fe_loaded_pair(m, file_.helical, file_.phases, file_.fe); });
+  } else if (file_.method == ToothModel::fe) {
     loaded_ = run.timed("fe_model", [&] { return fe_loaded_pair(m, file_.phases, file_.fe); });
   } else {
     PairStiffnessFn k;
@@ -523,6 +526,7 @@ void GearPairFromFile::dynamics(Run& run) const {
     const Response r = response(run, i, mesh, hb);
     response_tables(run, i, hb, r);
     response_key_numbers(run, i, r);
+    axial_key_numbers(run, i, hb, r);
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
     BifurcationDiagram bd;
@@ -553,7 +557,7 @@ BifurcationDiagram GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i
   auto lead = [&](double w) {
     return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
-  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
+  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
   add_bifurcation_rows(t, d, q, 1e6, lead);
   add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
@@ -615,7 +619,7 @@ void GearPairFromFile::iso_dynamic_factor(Run& run) const {
 void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                                             Table& history, double& history_kv) const {
   const auto& P = r.curve.branch.points;
-  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs);
+  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
   const double wn = 2.0 * M_PI * r.f_natural;
   for (double omega : {0.5 * wn, r.summary.dte_rms_peak_omega, 1.5 * wn}) {
     std::size_t best = P.size();
@@ -653,6 +657,8 @@ BearingSupport GearPairFromFile::bearings() const {
   for (int i = 0; i < 2; ++i) b.mass[i] = file_.gear[i].mass, b.stiffness[i] = file_.gear[i].bearing_stiffness;
   b.zeta = file_.dynamics.bearing_zeta;
   b.pressure_angle = file_.pair.path().mesh.pressure_angle;
+  if (!file_.helical.double_helical) b.helix_tan = std::tan(file_.helical.base_helix_angle());   // 0 for spur
+  for (int i = 0; i < 2; ++i) b.axial_stiffness[i] = file_.gear[i].axial_bearing_stiffness;
   return b;
 }
 
@@ -683,7 +689,7 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   o.direction = d.direction;
   o.continuation.ds_max = 0.05;
   r.curve = timed_sweep(run, hb, o, torque_label(i));
-  r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs));
+  r.summary = mesh_curve_summary(hb, r.curve, r.mesh.F0, dte_coordinate(d.dofs, bearings()));
   if (file_.period_doubling_depth >= 1) doubled_branches(run, i, hb, o, r);
   return r;
 }
@@ -705,7 +711,7 @@ void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicB
     const PeriodDoubledBranch& b = r.doubled[k];
     run.say(torque_label(i) + ": " + b.why);
     r.doubled_summary.push_back(has_points(b) ? mesh_curve_summary(*b.model, b.curve, r.mesh.F0,
-                                                                   dte_coordinate(file_.dynamics.dofs))
+                                                                   dte_coordinate(file_.dynamics.dofs, bearings()))
                                               : MeshCurveSummary{});
     if (!has_points(b)) continue;
     // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods)
@@ -732,7 +738,7 @@ Table GearPairFromFile::mesh_table(const HarmonicBalance& hb, const FrequencyCur
                                    const BranchLabel& label, const RowProgress& progress) const {
   const auto& m = s.points;
   return frequency_response_table(
-      hb, c, dte_coordinate(file_.dynamics.dofs),
+      hb, c, dte_coordinate(file_.dynamics.dofs, bearings()),
       {"dte_ptp_um", "mesh_force_max_N", "mesh_force_min_N", "dynamic_factor", "contact_drive", "contact_back"},
       [&](std::size_t k) -> std::vector<Table::Cell> {
         return {m[k].dte_ptp * 1e6, m[k].force_max, m[k].force_min, m[k].dynamic_factor,
@@ -789,6 +795,17 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   run.say(line);
 }
 
+// Six DOFs with a helix (mesh_dynamics.hpp, BearingSupport: one axial DOF per gear): the mean
+// axial bearing force of each gear at the curve's first point, axial_bearing_force_N_<gear>_<i>
+// (its static closed form F0 tan(beta_b) = F_t tan(beta) is axial_force_N_<i>).
+void GearPairFromFile::axial_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const {
+  const BearingSupport b = bearings();
+  if (file_.dynamics.dofs != MeshDofs::bearings || !b.axial() || r.curve.branch.points.empty()) return;
+  for (int g = 0; g < 2; ++g)
+    run.key_numbers().add("axial_bearing_force_N_" + std::to_string(g + 1) + "_" + std::to_string(i + 1),
+                          mean_axial_bearing_force(hb, b, r.curve.branch.points.front().X, g), "N");
+}
+
 // Issue 34 §4, torque i: the speed ranges with no stable period-1 orbit (the gaps of the period-1
 // curve's stable intervals; unstable_period1_ranges_<i>, each unstable_period1_from_rpm_<i>_<k>,
 // unstable_period1_to_rpm_<i>_<k>), and the largest K_v and DTE RMS of the motion that exists
@@ -830,7 +847,7 @@ void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const Har
       const bool in_gap = std::any_of(gaps.begin(), gaps.end(), [&](auto& g) { return g.first <= p.omega && p.omega <= g.second; });
       if (!in_gap || p.motion == Motion::failed || (p.motion == Motion::periodic && p.n == 1) || p.x.rows() == 0) continue;
       const MeshMotionMeasures m = mesh_motion_measures(hb, p.x.row(0).transpose(), p.v.row(0).transpose(), p.omega, 16,
-                                                        512, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
+                                                        512, r.mesh.F0, dte_coordinate(file_.dynamics.dofs, bearings()),
                                                         r.curve.scaling.x.cwiseAbs().maxCoeff());
       kv_ti = std::max(kv_ti, m.dynamic_factor);
       rms = std::max(rms, m.dte_rms);
@@ -856,7 +873,7 @@ void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const Har
     run.progress(what, long(k), P[k].omega, P[k].ds);
   };
   const auto rows = run.timed("time integration T" + n, [&] {
-    return mesh_time_integration_check(hb, r.curve, r.summary, r.mesh.F0, dte_coordinate(file_.dynamics.dofs),
+    return mesh_time_integration_check(hb, r.curve, r.summary, r.mesh.F0, dte_coordinate(file_.dynamics.dofs, bearings()),
                                        file_.dynamics.time_check_points, progress);
   });
   Table t(check_columns(FrequencyAxis::gear, {"x_rms_ac", "dynamic_factor"}));

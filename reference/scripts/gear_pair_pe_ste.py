@@ -22,6 +22,18 @@ gearhb or shares code with it:
     linear and inside k); tooth force T1 / r1 or T1 / rb1.
 Keys: ste_max_um_i, ste_ptp_um_i, mesh_stiffness_mean_N_per_m_i, loaded_contact_ratio_i,
 single_pair_deflection_um_i (one pair alone at the pitch point C, no relief).
+A helical file (helix_angle_deg beta > 0; issue 35) is sliced, written here from ISO 21771 and the
+thin-slice model's statement (programs/gearhb_gear/NOTES.md "Helical pairs"), not from the library:
+  * the transverse section: m_t = m_n / cos(beta), alpha_t = atan(tan(alpha_n) / cos(beta)), the rack's
+    addendum, dedendum and root radius and the shift the normal ones as lengths (coefficients on m_t
+    times cos(beta)): a spur PeTooth of that section;
+  * eps_beta = b sin(beta) / (pi m_n); N slices (model.slices, default 20), slice j read at phase
+    phi + (j + 1/2) eps_beta / N; its contact line with each tooth pair spans ds = eps_beta pb / N along
+    the path, centred at (psi + q) pb; the part of it on [0, AE] (fraction w) is the contact, read at
+    that part's centre, of stiffness w k / N (k the full-width section's PE pair stiffness, linear
+    Hertz inside it); the load shared exactly over all slices x pairs by the same linear active set;
+  * single pair: the tooth pair whose mid-face contact is at C, each slice's part of it on the path,
+    stagger centred on the face.
 """
 import json
 import math
@@ -114,7 +126,31 @@ def share(pairs, F):
             return X, m
 
 
+def transverse(f):
+    """The transverse section of a helical file as a spur file (ISO 21771; the file itself at beta = 0)."""
+    beta = math.radians(f.get("helix_angle_deg", 0.0))
+    if beta == 0:
+        return f
+    c = math.cos(beta)
+    rack = f.get("basic_rack", {})
+    t = dict(f)
+    t["module"] = f["module"] / c
+    t["pressure_angle_deg"] = math.degrees(math.atan(math.tan(math.radians(f["pressure_angle_deg"])) / c))
+    t["basic_rack"] = {"addendum": rack.get("addendum", 1.0) * c, "dedendum": rack.get("dedendum", 1.25) * c,
+                       "root_radius": rack.get("root_radius", 0.38) * c}
+    t["gears"] = [dict(g, x=g.get("x", 0.0) * c) for g in f["gears"]]
+    return t
+
+
+def on_path(c, ds, AE):
+    """The part of a contact line centred at c, spread over ds, on [0, AE]: (centre, fraction)."""
+    lo, hi = max(0.0, c - ds / 2), min(AE, c + ds / 2)
+    return ((lo + hi) / 2, min(1.0, (hi - lo) / ds)) if hi - lo > 1e-9 * ds else (None, 0.0)
+
+
 def evaluate(f, n_phases=None):
+    normal_module, beta = f["module"], math.radians(f.get("helix_angle_deg", 0.0))
+    f = transverse(f)
     g = f["gears"]
     t1, t2 = PeTooth(f, g[0]), PeTooth(f, g[1])
     model = f.get("model", {})
@@ -140,18 +176,41 @@ def evaluate(f, n_phases=None):
     rel1, rel2 = g[0].get("tip_relief"), g[1].get("tip_relief")
     phases = []
     n = n_phases or model.get("phases", 64)
+    N = model.get("slices", 20) if beta > 0 else 1
+    eps_beta = b * math.sin(beta) / (math.pi * normal_module)
+    ds = eps_beta * pb / N
     for j in range(n):
-        pts, s = [], j / n * pb
-        while s <= AE:
-            T1P = T1A + s
-            pts.append((k_pair(T1P), relief(rel1, t1, T1P) + relief(rel2, t2, T1T2 - T1P)))
-            s += pb
+        pts = []
+        if N == 1 and ds == 0:
+            s = j / n * pb
+            while s <= AE:
+                T1P = T1A + s
+                pts.append((k_pair(T1P), relief(rel1, t1, T1P) + relief(rel2, t2, T1T2 - T1P)))
+                s += pb
+        else:
+            for sl in range(N):
+                psi = (j / n + (sl + 0.5) / N * eps_beta) % 1.0
+                for q in range(-2, int(AE / pb) + 3):
+                    c, w = on_path((psi + q) * pb, ds, AE)
+                    if w > 0:
+                        T1P = T1A + c
+                        pts.append((w * k_pair(T1P) / N, relief(rel1, t1, T1P) + relief(rel2, t2, T1T2 - T1P), w))
         phases.append(pts)
-    k_C = k_pair(t1.rb * math.tan(aw))
+    T1C = t1.rb * math.tan(aw)
+    if ds == 0:
+        k_C = k_pair(T1C)
+    else:   # the pair whose mid-face contact is at C: its slices' parts on the path, in parallel
+        k_C = 0.0
+        for sl in range(N):
+            c, w = on_path(T1C - T1A + ((sl + 0.5) / N - 0.5) * eps_beta * pb, ds, AE)
+            if w > 0:
+                k_C += w * k_pair(T1A + c) / N
     out = {}
     for i, T in enumerate(f["torques"]):
         F = T / (t1.r0 if model.get("tooth_force", "pitch_radius") == "pitch_radius" else t1.rb)
         ste, loaded = zip(*(share(p, F) for p in phases))
+        if ds > 0:   # the loaded contact ratio: contacts counted by their fraction, per slice
+            loaded = [sum(q[2] for q in sorted(p, key=lambda q: q[1])[:m]) / N for p, m in zip(phases, loaded)]
         key = str(i + 1)
         out["ste_max_um_" + key] = max(ste) * 1e6
         out["ste_ptp_um_" + key] = (max(ste) - min(ste)) * 1e6

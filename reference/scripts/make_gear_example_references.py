@@ -278,6 +278,40 @@ write("iso_tr_6336_30_ex01", "iso_tr_6336_30_ex01.json", ["--set", "plot=0"], n,
                 "note": "not a key number of this file: it has no speed range and the TR data at hand give no relief start for its C_a = 70 um; the library's K_v formulas alone: Iso6336.DynamicFactorIsoTr6336_30Example01 (1.00319)"
         }
       }})
+# --- the thesis pair made helical, potential energy, over its speed range (issue 35) ------------------
+n = geometry_numbers("helical_pair", GEOM_KEYS + HELIX_KEYS)
+n.update(iso_numbers("helical_pair"))
+n["iso6336_c_gamma_beta"] = entry("iso6336_c_gamma_beta", GEO["helical_pair"]["iso6336_c_gamma_beta"], ISO,
+                                  {"rel": 1e-12}, "the same formula evaluated twice; round-off only")
+n.update(pe_numbers("helical_pair", [1, 2, 3]))
+for k in [k for k in n if k.startswith(("ste_", "mesh_stiffness_", "single_pair_"))]:
+    n[k]["source"] = PE_SOURCE + "; sliced as its docstring says (issue 35: 20 slices, stagger eps_beta y / b)"
+n.update(dynamics_numbers([1, 2, 3]))
+# No iso_kv_numbers: gear_pair_closed_forms.py writes ISO 6336-1's K_v for spur pairs only (z, eps_alpha,
+# c_gamma_alpha); the helical K_v of the library is checked against ISO/TR 6336-30 Ex. 01's published 1.003
+# (tests/unit/test_pair_helical.cpp, PairHelical.IsoTr6336_30Example01DynamicFactor).
+write("helical_pair", "helical_pair.json", ["--set", "plot=0"], n)
+
+# --- the same helical pair on bearings with an axial DOF per gear (issue 35 c) -------------------------
+name = "helical_pair_six_dof"
+f = json.load(open(HERE.parents[1] / "programs" / "gearhb_gear" / "examples" / (name + ".json")))
+n = geometry_numbers(name, GEOM_KEYS + HELIX_KEYS)
+n.update(ste_numbers(name, [1, 2, 3]))
+for k in [k for k in n if k.startswith(("ste_", "mesh_stiffness_", "single_pair_"))]:
+    n[k]["source"] = BEAM + "; sliced as its docstring says (issue 35: 20 slices, stagger eps_beta y / b)"
+n.update(dynamics_numbers([1, 2, 3]))
+beta = math.radians(f["helix_angle_deg"])
+d1 = f["module"] / math.cos(beta) * f["gears"][0]["z"]   # reference diameter of gear 1 (ISO 21771)
+for i, T in enumerate(f["torques"]):
+    Fa = 2 * T / d1 * math.tan(beta)
+    for g, sign in ((1, 1.0), (2, -1.0)):
+        k = "axial_bearing_force_N_%d_%d" % (g, i + 1)
+        n[k] = entry(k, sign * Fa, "closed form: the static axial bearing force F_t tan(beta), F_t = 2 T1 / d1 at the "
+                     "reference circle, d1 = m_n z1 / cos(beta) (gear 2 the opposite sense)", {"rel": 1e-9},
+                     "the mean of the HB orbit's axial coordinate times ka at the curve's first point: exact up to the "
+                     "mean mesh force's balance (mean_force_rel_dev, 1e-9) and round-off", unit="N")
+write(name, name + ".json", ["--set", "plot=0"], n)
+
 # --- the ROSS test gear (petrobras/ross), beam model, consistent reading ------------------
 n = geometry_numbers("ross_pair", GEOM_KEYS)
 n["contact_ratio"]["published_value"] = 1.7897798668

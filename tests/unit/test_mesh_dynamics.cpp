@@ -1,5 +1,6 @@
 // The gear pair over its speed range (gears/dynamics/mesh_dynamics.hpp, gears/dynamics/dte_model.hpp with two
 // flanks, the gap-amplitude start of hb/first_point.hpp). Each check names its independent truth.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -18,6 +19,24 @@ namespace {
 DteGear thesis_mesh(double torque, double backlash, PairSteModel m = PairSteModel{}) {
   const std::vector<MeshPhase> ph = mesh_phases(m, 64);
   return gear_pair_mesh(m, pair_ste(m, ph, torque), torque, 0.0158, 0.0158, 0.08, backlash);
+}
+
+// The thesis gears on bearings of stiffness k (masses 2.8 kg, line of action at 20 deg).
+BearingSupport thesis_bearings(double k) {
+  BearingSupport b;
+  b.mass[0] = b.mass[1] = 2.8;
+  b.stiffness[0] = b.stiffness[1] = k;
+  b.pressure_angle = 20.0 * M_PI / 180.0;
+  return b;
+}
+
+// The coefficients of coordinate q of the periodic orbit at f [Hz], swept from 300 Hz.
+Eigen::VectorXd orbit_at(const HarmonicBalance& hb, double f, const Eigen::VectorXd& q, const char* label) {
+  SweepOptions o;
+  o.omega_min = 2.0 * M_PI * 300.0, o.omega_max = 2.0 * M_PI * f;
+  const FrequencyCurve c = sweep_frequency(hb, o, label);
+  EXPECT_TRUE(c.complete) << label << " " << f;
+  return hb.project(c.branch.points.back().X, q);
 }
 
 }  // namespace
@@ -45,24 +64,46 @@ TEST(MeshDynamics, BackFlankPhaseOfIdenticalGears) {
 // and at a drive-flank-loss frequency of the thesis pair at 300 N m.
 TEST(MeshDynamics, StiffBearingsGiveTheOneDofModel) {
   const DteGear g = thesis_mesh(300.0, 15e-6);
-  BearingSupport b;
-  b.mass[0] = b.mass[1] = 2.8;
-  b.stiffness[0] = b.stiffness[1] = 1e15;
-  b.pressure_angle = 20.0 * M_PI / 180.0;
+  const BearingSupport b = thesis_bearings(1e15);
   const int H = 5;
   const HarmonicBalance one = gear_mesh_model(g, MeshDofs::one_dof, b, H, 0, DteModel::constant);
   const HarmonicBalance six = gear_mesh_model(g, MeshDofs::bearings, b, H, 0, DteModel::constant);
   for (double f : {1000.0, 1400.0}) {
-    const double w = 2.0 * M_PI * f;
-    SweepOptions o;
-    o.omega_min = 2.0 * M_PI * 300.0, o.omega_max = w;
-    const FrequencyCurve c1 = sweep_frequency(one, o, "one");
-    const FrequencyCurve c6 = sweep_frequency(six, o, "six");
-    ASSERT_TRUE(c1.complete && c6.complete);
-    const Eigen::VectorXd x = one.project(c1.branch.points.back().X, dte_coordinate(MeshDofs::one_dof));
-    const Eigen::VectorXd p = six.project(c6.branch.points.back().X, dte_coordinate(MeshDofs::bearings));
+    const Eigen::VectorXd x = orbit_at(one, f, dte_coordinate(MeshDofs::one_dof), "one");
+    const Eigen::VectorXd p = orbit_at(six, f, dte_coordinate(MeshDofs::bearings), "six");
     EXPECT_LT((x - p).lpNorm<Eigen::Infinity>(), 1e-5 * x.tail(x.size() - 1).lpNorm<Eigen::Infinity>()) << f;
   }
+}
+
+// The axial DOFs of a single-helical pair (header, issue 35 c) with very stiff axial bearings
+// are the six-DOF model: p equals to O(kc t^2 / ka) at a full-contact and at a drive-loss
+// frequency; the closed-contact frequencies are the five of the six-DOF model and two near
+// sqrt(ka / m) / 2 pi (the axial bearings, their coupling through the mesh O(kc / ka)). The static
+// axial bearing force F_t tan(beta) with realistic axial bearings: gear.helical_pair_six_dof.axial_*.
+TEST(MeshDynamics, StiffAxialBearingsGiveTheSixDofModel) {
+  const DteGear g = thesis_mesh(300.0, 15e-6);
+  const BearingSupport b = thesis_bearings(1e8);
+  const int H = 5;
+  const HarmonicBalance six = gear_mesh_model(g, MeshDofs::bearings, b, H, 0, DteModel::constant);
+  BearingSupport a = b;
+  a.helix_tan = std::tan(18.75 * M_PI / 180.0);
+  a.axial_stiffness[0] = a.axial_stiffness[1] = 1e15;
+  const HarmonicBalance axial = gear_mesh_model(g, MeshDofs::bearings, a, H, 0, DteModel::constant);
+  ASSERT_EQ(axial.dofs(), 7);
+  for (double f : {1000.0, 1400.0}) {
+    const Eigen::VectorXd p6 = orbit_at(six, f, dte_coordinate(MeshDofs::bearings, b), "six");
+    const Eigen::VectorXd p8 = orbit_at(axial, f, dte_coordinate(MeshDofs::bearings, a), "axial");
+    EXPECT_LT((p6 - p8).lpNorm<Eigen::Infinity>(), 1e-5 * p6.tail(p6.size() - 1).lpNorm<Eigen::Infinity>()) << f;
+  }
+  std::vector<double> f6 = closed_contact_frequencies(g, MeshDofs::bearings, b);
+  std::vector<double> f8 = closed_contact_frequencies(g, MeshDofs::bearings, a);
+  ASSERT_EQ(f6.size(), 5u);
+  ASSERT_EQ(f8.size(), 7u);
+  std::sort(f6.begin(), f6.end());
+  std::sort(f8.begin(), f8.end());
+  for (int k = 0; k < 5; ++k) EXPECT_NEAR(f8[std::size_t(k)], f6[std::size_t(k)], 1e-4 * f6[std::size_t(k)]) << k;
+  const double fa = std::sqrt(1e15 / 2.8) / (2.0 * M_PI);
+  for (int k = 5; k < 7; ++k) EXPECT_NEAR(f8[std::size_t(k)], fa, 1e-3 * fa) << k;
 }
 
 // The light-load relieved pair (gearhb_gear's thesis_pair_light_load.json at 20 N m, zeta 0.03,

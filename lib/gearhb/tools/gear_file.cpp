@@ -178,6 +178,10 @@ void read_dynamics(GearFile& f, const json& j, const std::string& path) {
       fail_key(path, prefix + ".mass", "is needed by dynamics.model six_dof and is missing or 0");
     if (d.dofs == MeshDofs::bearings && !(f.gear[i].bearing_stiffness > 0.0))
       fail_key(path, prefix + ".bearing_stiffness", "is needed by dynamics.model six_dof and is missing or 0");
+    const bool axial = d.dofs == MeshDofs::bearings && f.helical.helix_angle > 0.0 && !f.helical.double_helical;
+    if (axial && !(f.gear[i].axial_bearing_stiffness > 0.0))
+      fail_key(path, prefix + ".axial_bearing_stiffness",
+               "is needed by dynamics.model six_dof with a helix angle (the axial DOFs) and is missing or 0");
   }
 }
 
@@ -227,16 +231,17 @@ void check_helical(GearFile& f, const json& model, const std::string& path) {
   if (!(eps_beta <= 20.0))
     fail_key(path, "helix_angle_deg", "gives an overlap ratio eps_beta = b sin(beta) / (pi m_n) = " + std::to_string(eps_beta) +
                                           " above 20 (the slices would not resolve the face)");
-  if (f.method == ToothModel::fe)
-    fail_key(path, "model.method", "fe takes no helix angle or lead modification (the FE section is plane): beam or potential_energy");
+  // method fe: every slice contact of every phase is an FE solve per gear (pair_helical.hpp);
+  // 20 x 64 of the thesis pair about 30 s CPU.
+  if (f.method == ToothModel::fe && h.slices * f.phases > 40 * 64)
+    fail_key(path, "model.slices", "times model.phases (" + std::to_string(h.slices) + " x " + std::to_string(f.phases) +
+                                       ") exceeds 40 x 64 with method fe (an FE solve per slice contact): fewer slices or phases");
   if (f.pair.positions_per_base_pitch > 0)
     fail_key(path, "model.positions_per_base_pitch", "(ch. 7's node reading) takes no helix angle or lead modification");
   if (f.pe_coupling) fail_key(path, "model.pe_coupling", "takes no helix angle or lead modification");
   if (h.double_helical && h.slices % 2 != 0) fail_key(path, "model.slices", "must be even for double_helical (half of them a half)");
   if (h.slices > 1 && f.pair.hertz != HertzCount::none && f.pair.pair_hertz != TwoPairHertz::consistent)
     fail_key(path, "model.pair_hertz", "must be consistent over the slices of a helical face (or model.hertz none)");
-  if (h.helix_angle > 0.0 && f.dynamics.present && f.dynamics.dofs == MeshDofs::bearings)
-    fail_key(path, "dynamics.model", "six_dof takes no helix angle (no axial DOFs): one_dof");
   }
 
 // The pair's basic numbers the gears are built from.
@@ -331,7 +336,7 @@ void read_gears(GearFile& f, const json& j, const Reader& r, const PairBasics& p
     const std::string prefix = "gears." + std::to_string(i);
     const json& g = j["gears"][i];
     only_keys(g, path, prefix, {"z", "x", "b", "E", "nu", "inertia", "rim_radius", "thickness_allowance", "tip_relief", "mass",
-                           "bearing_stiffness", "lead"});
+                           "bearing_stiffness", "axial_bearing_stiffness", "lead"});
     GearGeometry& G = *geo[i];
     G.module = m;
     G.pressure_angle_deg = alpha;
@@ -352,6 +357,8 @@ void read_gears(GearFile& f, const json& j, const Reader& r, const PairBasics& p
     f.gear[i].rim_radius = r.optional(g, prefix, "rim_radius", 0.0, 0.0, 10.0, "[0, 10] m");
     f.gear[i].mass = r.optional(g, prefix, "mass", 0.0, 0.0, 1e6, "[0, 1e6] kg (0: not given)");
     f.gear[i].bearing_stiffness = r.optional(g, prefix, "bearing_stiffness", 0.0, 0.0, 1e13, "[0, 1e13] N/m (0: not given)");
+    f.gear[i].axial_bearing_stiffness =
+        r.optional(g, prefix, "axial_bearing_stiffness", 0.0, 0.0, 1e13, "[0, 1e13] N/m (0: not given)");
     f.gear[i].thickness_allowance = r.optional(g, prefix, "thickness_allowance", 0.0, -0.5 * m, 0.0, "[-m/2, 0] m");
     if (f.gear[i].rim_radius > 0.0 && !(f.gear[i].rim_radius < G.root_radius()))
       fail_key(path, prefix + ".rim_radius", "must be below the root circle (rf = " + mm(G.root_radius()) + ")");
@@ -547,7 +554,9 @@ std::string gear_file_help() {
          "  model.phases                 phases per mesh cycle (default 64, 16..4096)\n"
          "  model.slices                 slices of the face of a helical or lead-modified pair (default 20, 1..200,\n"
          "                               slices x model.phases <= 200 x 64, x (torques + 2 harris.points) <= 1.6e6;\n"
-         "                               beam or potential_energy, model.pair_hertz consistent or model.hertz none)\n"
+         "                               beam or potential_energy: model.pair_hertz consistent or model.hertz none;\n"
+         "                               fe: the plane FE section per unit width read at every slice contact,\n"
+         "                               slices x model.phases <= 40 x 64)\n"
          "  model.positions_per_base_pitch  0 (default): load moving continuously; P: ch. 7's node reading\n"
          "                               (identical gears, no relief)\n"
          "  model.tooth_elements         beam elements per tooth (0 = floor(8 eps_alpha): 14 for the thesis)\n"
@@ -583,6 +592,8 @@ std::string gear_file_help() {
          period_doubling_help() +
          "                        (per torque, frc_<i>.csv and bifurcations_<i>.csv; needs speed)\n"
          "  gears[i].mass, gears[i].bearing_stiffness  [kg], [N/m]: the six_dof model\n"
+         "  gears[i].axial_bearing_stiffness  [N/m]: six_dof with a helix angle (single helical): one axial\n"
+         "                               translation per gear on it, the mesh force's axial part N tan(beta_b)\n"
          "Checks (exit 2, one line naming the key): tip thickness s(ra) >= 0.2 m, tip clearance, involute\n"
          "interference, contact ratio >= 1, relief start inside the path of contact and above the base circle.\n"
          "--set PATH=VALUE overrides a number at a dotted path: torques.2=250, gears.0.x=0.3,\n"

@@ -64,6 +64,7 @@ struct GearFileGear {
   double thickness_allowance = 0.0;   // A_sn [m] <= 0 on the reference circle
   double mass = 0.0;               // [kg] (six_dof dynamics)
   double bearing_stiffness = 0.0;  // isotropic bearing stiffness [N/m] (six_dof dynamics)
+  double axial_bearing_stiffness = 0.0;   // axial bearing stiffness [N/m] (six_dof, single helical)
 };
 
 // The dynamics over the speed range (`speed`, `dynamics`; README of gearhb_gear).

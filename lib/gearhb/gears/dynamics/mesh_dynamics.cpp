@@ -111,16 +111,20 @@ const char* to_string(MeshContact c) {
 
 namespace {
 
-// The mesh-deflection direction over q = [x1, y1, x2, y2, p] (header).
+// The mesh-deflection direction over q = [x1, y1, x2, y2, p], or [x1, y1, x2, y2, z1, z2, p] (header).
 Eigen::VectorXd bearing_normal(const BearingSupport& b) {
   const double ca = std::cos(b.pressure_angle), sa = std::sin(b.pressure_angle);
-  Eigen::VectorXd n(5);
-  n << ca, -sa, -ca, sa, 1.0;
+  Eigen::VectorXd n(b.dofs());
+  if (b.axial())
+    n << ca, -sa, -ca, sa, b.helix_tan, -b.helix_tan, 1.0;
+  else
+    n << ca, -sa, -ca, sa, 1.0;
   return n;
 }
 
 LinearSystem bearing_system(const DteGear& g, const BearingSupport& b) {
-  Eigen::VectorXd m(5), k(5), c(5);
+  const int n = b.dofs();
+  Eigen::VectorXd m(n), k(n), c(n);
   for (int i = 0; i < 2; ++i) {
     if (!(b.mass[i] > 0.0 && b.stiffness[i] > 0.0))
       throw std::invalid_argument("bearing model: gear " + std::to_string(i + 1) + " needs a mass and a bearing stiffness > 0");
@@ -128,8 +132,13 @@ LinearSystem bearing_system(const DteGear& g, const BearingSupport& b) {
     m.segment(2 * i, 2).setConstant(b.mass[i]);
     k.segment(2 * i, 2).setConstant(b.stiffness[i]);
     c.segment(2 * i, 2).setConstant(ci);
+    if (!b.axial()) continue;
+    if (!(b.axial_stiffness[i] > 0.0))
+      throw std::invalid_argument("bearing model: gear " + std::to_string(i + 1) + " needs an axial bearing stiffness > 0");
+    m[4 + i] = b.mass[i], k[4 + i] = b.axial_stiffness[i];
+    c[4 + i] = 2.0 * b.zeta * std::sqrt(b.axial_stiffness[i] * b.mass[i]);
   }
-  m[4] = g.me, k[4] = 0.0, c[4] = g.c;
+  m[n - 1] = g.me, k[n - 1] = 0.0, c[n - 1] = g.c;
   return LinearSystem{m.asDiagonal(), c.asDiagonal(), k.asDiagonal()};
 }
 
@@ -163,16 +172,22 @@ bool near(const std::vector<double>& at, double omega, double margin) {
 HarmonicBalance gear_mesh_model(const DteGear& g, MeshDofs dofs, const BearingSupport& b, int H, int N,
                                 DteModel model) {
   if (dofs == MeshDofs::one_dof) return dte_harmonic_balance(g, H, N, ContactQuadrature::exact, model);
-  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(5);
-  f0[4] = g.F0;
-  const Excitation f{f0, Eigen::VectorXd::Zero(5), Eigen::VectorXd::Zero(5)};
+  const int n = b.dofs();
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(n);
+  f0[n - 1] = g.F0;
+  const Excitation f{f0, Eigen::VectorXd::Zero(n), Eigen::VectorXd::Zero(n)};
   return HarmonicBalance(bearing_system(g, b), dte_mesh_contacts(g, H, model, bearing_normal(b)), f, H, N,
                          ContactQuadrature::exact);
 }
 
-Eigen::VectorXd dte_coordinate(MeshDofs dofs) {
+Eigen::VectorXd dte_coordinate(MeshDofs dofs, const BearingSupport& b) {
   if (dofs == MeshDofs::one_dof) return Eigen::VectorXd::Constant(1, 1.0);
-  return Eigen::VectorXd::Unit(5, 4);
+  return Eigen::VectorXd::Unit(b.dofs(), b.dofs() - 1);
+}
+
+double mean_axial_bearing_force(const HarmonicBalance& hb, const BearingSupport& b, const Eigen::VectorXd& X, int i) {
+  if (!b.axial()) return 0.0;
+  return -b.axial_stiffness[i] * hb.project(X, Eigen::VectorXd::Unit(b.dofs(), 4 + i))[0];
 }
 
 std::vector<double> closed_contact_frequencies(const DteGear& g, MeshDofs dofs, const BearingSupport& b) {

@@ -104,22 +104,41 @@ Iso6336Input pair_iso6336_input(const PairSteModel& m, const HelicalPair& h, dou
 enum class MeshDofs { one_dof, bearings };
 const char* to_string(MeshDofs d);   // "one_dof" | "six_dof"
 
+// A single-helical pair on bearings (issue 35 c): one axial translation z_i per gear on an
+// axial bearing of stiffness ka_i. The tooth force acts along the contact normal, inclined at
+// the base helix angle beta_b to the transverse plane; with N the transverse component along
+// the line of action (the model's mesh force, F0 = T1 / rb1 static) its axial component is
+// N tan(beta_b), on the gears in opposite senses. In transverse-equivalent terms (kc the
+// transverse mesh stiffness, as the STE gives it) the mesh deflection gains tan(beta_b)(z1 - z2):
+//     q = [x1, y1, x2, y2, z1, z2, p],   n = [cos a_w, -sin a_w, -cos a_w, sin a_w, t, -t, 1],
+//     m_i z_i'' + ca_i z_i' + ka_i z_i = -/+ t N,   t = tan(beta_b),
+// so the static axial bearing force is F0 t = (T1 / rb1) tan(beta_b) = F_t tan(beta), F_t the
+// tangential force at the reference circle. t = 0 (a spur or a double-helical pair, whose
+// halves' axial forces cancel): no axial DOFs, the model above unchanged.
 struct BearingSupport {
   double mass[2] = {0.0, 0.0};        // gear masses m1, m2 [kg]
   double stiffness[2] = {0.0, 0.0};   // isotropic bearing stiffnesses k1, k2 [N/m]
   double zeta = 0.02;                 // damping ratio of each bearing mode alone
   double pressure_angle = 0.0;        // operating pressure angle alpha_w [rad] (line of action)
+  double axial_stiffness[2] = {0.0, 0.0};   // axial bearing stiffnesses ka1, ka2 [N/m] (t > 0)
+  double helix_tan = 0.0;             // t = tan(beta_b) of a single-helical pair; 0: no axial DOFs
+  bool axial() const { return helix_tan > 0.0; }
+  int dofs() const { return axial() ? 7 : 5; }
 };
 
 // The harmonic-balance model of the mesh g with H harmonics: dte_harmonic_balance for
-// one_dof, the bearing model above otherwise (q = [x1, y1, x2, y2, p]).
+// one_dof, the bearing model above otherwise (q = [x1, y1, x2, y2, p], or with the axial
+// DOFs [x1, y1, x2, y2, z1, z2, p]).
 HarmonicBalance gear_mesh_model(const DteGear& g, MeshDofs dofs, const BearingSupport& b, int H, int N,
                                 DteModel model);
-// The output coordinate (the DTE): [1], or e_5 (p) for the bearing model.
-Eigen::VectorXd dte_coordinate(MeshDofs dofs);
+// The output coordinate (the DTE): [1], or p (the last coordinate) for the bearing model.
+Eigen::VectorXd dte_coordinate(MeshDofs dofs, const BearingSupport& b = {});
+// The static (mean) axial bearing force of gear i (0, 1) [N] of the bearing model's state X:
+// -ka_i times the mean of z_i (with the axial DOFs; 0 without).
+double mean_axial_bearing_force(const HarmonicBalance& hb, const BearingSupport& b, const Eigen::VectorXd& X, int i);
 
 // Closed-contact natural frequencies [Hz] of the model (drive flank closed, mean stiffness kc):
-// one_dof sqrt(kc / me) / 2 pi; bearings the five undamped modes of M, K + kc n n'.
+// one_dof sqrt(kc / me) / 2 pi; bearings the five (seven with axial DOFs) undamped modes of M, K + kc n n'.
 std::vector<double> closed_contact_frequencies(const DteGear& g, MeshDofs dofs, const BearingSupport& b);
 
 enum class MeshContact { full, drive_loss, back_impact, drive_loss_back_impact };

@@ -34,6 +34,8 @@
 // With C diagonal, C = diag(1/k_i), this is load_sharing.hpp's elastic problem
 // F_i = k_i max(X - g_i, 0) (HertzCount::none): the unit tests check it against
 // share_load.
+#include <vector>
+
 #include <Eigen/Dense>
 
 namespace gearhb {
@@ -48,5 +50,21 @@ struct CoupledShare {
 // for which no set satisfies the KKT conditions (C not positive definite).
 CoupledShare share_load_coupled(const Eigen::MatrixXd& compliance, const Eigen::VectorXd& separation,
                                 double force);
+
+// The same problem with C block diagonal: blocks of contacts that deflect each other within a
+// block only (a helical face's slices, pair_helical.hpp: the FE section couples the tooth pairs
+// of one slice, the slices are independent), each block up to 12 contacts, any number of
+// blocks. At a given approach X each block's contacts solve the complementarity problem
+//     w_b = C_b f_b + g_b - X 1 >= 0,   f_b >= 0,   f_b . w_b = 0
+// (unique for C_b positive definite; found by enumerating its loaded sets as above), and the
+// total force sum_b 1^T f_b(X) is continuous, piecewise linear and non-decreasing in X. X is
+// found on it exactly: from each iterate's loaded sets the root of their linear piece,
+//     X = (F + sum_b 1^T C_SS^-1 g_S) / (sum_b 1^T C_SS^-1 1),
+// accepted when the loaded sets there are those it came from (then it is the exact root);
+// otherwise the next iterate if it lies inside the bracket of the total, else the bracket's
+// midpoint (at most 200 iterates: std::runtime_error). Forces in block order, concatenated.
+// std::invalid_argument as share_load_coupled (per block), and for no block.
+CoupledShare share_load_blocks(const std::vector<Eigen::MatrixXd>& compliance,
+                               const std::vector<Eigen::VectorXd>& separation, double force);
 
 }  // namespace gearhb

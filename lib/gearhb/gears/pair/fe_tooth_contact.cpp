@@ -625,6 +625,7 @@ FePairModel::FePairModel(const PairSteModel& pair, int samples, const FePairOpti
                    (1 - options.poisson_ratio2 * options.poisson_ratio2) / pair.youngs_modulus2;
   length_ = std::min(pair.gear1.face_width, pair.gear2.face_width);
 
+  if (samples == 0) return;   // the models only (phases_at)
   const std::vector<MeshPhase> kinematics = mesh_phases(pair, samples, [](double, double, bool) { return 1.0; });
   std::vector<std::vector<FlankPoint>> sets1, sets2;
   for (const MeshPhase& q : kinematics) {
@@ -649,27 +650,50 @@ FePairModel::FePairModel(const PairSteModel& pair, int samples, const FePairOpti
   } else {
     compliances(sets1, sets2, shared, c1, c2);
   }
-  for (std::size_t q = 0; q < kinematics.size(); ++q) {
-    FePhase p;
-    p.phase = kinematics[q].phase;
-    p.pairs = kinematics[q].pairs;
-    const Eigen::MatrixXd C = c1[q] + c2[q];
-    p.compliance = 0.5 * (C + C.transpose());
-    const int n = int(p.pairs.size());
-    p.local.resize(n);
-    p.local_log.resize(n);
-    p.contact_radius.resize(n);
-    for (int k = 0; k < n; ++k) {
-      const double xi1 = sets1[q][k].roll, xi2 = sets2[q][k].roll;
-      p.contact_radius(k) = xi1 * xi2 / (xi1 + xi2);
-      // width_correction(a) = kappa ln(w / a) = kappa ln w - kappa ln a: kappa = correction at a = w / e.
-      const double k1 = gear1().width_correction(gear1().load_half_width() / std::exp(1.0));
-      const double k2 = gear2().width_correction(gear2().load_half_width() / std::exp(1.0));
-      p.local(k) = k1 + k2;
-      p.local_log(k) = k1 * std::log(gear1().load_half_width()) + k2 * std::log(gear2().load_half_width());
-    }
-    phases_.push_back(p);
+  for (std::size_t q = 0; q < kinematics.size(); ++q)
+    phases_.push_back(make_phase(kinematics[q].phase, kinematics[q].pairs, c1[q], c2[q], sets1[q], sets2[q]));
+}
+
+FePhase FePairModel::make_phase(double phase, const std::vector<PairContact>& pairs, const Eigen::MatrixXd& c1,
+                                const Eigen::MatrixXd& c2, const std::vector<FlankPoint>& points1,
+                                const std::vector<FlankPoint>& points2) const {
+  FePhase p;
+  p.phase = phase;
+  p.pairs = pairs;
+  const Eigen::MatrixXd C = c1 + c2;
+  p.compliance = 0.5 * (C + C.transpose());
+  const int n = int(p.pairs.size());
+  p.local.resize(n);
+  p.local_log.resize(n);
+  p.contact_radius.resize(n);
+  for (int k = 0; k < n; ++k) {
+    const double xi1 = points1[k].roll, xi2 = points2[k].roll;
+    p.contact_radius(k) = xi1 * xi2 / (xi1 + xi2);
+    // width_correction(a) = kappa ln(w / a) = kappa ln w - kappa ln a: kappa = correction at a = w / e.
+    const double k1 = gear1().width_correction(gear1().load_half_width() / std::exp(1.0));
+    const double k2 = gear2().width_correction(gear2().load_half_width() / std::exp(1.0));
+    p.local(k) = k1 + k2;
+    p.local_log(k) = k1 * std::log(gear1().load_half_width()) + k2 * std::log(gear2().load_half_width());
   }
+  return p;
+}
+
+std::vector<FePhase> FePairModel::phases_at(const std::vector<std::vector<PairContact>>& sets) const {
+  std::vector<std::vector<FlankPoint>> sets1, sets2;
+  for (const auto& set : sets) {
+    sets1.emplace_back();
+    sets2.emplace_back();
+    for (std::size_t k = 0; k < set.size(); ++k) {   // as pair_points: roll T1A + s on gear 1
+      const double xi1 = path_.T1A + std::min(set[k].s, path_.AE);
+      sets1.back().push_back({int(k), xi1});
+      sets2.back().push_back({int(k), path_.T1T2 - xi1});
+    }
+  }
+  std::vector<Eigen::MatrixXd> c1, c2;
+  compliances(sets1, sets2, !gear2_, c1, c2);
+  std::vector<FePhase> out;
+  for (std::size_t q = 0; q < sets.size(); ++q) out.push_back(make_phase(0.0, sets[q], c1[q], c2[q], sets1[q], sets2[q]));
+  return out;
 }
 
 double FePairModel::force(double torque) const { return torque / pair_.gear1.base_radius(); }

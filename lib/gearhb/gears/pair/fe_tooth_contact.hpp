@@ -226,7 +226,8 @@ struct FeStePoint {
 class FePairModel {
  public:
   // The FE models of both gears (one shared when the gears, materials and options are the
-  // same) and the compliances of `samples` uniform phases of one mesh cycle.
+  // same) and the compliances of `samples` uniform phases of one mesh cycle (samples 0: none,
+  // the models only, for phases_at).
   FePairModel(const PairSteModel& pair, int samples, const FePairOptions& options = {});
 
   double force(double torque) const;   // T1 / rb1 [N]
@@ -238,6 +239,14 @@ class FePairModel {
   std::vector<PairStePoint> pair_ste(double torque, bool reliefs = true) const;
   // The contact problem at one phase for tooth force F [N] (section 3).
   FeStePoint solve_phase(const FePhase& phase, double force) const;
+  // Phases of any contact points: each set the pairs (s from A, nearest A first) on
+  // consecutive loaded teeth 0, 1, ... (at most the options' loaded_teeth), their compliances
+  // read from the same FE models, every distinct point loaded once (a helical pair's slices,
+  // pair_helical.hpp). FePhase::phase 0, pairs as given.
+  std::vector<FePhase> phases_at(const std::vector<std::vector<PairContact>>& sets) const;
+  // The local (Hertz) compliance of pair k of p at its force F [N]: the width correction of
+  // section 2 from the reference widths to a(F) [m/N].
+  double contact_compliance(int pair_in_phase, const FePhase& p, double F) const;
   // New tip reliefs without rebuilding the FE models (the FE geometry has none, section
   // 1): only the separations g_i of the phases change.
   void set_reliefs(const TipRelief& relief1, const TipRelief& relief2);
@@ -254,7 +263,9 @@ class FePairModel {
   const PathOfContact& path() const { return path_; }
 
  private:
-  double contact_compliance(int pair_in_phase, const FePhase& p, double F) const;
+  FePhase make_phase(double phase, const std::vector<PairContact>& pairs, const Eigen::MatrixXd& c1,
+                     const Eigen::MatrixXd& c2, const std::vector<FlankPoint>& points1,
+                     const std::vector<FlankPoint>& points2) const;
   void compliances(const std::vector<std::vector<FlankPoint>>& sets1, const std::vector<std::vector<FlankPoint>>& sets2,
                    bool shared, std::vector<Eigen::MatrixXd>& c1, std::vector<Eigen::MatrixXd>& c2) const;
   PairSteModel pair_;

@@ -26,7 +26,7 @@
 // phase); the part of it on the path [0, AE] (a fraction w in (0, 1]) is the slice's contact,
 // read at that part's centre: its radii, its separation (both tip reliefs, plus both gears'
 // lead modifications at y_j), its stiffness w k(r1, r2) / N, k the chosen tooth model's
-// stiffness of the full-width section (beam or potential energy). Cutting each contact line
+// stiffness of the full-width section (beam or potential energy; fe below). Cutting each contact line
 // exactly at A and E makes the contact length on the path exact at any N (a whole eps_beta gives
 // a constant length, tests/unit/test_pair_helical.cpp); a stiffness per unit face width
 // constant across the face, with no coupling between neighbouring slices. The load is shared
@@ -36,6 +36,24 @@
 // delta(N F_i / w, b): the contact problem is solved scaled by N (stiffnesses w k, force N F,
 // line b, ContactPair::line_fraction w). With N > 1 Hertz must be inside the sharing
 // (TwoPairHertz::consistent) or none: the thesis' equal split would split over slices.
+//
+// The finite-element section (sliced_fe_loaded_pair; model.method fe). The FE model of
+// fe_tooth_contact.hpp is a plane model of the transverse section per unit face width (plane
+// strain, thickness the gear's face width), the same at every slice: each gear is meshed,
+// assembled and factored once, and its influence coefficients are read at every slice
+// contact's own point (FePairModel::phases_at; every distinct point loaded once). Slice j is
+// the plane section over the width b/N, so its contacts' compliance is N times the full-width
+// one; a contact covering a fraction w of the slice's width (cut at A or E) carries its force
+// uniformly over w b/N and is read as the mean over its part, so within a slice
+//     C^j_il = N o_il / (w_i w_l) C_il      (o_il the overlap of the two parts across the slice,
+//                                            o_ii = w_i; the section's C_il at their points),
+// the tooth pairs of one slice coupled through the rim as in the spur FE, the slices not
+// coupled to each other (as the beam and PE slices). The local (Hertz) compliance of each
+// contact is the section's at its line load N f_i / w_i on the line b, times N / w_i. The load
+// is shared exactly over the block-diagonal problem (share_load_blocks, coupled_load_sharing.hpp)
+// inside the fixed point on the force-dependent local term (FePairModel::solve_phase's).
+// The loaded teeth of the FE mesh are ceil(eps_alpha + eps_beta) + 1 whatever N (a slice's
+// contact lines span at most that many teeth), so the FE model does not change with N.
 //
 // At beta = 0 without a lead modification the slices would be identical copies: the face is
 // then one slice, and the STE is the spur pair's bit for bit (tests/unit/test_pair_helical.cpp).
@@ -105,5 +123,11 @@ double sliced_loaded_contact_ratio(const std::vector<PairStePoint>& cycle, const
 // (positions_per_base_pitch) or a Hertz split other than consistent with N > 1.
 std::unique_ptr<LoadedPair> sliced_loaded_pair(const PairSteModel& section, const HelicalPair& h, int samples,
                                                const PairStiffnessFn& stiffness = {});
+
+// The FE section in slices (above): FePairModel(section, 0, options) with enough loaded
+// teeth, every slice contact's compliance from it. std::invalid_argument as sliced_loaded_pair
+// (but any Hertz reading: the FE has its own) and for a tooth force other than T1 / rb1.
+std::unique_ptr<LoadedPair> sliced_fe_loaded_pair(const PairSteModel& section, const HelicalPair& h, int samples,
+                                                  const FePairOptions& options = {});
 
 }  // namespace gearhb
