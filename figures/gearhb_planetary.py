@@ -151,8 +151,12 @@ def phasing_figure(d_dir, params):
     ax.set_xlabel("mesh harmonic l")
     ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-10 of the largest)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    ax.set_title("%s, N = %d, z_s = %d\nabove the bars: the family harmonic l may drive (l z_s mod N)"
-                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"]), fontsize=9)
+    ruled = any(f == f and f for f in family)
+    ax.set_title("%s, N = %d, z_s = %d\n%s"
+                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"],
+                    "above the bars: the family harmonic l may drive (l z_s mod N)" if ruled else
+                    "not cyclically symmetric (unequal spacing, pin errors or unequal backlash): no phasing rule"),
+                 fontsize=9)
     return save(fig, d_dir / "phasing.png")
 
 

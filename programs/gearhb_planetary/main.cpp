@@ -285,15 +285,21 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
 // harmonic l: f_mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
 // sqrt of the x and y amplitudes squared), and the family that mesh phasing lets harmonic l
 // drive (README "Why planet phasing suppresses mesh harmonics"): phasing = rotational (l z_s
-// / N whole), translational ((l z_s +- 1) / N whole) or none; empty for unequal spacing.
+// / N whole), translational ((l z_s +- 1) / N whole) or none; empty where the set is not
+// cyclically symmetric (unequal spacing, pin errors, backlashes that differ between planets).
 Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const {
   const int n = hb.dofs(), N = file_.set.planets(), zs = file_.teeth.sun;
+  // the rule needs the set's cyclic symmetry: equal spacing, no pin errors, one backlash per mesh kind
+  bool symmetric = file_.equally_spaced;
+  for (double e : file_.meshes.pin_errors) symmetric = symmetric && e == 0.0;
+  const std::vector<double>& b = file_.meshes.backlash;
+  for (std::size_t i = 0; i < b.size(); ++i) symmetric = symmetric && b[i] == b[i - i % std::size_t(N)];
   Table t({"f_mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
   for (const BranchPoint& p : c.branch.points)
     for (int l = 1; l <= hb.harmonics(); ++l) {
       auto amp = [&](int i) { return std::hypot(p.X((2 * l - 1) * n + i), p.X(2 * l * n + i)); };
       const int r = (l * zs) % N;
-      const std::string family = !file_.equally_spaced ? "" : r == 0 ? "rotational"
+      const std::string family = !symmetric ? "" : r == 0 ? "rotational"
                                  : (r == 1 || r == N - 1) ? "translational" : "none";
       t.add_row({p.omega / (2.0 * M_PI), long(l), 1e6 * amp(coordinate(Body::sun, 2)),
                  1e6 * std::hypot(amp(coordinate(Body::sun, 0)), amp(coordinate(Body::sun, 1))), family});
