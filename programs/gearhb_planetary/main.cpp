@@ -214,7 +214,8 @@ FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBala
 }
 
 // The Floquet multipliers of the variational equation about the HB orbit (floquet.hpp
-// floquet_of_hb_variational; about 0.2 s a point for N = 3, H = 8, so not at every point)
+// floquet_of_hb_variational; about 0.15 s a point for N = 3 and 0.4 s for N = 5, H = 8:
+// gearhb_bench planetary_floquet_point; so not at every point)
 // at every k-th point of the curve, k = ceil(points / stability_points), and at its last point.
 void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c,
                                      std::vector<bool>& evaluated) const {
