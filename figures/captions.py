@@ -260,3 +260,67 @@ GEAR_CAPTIONS = {
     "dte_spectrum.png": "DTE per mesh order at the speeds named in its legend (the peak's among them): which "
                         "order carries the response.",
 }
+
+# The gear tools' figures of make figures that are not one gearhb_gear run's (figures/report.py,
+# section "Gear tools"): file name -> what it shows and what to notice, true for every run.
+TOOL_CAPTIONS = {
+    "gear_methods.png": "The three tooth models (finite elements, beam, potential energy) on the three example pairs, "
+                        "each as its example file has it, at the pair's largest torque: mesh stiffness k = F / STE "
+                        "(top, ISO 6336-1 c_gamma_alpha b dotted) and STE (bottom) over one mesh cycle. Notice that "
+                        "the models do not agree; gear_tooth_models.png says which lies nearer the converged FE.",
+    "gear_methods_harris.png": "Harris map of the thesis gear with one long linear tip relief on both gears, by the "
+                               "beam and the potential-energy model: STE peak-to-peak against torque with the relief "
+                               "(solid, each model's smallest circled) and without it (dotted); the relief's design "
+                               "torque dashed. Notice where each model's minimum lies against that design torque.",
+    "gear_models.png": "One DOF (the torsional mesh on rigid bearings) against six (x, y, theta per gear on "
+                       "bearings) for the thesis gear at 300 N m (top) and the relieved light-load gear at 20 N m "
+                       "(bottom): DTE RMS of the exact orbit (left) and K_v (right) over speed, stable solid, "
+                       "unstable dashed, bifurcations x. Notice where the curves part: the bearings add modes the "
+                       "torsional model cannot have.",
+    "gear_tooth_models.png": "Which tooth model a scene needs (figures/tooth_model_chart.py): each model's error "
+                             "in the mean mesh stiffness (left) and the STE peak-to-peak (right) against the "
+                             "converged FE (the Richardson limit of three mesh sizes), over its wall time, for "
+                             "three pairs, like for like (the FE's bores for every model); dotted: 1 %. Read off "
+                             "what each model costs and how far it lies from the FE.",
+    "gear_helical_ste.png": "A helical version of the thesis pair, the transverse section fixed (figures/"
+                            "helical_ste.py): STE peak-to-peak against the helix angle per torque (beam model, "
+                            "slices), beside theory's peak-to-peak of the total contact-line length (dashed, right "
+                            "axis). Notice both fall to their minima at whole overlap ratios, eps_beta = 1 and 2, "
+                            "where the contact-line length on the path is constant.",
+}
+
+# The figures of a gearhb_planetary run, copied as planetary_<example>_<figure>: figure -> caption.
+PLANETARY_CAPTIONS = {
+    "modes.png": "Mode shapes of the set at carrier speed 0, one of each mode type the set has: the rest position "
+                 "grey, the mode in colour. Notice the central members (sun, ring, carrier): in a rotational mode "
+                 "they only turn, in a translational mode they only translate, in a planet mode (N > 3) they stay "
+                 "still - Lin & Parker's three types, with multiplicities 1, 2 and N - 3.",
+    "campbell.png": "Campbell diagram: the natural frequencies in the carrier frame against the carrier speed, with "
+                    "the gyroscopic and centripetal terms; each line is the k-th frequency at each speed, not a "
+                    "mode followed.",
+    "phasing.png": "Mesh phasing: the largest amplitude of the sun's rotation and of its centre at each mesh "
+                   "harmonic l over the computed curve; above the bars, the mode family harmonic l may drive "
+                   "(Parker's rule on l z_s mod N). Notice the harmonics the rule forbids fall to round-off "
+                   "(the bottom of the axis).",
+    "response.png": "Response over the mesh frequency (harmonic balance with exact contact on every mesh, arc "
+                    "length): the sun's rotation and centre (AC RMS, Floquet stability at the marked points) and "
+                    "the largest K_v of the sun-planet and of the ring-planet meshes, with a rug where a mesh of "
+                    "that kind loses contact.",
+}
+
+# The figures of a gearhb_frc run, copied as frc_<example>_<figure>: figure -> caption.
+FRC_CAPTIONS = {
+    "frc.png": "The frequency response of a model file (gearhb_frc): the output's largest and least value over a "
+               "period against the forcing frequency, stable solid, unstable dashed (Floquet), bifurcations "
+               "marked, the contact state as a rug at the bottom. Where the file asks for them: the period-2 "
+               "branches switched at the period doublings (colours of their own, x_min close up on the right), a "
+               "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right), the Poincare "
+               "points of the bifurcation diagram by time integration (below); the frequencies with no stable "
+               "period-1 orbit shaded.",
+    "bifurcation_diagram.png": "The bifurcation diagram by time integration (GSL, exact contact switching): the "
+                               "output at phase 0 of each forcing period after the transient, sweeping up (top) "
+                               "and down (bottom), each point coloured by what the motion is (period n, "
+                               "quasi-periodic, chaotic by its largest Lyapunov exponent), under the harmonic "
+                               "balance's period-1 curve at the same phase. Notice that the two views agree where "
+                               "both apply: the stable HB curve runs through the period-1 points.",
+}

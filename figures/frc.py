@@ -40,6 +40,20 @@ def per_contact_state(d):
         states.append("intermittent" if "intermittent" in s else "full" if "full" in s else "open")
     return dict(d, contact=states)
 
+def direction_text(q):
+    """The output direction q for an axis label: its entries to 3 digits, or only its size when long."""
+    if len(q) <= 4:
+        return "[%s]" % ", ".join("%.3g" % v for v in q)
+    return "output.direction (%d DOFs)" % len(q)
+
+
+def save_whole(fig, path):
+    """Save with the legends placed outside the axes inside the image (tight_layout does not see them)."""
+    fig.tight_layout()
+    fig.savefig(path, bbox_inches="tight")
+    plt.close(fig)
+
+
 def poincare_panel(ax, p, h, direction, sweeps=("up", "down"), title=None):
     """The diagram's Poincare points over the HB branch at phase 0, on ax; its legend below."""
     handles = draw_hb_section(ax, h, "omega", "x") + draw_poincare(ax, p, "omega", "x", sweeps=sweeps)
@@ -62,7 +76,7 @@ def diagram_figure(d_dir, model, p, h):
                  % model.get("name", "model"), fontsize=9)
     axes[-1].legend(handles=list(labels.values()), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2),
                     ncol=2, frameon=False)
-    save(fig, d_dir / "bifurcation_diagram.png")
+    save_whole(fig, d_dir / "bifurcation_diagram.png")
 
 
 def rows_of(d, branch):
@@ -160,8 +174,7 @@ def main():
         ins.set_xlim(lo2 - pad, hi2 + pad)
         ins.set_ylim(min(ys) - 0.3 * span, max(ys) + 0.3 * span)
         ins.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-        ins.set_title("x_min beside the period-2 branches", fontsize=9)
-        ins.legend(fontsize=7, frameon=False)
+        ins.set_title("x_min beside the period-2 branches\n(dots: period 1's points)", fontsize=9)
     if t is not None:
         for bid in sorted({int(x) for x in t["branch"]}):
             r = rows_of(t, bid)
@@ -190,7 +203,7 @@ def main():
     shaded = no_stable_period1(d_dir, [a for a in (ax, axp) if a is not None])
     direction = model["output"]["direction"]
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-    ax.set_ylabel("output q'x, q = %s [m]" % direction)
+    ax.set_ylabel("output q'x, q = %s [m]" % direction_text(direction))
     lo, hi = sorted((model["omega"]["from"], model["omega"]["to"]))
     beyond = ""   # a branch that folds back out of the range at its start is followed there
     if min(d["omega"]) < lo * (1 - 1e-9) or max(d["omega"]) > hi * (1 + 1e-9):
@@ -216,12 +229,12 @@ def main():
         axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
         axp.legend(handles=h_main + legend_styles(ax) + handles, fontsize=6.5, loc="upper center",
                    bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
-        save(fig, d_dir / "frc.png")
+        save_whole(fig, d_dir / "frc.png")
         diagram_figure(d_dir, model, p, h)
         return
-    ax.legend(handles=h_main + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.14),
-              ncol=3, frameon=False)
-    save(fig, d_dir / "frc.png")
+    fig.legend(handles=h_main + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+               ncol=3, frameon=False)
+    save_whole(fig, d_dir / "frc.png")
 
 
 if __name__ == "__main__":

@@ -90,9 +90,9 @@ def modes_figure(d_dir, params):
         ax.set_yticks([])
         ax.set_title("%s mode %d: %.1f Hz\nmultiplicity %d" % (kind, number, modes["frequency_hz"][i],
                                                                modes["multiplicity"][i]), fontsize=9)
-    fig.suptitle("%s, N = %d (carrier speed 0, as in modes.csv): rest grey, mode shape in colour (scaled)"
+    fig.suptitle("%s, N = %d (carrier speed 0, as in modes.csv):\nrest grey, mode shape in colour (scaled)"
                  % (params.get("name", "planetary set"), params["planets"]), fontsize=10)
-    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    fig.tight_layout(rect=(0, 0, 1, 0.9))
     fig.savefig(d_dir / "modes.png")
     plt.close(fig)
     return str(d_dir / "modes.png")

@@ -15,7 +15,9 @@ figures/tooth_model_chart.py the tooth models' error against cost
 figures/gear_models.py the one-DOF against six-DOF comparison (build/figures/gear_models.png),
 figures/helical_ste.py the STE peak-to-peak of a helical pair against its helix angle
 (build/figures/gear_helical_ste.png, build/data/gearhb_gear/helical_ste/helical_ste.csv);
-then every example of programs/gearhb_planetary/examples/ into
+then every example of programs/gearhb_frc/examples/ into build/data/gearhb_frc/<example>/
+(figures copied to build/figures/frc_<example>_*.png), and every example of
+programs/gearhb_planetary/examples/ into
 build/data/gearhb_planetary/<example>/ (figures copied to build/figures/planetary_<example>_*.png);
 build/figures/index.html (figures/report.py)
 links them all. build/figures/timings.csv records each step's wall time of this run (the only
@@ -47,7 +49,7 @@ def run_examples(program, prefix, build, fig_dir, timings):
             shutil.copy(png, fig_dir / ("%s_%s_%s" % (prefix, example.stem, png.name)))
 
 
-def main():
+def arguments():
     ap = argparse.ArgumentParser(description=__doc__)
     ap.add_argument("--build", default="build")
     ap.add_argument("--only", help="run just this chapter (e.g. ch03_mass_wall)")
@@ -55,19 +57,12 @@ def main():
     ap.add_argument("--values", choices=("exact", "hb"), default="exact",
                     help="frequency responses drawn from the exact orbit where the table has it (default) "
                          "or from harmonic balance")
-    args = ap.parse_args()
-    import style
-    style.VALUES = args.values
-    build = pathlib.Path(args.build).resolve()
-    fig_dir = build / "figures"
-    fig_dir.mkdir(parents=True, exist_ok=True)
-    chapters = sorted(p for p in (build / "bin").glob("ch[0-9][0-9]_*") if p.is_file())
-    if args.only:
-        chapters = [p for p in chapters if p.name == args.only]
-    if not chapters:
-        sys.exit("no chapter programs in %s/bin: run `make build` first" % build)
-    # The programs run two at a time (the machine has two cores; each program is
-    # single-threaded); each chapter's figures are drawn as soon as its data is there.
+    return ap.parse_args()
+
+
+def run_chapters(chapters, build, fig_dir, jobs, timings):
+    """The chapter programs, two at a time (the machine has two cores; each program is
+    single-threaded); each chapter's figures are drawn as soon as its data is there."""
     def run(exe):
         t0 = time.time()
         data_dir = build / "data" / exe.name
@@ -75,9 +70,7 @@ def main():
         subprocess.run([str(exe), "--quiet", "--out", str(data_dir)], check=True)
         return exe, data_dir, time.time() - t0
 
-    timings = [("make_figures_start", 0.0)]
-    start = time.time()
-    with concurrent.futures.ThreadPoolExecutor(max_workers=args.jobs) as pool:
+    with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as pool:
         for fut in concurrent.futures.as_completed([pool.submit(run, exe) for exe in chapters]):
             exe, data_dir, secs = fut.result()
             script = HERE / (exe.name + ".py")
@@ -90,38 +83,53 @@ def main():
             made = mod.draw(data_dir, fig_dir)
             timings.append((exe.name, secs))
             print("[figures]   %s: data in %.1f s, %d figures" % (exe.name, secs, len(made)), flush=True)
-    gear = build / "bin" / "gearhb_gear"
-    if gear.is_file() and not args.only:
-        run_examples(gear, "gear", build, fig_dir, timings)
-        # Beam model against potential-energy method (figures/gear_methods.py) from those folders.
-        import gear_methods
-        for png in gear_methods.draw(build / "data" / "gearhb_gear", fig_dir):
-            print("[figures]   %s" % png, flush=True)
-        # Which tooth model a scene needs: error against cost (figures/tooth_model_chart.py; about
-        # a minute: FE runs at five mesh sizes per pair).
-        import tooth_model_chart
-        t0 = time.time()
-        for png in tooth_model_chart.draw(gear, build / "data" / "gearhb_gear" / "tooth_models", fig_dir):
-            print("[figures]   %s" % png, flush=True)
-        timings.append(("tooth_model_chart", time.time() - t0))
-        # Helical pairs (figures/helical_ste.py): STE peak-to-peak against the helix angle at a
-        # fixed transverse section, beside the contact-line length of theory (about 25 s).
-        import helical_ste
-        for png in helical_ste.draw(gear, build / "data" / "gearhb_gear" / "helical_ste", fig_dir):
-            print("[figures]   %s" % png, flush=True)
-        # One DOF against six (figures/gear_models.py) from the dynamics examples.
-        import gear_models
-        for png in gear_models.draw(build / "data" / "gearhb_gear", fig_dir):
-            print("[figures]   %s" % png, flush=True)
-    planetary = build / "bin" / "gearhb_planetary"
-    if planetary.is_file() and not args.only:
-        run_examples(planetary, "planetary", build, fig_dir, timings)
+
+
+def run_gear_pairs(gear, build, fig_dir, timings):
+    """Every gear-pair example, then the comparisons drawn from their folders or run on their own."""
+    run_examples(gear, "gear", build, fig_dir, timings)
+    import gear_methods        # FE / beam / potential energy side by side
+    import gear_models         # one DOF against six
+    import helical_ste         # a helical pair's STE peak-to-peak against its helix angle
+    import tooth_model_chart   # which tooth model a scene needs: error against cost (FE at five sizes)
+    data = build / "data" / "gearhb_gear"
+    made = gear_methods.draw(data, fig_dir)
+    t0 = time.time()
+    made += tooth_model_chart.draw(gear, data / "tooth_models", fig_dir)
+    timings.append(("tooth_model_chart", time.time() - t0))
+    made += helical_ste.draw(gear, data / "helical_ste", fig_dir)
+    made += gear_models.draw(data, fig_dir)
+    for png in made:
+        print("[figures]   %s" % png, flush=True)
+
+
+def main():
+    args = arguments()
+    import style
+    style.VALUES = args.values
+    build = pathlib.Path(args.build).resolve()
+    fig_dir = build / "figures"
+    fig_dir.mkdir(parents=True, exist_ok=True)
+    chapters = sorted(p for p in (build / "bin").glob("ch[0-9][0-9]_*") if p.is_file())
+    if args.only:
+        chapters = [p for p in chapters if p.name == args.only]
+    if not chapters:
+        sys.exit("no chapter programs in %s/bin: run `make build` first" % build)
+    timings = [("make_figures_start", 0.0)]
+    start = time.time()
+    run_chapters(chapters, build, fig_dir, args.jobs, timings)
+    tools = {name: build / "bin" / name for name in ("gearhb_gear", "gearhb_frc", "gearhb_planetary")}
+    if not args.only:
+        if tools["gearhb_gear"].is_file():
+            run_gear_pairs(tools["gearhb_gear"], build, fig_dir, timings)
+        for name, prefix in (("gearhb_frc", "frc"), ("gearhb_planetary", "planetary")):
+            if tools[name].is_file():
+                run_examples(tools[name], prefix, build, fig_dir, timings)
     timings[0] = ("make_figures_total", time.time() - start)
     with open(fig_dir / "timings.csv", "w") as f:
         f.write("step,wall_s\n" + "".join("%s,%.1f\n" % t for t in timings))
     import report
     print("[figures] report: %s" % report.write(build))
-
 
 if __name__ == "__main__":
     main()

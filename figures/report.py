@@ -30,7 +30,8 @@ import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 sys.path.insert(0, str(HERE))
-from captions import CHAPTERS, GEAR_CAPTIONS, GEAR_CAPTIONS_HELICAL, GEAR_CAPTIONS_NO_RELIEF, NOT_COMPUTABLE  # noqa: E402
+from captions import (CHAPTERS, GEAR_CAPTIONS, GEAR_CAPTIONS_HELICAL, GEAR_CAPTIONS_NO_RELIEF, NOT_COMPUTABLE,  # noqa: E402
+                      FRC_CAPTIONS, PLANETARY_CAPTIONS, TOOL_CAPTIONS)
 
 STYLE = """body{font-family:sans-serif;max-width:1300px;margin:auto;padding:1em;color:#222}
 h1{font-size:1.5em}h2{border-bottom:1px solid #ccc;margin-top:2em}
@@ -383,6 +384,21 @@ def gear_run_page(build, run_dir, fig_dir):
     return name, title, figs
 
 
+def tool_figures(fig_dir):
+    """[(file name, label, caption, wide)] of the tools' figures with a caption: the comparisons of
+    TOOL_CAPTIONS and every gearhb_frc and gearhb_planetary run's <prefix>_<example>_<figure>."""
+    out = [(name, "gear tools", caption, is_wide(fig_dir / name))
+           for name, caption in TOOL_CAPTIONS.items() if (fig_dir / name).exists()]
+    for prefix, program, captions in (("frc", "gearhb_frc", FRC_CAPTIONS),
+                                      ("planetary", "gearhb_planetary", PLANETARY_CAPTIONS)):
+        for path in sorted(fig_dir.glob(prefix + "_*.png")):
+            for figure, caption in captions.items():
+                if path.name.endswith("_" + figure):
+                    example = path.name[len(prefix) + 1:-len(figure) - 1]
+                    out.append((path.name, "%s %s" % (program, example), caption, is_wide(path)))
+    return out
+
+
 def write(build):
     build = pathlib.Path(build)
     fig_dir = build / "figures"
@@ -410,10 +426,15 @@ def write(build):
                         % (name, html.escape(title), html.escape(run_dir.name), len(figs)))
         body.append("</ul>")
         head.insert(len(head) - 1, "<a href='#gear_runs'>gear-pair runs</a>")
-    shown = {f[0] for f in all_figs} | gear_figs
+    tools = tool_figures(fig_dir)
+    if tools:
+        body.append("<h2 id='gear_tools'>The tools: your own system (gearhb_frc), the tooth models compared, helical pairs, planetary sets</h2>")
+        body += [figure_html(*f) for f in tools]
+        head.insert(len(head) - 1, "<a href='#gear_tools'>gear tools</a>")
+    shown = {f[0] for f in all_figs} | gear_figs | {f[0] for f in tools}
     extra = sorted(p.name for p in fig_dir.glob("*.png") if p.name not in shown)
     if extra:
-        body.append("<h2>Further figures</h2>")
+        body.append("<h2>Further figures (no caption yet)</h2>")
         body += ['<figure><a href="%s"><img src="%s" alt="%s"></a><figcaption><code>%s</code></figcaption></figure>'
                  % (e, e, e, e) for e in extra]
     body.append("<h2>Thesis figures that cannot be computed</h2><ul>")

@@ -223,6 +223,7 @@ def contact_rug(ax, d, x="omega", row=0, colour=None, scale=1.0):
     """The contact state along one curve as a thin band at the bottom of the axes (row `row`,
     counted upwards): gold where intermittent, grey where full, nothing where open. A short tick
     in the curve's colour at the left end names the row. Nothing hides the curves above."""
+    from matplotlib.patches import Rectangle
     y0 = 0.004 + row * (RUG_HEIGHT + 0.006)
     tr = ax.get_xaxis_transform()
     xs = [v * scale for v in d[x]]
@@ -231,8 +232,10 @@ def contact_rug(ax, d, x="omega", row=0, colour=None, scale=1.0):
             lo, hi = min(xs[i0:i1 + 1]), max(xs[i0:i1 + 1])
             if hi == lo:
                 continue
-            ax.fill_between([lo, hi], [y0, y0], [y0 + RUG_HEIGHT] * 2, transform=tr, color=CONTACT_COLOURS[state],
-                            lw=0, zorder=1)
+            # a patch in (data x, axes y): it leaves the y autoscale alone (fill_between would add
+            # y0..y0 + RUG_HEIGHT as data values and squash curves of millimetres to the bottom)
+            ax.add_patch(Rectangle((lo, y0), hi - lo, RUG_HEIGHT, transform=tr, color=CONTACT_COLOURS[state],
+                                   lw=0, zorder=1))
     if colour is not None:
         ax.plot([0.0, 0.012], [y0 + RUG_HEIGHT / 2] * 2, transform=ax.transAxes, color=colour, lw=3,
                 solid_capstyle="butt", clip_on=False, zorder=2)

@@ -4,8 +4,9 @@
 A library folder may include only itself and the folders below it in FLOORS; inside
 gears/ a room may include only itself and the rooms before it in ROOMS. The numerics
 (core, hb, fe, gears) never print, write files or read JSON. The CMake links of the
-targets (lib/CMakeLists.txt) must allow no more than FLOORS does. Exit 1 listing each
-broken rule; 0 otherwise.
+targets (lib/CMakeLists.txt) must allow no more than FLOORS does. Every module (header)
+of lib/ is named in lib/README.md's table, so the drawing shows the whole house. Exit 1
+listing each broken rule; 0 otherwise.
 
 usage: floors.py SOURCE_DIR
 """
@@ -64,11 +65,20 @@ def check_links(cmake):
     return broken
 
 
+def check_drawn(lib, readme):
+    """Every header's module name appears in lib/README.md's table (its rows start with |) as `name`."""
+    text = "\n".join(line for line in readme.read_text().splitlines() if line.startswith("|"))
+    return [f"{p.relative_to(lib)}: module `{p.stem}` is not in lib/README.md's table"
+            for p in sorted(lib.rglob("*.hpp")) if f"`{p.stem}`" not in text]
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit(__doc__)
     root = pathlib.Path(sys.argv[1])
-    broken = check_sources(root / "lib" / "gearhb") + check_links(root / "lib" / "CMakeLists.txt")
+    lib = root / "lib" / "gearhb"
+    broken = (check_sources(lib) + check_links(root / "lib" / "CMakeLists.txt") +
+              check_drawn(lib, root / "lib" / "README.md"))
     for b in broken:
         print(b)
     print(f"floors.py: {len(broken)} broken rule(s)")

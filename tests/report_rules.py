@@ -15,7 +15,8 @@ value, and one ordinary number of chapter 3 is put outside its tolerance. The pa
 and every caption of figures/captions.py must be its own (one caption per figure). A faked
 gear-pair run (build/data/gearhb_gear/thesis_pair with the reference's values and one figure)
 must get its own page, linked from the index, with every checked number, no FAIL, the
-figure with its caption and the run's unchecked key numbers listed apart.
+figure with its caption and the run's unchecked key numbers listed apart; a gear-tool figure
+(gear_models.png) and a planetary run's figure get their captions.
 Exit 0 when all hold; each broken rule is printed.
 """
 import json
@@ -64,6 +65,9 @@ def fake_build(work):
     (gear / "response.png").write_bytes(png)
     (work / "figures" / "gear_thesis_pair_response.png").write_bytes(png)
     (work / "figures" / "gear_thesis_pair_pe_ste.png").write_bytes(png)
+    # the gear tools' figures: one comparison and one planetary run's figure, each with its caption
+    (work / "figures" / "gear_models.png").write_bytes(png)
+    (work / "figures" / "planetary_some_set_response.png").write_bytes(png)
     return quick_only
 
 
@@ -126,6 +130,10 @@ def main(work):
             errors.append("gear page: shows a figure of another run (gear_thesis_pair_pe_ste.png)")
         if "an_unchecked_number" not in g.split("other key numbers")[-1]:
             errors.append("gear page: the run's unchecked key numbers are not listed apart")
+    for name, caption in (("gear_models.png", report.TOOL_CAPTIONS["gear_models.png"]),
+                          ("planetary_some_set_response.png", report.PLANETARY_CAPTIONS["response.png"])):
+        if "<code>%s</code>): %s" % (name, caption[:40]) not in page:
+            errors.append("%s: shown without its caption" % name)
     captions = [c for ch in CHAPTERS for _, _, c in ch["figures"]]
     shared = sorted({c for c in captions if captions.count(c) > 1})
     errors += ["caption shared by several figures: %s" % c[:80] for c in shared]

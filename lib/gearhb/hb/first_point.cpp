@@ -144,53 +144,34 @@ bool first_converged(const ParametricProblem& p, const std::vector<Candidate>& c
   return false;
 }
 
-}  // namespace
-
-FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scaling& s, const FirstPointOptions& opt) {
-  FirstPoint fp;
-  const int P = int(hb.contacts().size());
-  const unsigned long long all = P >= 64 ? ~0ull : (1ull << P) - 1ull;
-  std::ostringstream why;
-  // 1. Newton from the better of the open and all-closed linear solutions.
-  std::string step1;
+// 1. Newton from the better of the open and all-closed linear solutions; on failure, why.
+bool from_linear_guess(const HarmonicBalance& hb, double omega, const Scaling& s, const FirstPointOptions& opt,
+                       FirstPoint& fp, std::ostringstream& why) {
   try {
     Eigen::VectorXd X = opt.linear_guess.size() ? opt.linear_guess : linear_first_guess(hb, omega);
     ++fp.newton_solves;
     const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
     if (r.converged) {
-      fp.found = true;
       fp.X = std::move(X);
-      fp.method = FirstPointMethod::linear_guess;
-      return fp;
+      return true;
     }
-    step1 = "Newton from the linear open/closed-contact guess: " + r.message;
+    why << "Newton from the linear open/closed-contact guess: " << r.message;
   } catch (const std::invalid_argument& e) {
-    step1 = e.what();
+    why << e.what();
   }
-  why << step1;
-  if (P == 0) {
-    fp.failure = why.str();
-    return fp;
-  }
-  // 2. Newton from the linear solution of every other contact set.
-  const auto cands = contact_set_candidates(hb, hb, omega, omega, opt, false, {0ull, all});
-  if (first_converged(hb, cands, omega, s, opt, fp)) {
-    fp.found = true;
-    fp.method = FirstPointMethod::contact_set;
-    return fp;
-  }
-  why << "; Newton from the linear solution of each of the " << cands.size() << " other contact sets failed";
-  // 3. Continuation in the forcing amplitude from the static problem.
+  return false;
+}
+
+// 3. Continuation in the forcing amplitude lambda from the static problem (lambda = 0) to the
+// problem itself (lambda = 1), confirmed there by a last Newton solve; on failure, why.
+bool from_amplitude_continuation(const HarmonicBalance& hb, double omega, const Scaling& s,
+                                 const FirstPointOptions& opt, FirstPoint& fp, std::ostringstream& why) {
   const AmplitudeHomotopy homotopy(hb, omega);
-  if (!opt.amplitude_continuation || !homotopy.forced()) {
-    fp.failure = why.str();
-    return fp;
-  }
+  if (!opt.amplitude_continuation || !homotopy.forced()) return false;
   if (!first_converged(homotopy, contact_set_candidates(hb, homotopy, omega, 0.0, opt, true, {}), 0.0, s, opt, fp)) {
     why << "; the forcing-amplitude continuation has no start: no static equilibrium under the static load alone"
            " (no contact set holds it; with K singular a static load must press a contact)";
-    fp.failure = why.str();
-    return fp;
+    return false;
   }
   ContinuationOptions co = opt.continuation;
   co.omega_start = 0.0;
@@ -202,21 +183,40 @@ FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scali
   if (!b.complete || b.points.empty() || b.points.back().omega != 1.0) {
     why << "; the forcing-amplitude continuation from the static equilibrium stopped ("
         << (b.failures.empty() ? std::string("did not reach the full amplitude") : b.summary()) << ")";
-    fp.failure = why.str();
-    return fp;
+    return false;
   }
-  // lambda = 1 is the problem itself: a last Newton solve on it confirms the point.
   Eigen::VectorXd X = b.points.back().X;
   ++fp.newton_solves;
   const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
   if (!r.converged) {
     why << "; the forcing-amplitude continuation reached lambda = 1 but Newton there failed: " << r.message;
-    fp.failure = why.str();
-    return fp;
+    return false;
   }
-  fp.found = true;
   fp.X = std::move(X);
-  fp.method = FirstPointMethod::amplitude_continuation;
+  return true;
+}
+
+}  // namespace
+
+FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scaling& s, const FirstPointOptions& opt) {
+  FirstPoint fp;
+  std::ostringstream why;
+  auto found = [&](FirstPointMethod m) {
+    fp.found = true;
+    fp.method = m;
+    return fp;
+  };
+  if (from_linear_guess(hb, omega, s, opt, fp, why)) return found(FirstPointMethod::linear_guess);
+  const int P = int(hb.contacts().size());
+  if (P > 0) {
+    // 2. Newton from the linear solution of every other contact set.
+    const unsigned long long all = P >= 64 ? ~0ull : (1ull << P) - 1ull;
+    const auto cands = contact_set_candidates(hb, hb, omega, omega, opt, false, {0ull, all});
+    if (first_converged(hb, cands, omega, s, opt, fp)) return found(FirstPointMethod::contact_set);
+    why << "; Newton from the linear solution of each of the " << cands.size() << " other contact sets failed";
+    if (from_amplitude_continuation(hb, omega, s, opt, fp, why)) return found(FirstPointMethod::amplitude_continuation);
+  }
+  fp.failure = why.str();
   return fp;
 }
 
