@@ -10,6 +10,12 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
                 Floquet multipliers were computed (unstable ones in red), and the largest
                 dynamic factor K_v of the sun-planet and ring-planet meshes, the frequencies
                 where a mesh loses contact as a rug;
+  meshes.png    (with `response`) every mesh over the mesh frequency: its dynamic factor K_v
+                (one line per planet, sun-planet and ring-planet meshes in two panels, the
+                points whose Floquet multipliers were computed marked) and its contact class
+                along the curve as one band per mesh (drive-flank loss, back-flank impact);
+  load_sharing.png  (with `response`) the planet load-sharing factor of every planet over the
+                mesh frequency;
   campbell.png  (with `campbell`) the natural frequencies over carrier speed;
   phasing.png   (with `response`) the largest amplitude over the curve of each mesh harmonic
                 of the sun's rotation and centre, with the mode family mesh phasing lets the
@@ -23,7 +29,7 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import read_csv, rug_room, save  # noqa: E402
+from style import CONTACT_COLOURS, RUG_HEIGHT, contact_rug, read_csv, rug_room, save  # noqa: E402
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
 
@@ -111,9 +117,9 @@ def response_figure(d_dir, params):
         kv = [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
         bottom.plot(hz, kv, color=colour, label="%s-planet meshes: largest K_v" % kind)
         loss = [hz[i] for i in range(len(hz))
-                if any(d["contact_%s_%d" % (kind, n + 1)][i] != "full" for n in range(N))]
+                if any("drive_loss" in d["contact_%s_%d" % (kind, n + 1)][i] for n in range(N))]
         bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
-                    transform=bottom.get_xaxis_transform(), label="%s-planet mesh loses contact" % kind)
+                    transform=bottom.get_xaxis_transform(), label="%s-planet drive flank loses contact" % kind)
     rug_room(bottom, rows=2)
     bottom.set_ylabel("K_v: largest force / static force")
     bottom.set_xlabel("mesh frequency [Hz]")
@@ -145,9 +151,81 @@ def phasing_figure(d_dir, params):
     ax.set_xlabel("mesh harmonic l")
     ax.set_ylabel("largest amplitude over the curve [um]\n(bottom: below 1e-10 of the largest)")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
-    ax.set_title("%s, N = %d, z_s = %d\nabove the bars: the family harmonic l may drive (l z_s mod N)"
-                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"]), fontsize=9)
+    ruled = any(f == f and f for f in family)
+    ax.set_title("%s, N = %d, z_s = %d\n%s"
+                 % (params.get("name", "planetary set"), params["planets"], params["teeth"]["sun"],
+                    "above the bars: the family harmonic l may drive (l z_s mod N)" if ruled else
+                    "not cyclically symmetric (unequal spacing, pin errors or unequal backlash): no phasing rule"),
+                 fontsize=9)
     return save(fig, d_dir / "phasing.png")
+
+
+# A mesh's contact class as the rug's state: drive-flank loss drawn as intermittent contact,
+# full contact left blank (the figure says so).
+RUG_STATE = {"drive_loss": "intermittent", "back_impact": "back_impact", "drive_loss+back_impact": "drive_loss+back_impact"}
+
+
+def stability_marks(ax, hz, y, stable, colour):
+    for i, s in enumerate(stable):
+        if s == s:   # evaluated
+            ax.plot(hz[i], y[i], "o" if s > 0.5 else "x", ms=4, color=colour if s > 0.5 else "red", zorder=3)
+
+
+def meshes_figure(d_dir, params):
+    d = read_csv(d_dir / "response.csv")
+    hz, N = d["f_mesh_hz"], params["planets"]
+    fig, axes = plt.subplots(2, 1, figsize=(7.6, 7.0), sharex=True)
+    for ax, kind in zip(axes, ("sun", "ring")):
+        for n in range(N):
+            kv = d["dynamic_factor_%s_%d" % (kind, n + 1)]
+            ax.plot(hz, kv, color="C%d" % n, lw=1.1, label="planet %d" % (n + 1))
+            stability_marks(ax, hz, kv, d["stable"], "C%d" % n)
+        ax.set_ylabel("%s-planet meshes: K_v" % kind)
+        rug_room(ax, rows=N)
+        for n in range(N):
+            states = [RUG_STATE.get(c, "none") for c in d["contact_%s_%d" % (kind, n + 1)]]
+            contact_rug(ax, {"f_mesh_hz": hz, "contact": states}, x="f_mesh_hz", row=n, colour="C%d" % n)
+        ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, title="mesh of", title_fontsize=8)
+    from matplotlib.lines import Line2D
+    from matplotlib.patches import Patch
+    axes[1].legend(handles=[Line2D([], [], ls="none", marker="o", color="0.4", ms=4, label="Floquet: stable"),
+                            Line2D([], [], ls="none", marker="x", color="red", ms=4, label="Floquet: unstable"),
+                            Patch(color=CONTACT_COLOURS["intermittent"], label="drive flank loses contact"),
+                            Patch(color=CONTACT_COLOURS["back_impact"], label="back flank hits"),
+                            Patch(color=CONTACT_COLOURS["drive_loss+back_impact"], label="both"),
+                            Patch(color="white", ec="0.6", label="no band: full contact")],
+                   loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+                   title="bands: one per mesh,\ncoloured as its planet", title_fontsize=8)
+    axes[1].set_xlabel("mesh frequency [Hz] (sun speed relative to the carrier: 60 f / z_s rpm)")
+    back = params["mesh"].get("sun_planet_backlash", params["mesh"].get("ring_planet_backlash"))
+    alike = all(abs(d["dynamic_factor_%s_%d" % (k, n + 1)][i] - d["dynamic_factor_%s_1" % k][i]) < 5e-3
+                for k in ("sun", "ring") for n in range(N) for i in range(len(hz)))
+    fig.suptitle("%s, %g N m on the %s: K_v = largest |drive - back force| / static force\n%s"
+                 % (params.get("name", "planetary set"), params["response"]["torque"], params["response"]["input"],
+                    ("back flanks at the file's backlash" if back is not None else "drive flanks only (no backlash given)") +
+                    ("\nevery planet's mesh alike (to the 1e-3 of the sampled maxima): the lines lie on one another"
+                     if alike else "")),
+                 fontsize=9)
+    return save(fig, d_dir / "meshes.png")
+
+
+def load_sharing_figure(d_dir, params):
+    d = read_csv(d_dir / "response.csv")
+    hz, N = d["f_mesh_hz"], params["planets"]
+    errors = params.get("planet", {}).get("pin_errors")
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    for n in range(N):
+        L = d["load_sharing_planet_%d" % (n + 1)]
+        label = "planet %d" % (n + 1) + ("" if errors is None else ", pin error %g um" % (1e6 * errors[n]))
+        ax.plot(hz, L, color="C%d" % n, lw=1.1, label=label)
+        stability_marks(ax, hz, L, d["stable"], "C%d" % n)
+    ax.axhline(1.0, color="0.6", lw=0.8, ls=":")
+    ax.set_xlabel("mesh frequency [Hz]")
+    ax.set_ylabel("planet load-sharing factor L_n")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    ax.set_title("%s: L_n = N max F_sn / sum_m max F_sm\n(F_sn the drive-flank force of sun-planet mesh n over the period;"
+                 " o stable, x unstable)" % params.get("name", "planetary set"), fontsize=9)
+    return save(fig, d_dir / "load_sharing.png")
 
 
 def campbell_figure(d_dir, params):
@@ -172,6 +250,8 @@ def main():
         campbell_figure(d_dir, params)
     if "response" in params and (d_dir / "response.csv").exists():
         response_figure(d_dir, params)
+        meshes_figure(d_dir, params)
+        load_sharing_figure(d_dir, params)
         phasing_figure(d_dir, params)
 
 

@@ -17,8 +17,9 @@
 // the output held by its shaft; harmonic balance with exact contact and arc-length
 // continuation over the mesh frequency, the Floquet multipliers of the variational
 // equation about the HB orbit at every k-th point (k = ceil(points / stability_points)) and the
-// last one, and per mesh its dynamic factor K_v (largest force over the static one) and its
-// contact state.
+// last one, per mesh its dynamic factor K_v (largest force over the static one) and its
+// contact class (drive-flank loss, back-flank impact where the file gives a backlash), per
+// planet its load-sharing factor (unequal with pin position errors, planet.pin_errors).
 //
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
 // written), natural_frequencies, mode_shapes, campbell, response (loaded_model, response_curve,
@@ -40,6 +41,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/floquet.hpp"
@@ -54,6 +56,12 @@
 using namespace gearhb;
 
 namespace {
+
+// What each mesh and planet does over the period of one point of the curve.
+struct PointMeasures {
+  std::vector<PlanetaryMeshOrbit> meshes;   // 2N, mesh order (sun_1..N, ring_1..N)
+  std::vector<double> load_sharing;         // N: the planet load-sharing factors
+};
 
 class PlanetarySetFromFile {
  public:
@@ -73,44 +81,14 @@ class PlanetarySetFromFile {
   HarmonicBalance loaded_model() const;
   FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb) const;
   void stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c, std::vector<bool>& evaluated) const;
-  Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated) const;
+  std::vector<PointMeasures> measures(const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated,
+                       const std::vector<PointMeasures>& m) const;
   Table sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void response_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                            const std::vector<bool>& evaluated) const;
+  void response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<bool>& evaluated,
+                            const std::vector<PointMeasures>& m) const;
   void draw(Run& run) const;
 };
-
-// One mesh over the period of a point: its dynamic factor K_v (largest force over the
-// static force F0 of the mesh, README glossary) and its contact state over the period
-// (open | full | intermittent, refined between the samples: contact.hpp contact_state).
-struct MeshOverPeriod {
-  double dynamic_factor = 0.0;
-  ContactState state = ContactState::full;
-};
-
-// The static force of each mesh: kc d' x0, x0 the static deflection with every mesh closed
-// at its mean stiffness (the static part of the closed-contact solution).
-std::vector<double> static_mesh_forces(const HarmonicBalance& hb) {
-  const Eigen::VectorXd x0 = hb.closed_contact_solution(1.0).head(hb.dofs());
-  std::vector<double> F0;
-  for (std::size_t i = 0; i < hb.contacts().size(); ++i)
-    F0.push_back(hb.mean_stiffness(i) * (hb.contacts()[i].normal.dot(x0) + hb.contacts()[i].gap));
-  return F0;
-}
-
-MeshOverPeriod mesh_over_period(const HarmonicBalance& hb, const Eigen::VectorXd& X, std::size_t i, double F0) {
-  const int n = hb.dofs(), H = hb.harmonics(), J = 32 * (2 * H + 1);
-  const UnilateralContact& ct = hb.contacts()[i];
-  Eigen::VectorXd uc(2 * H + 1), us(J);
-  for (int k = 0; k < 2 * H + 1; ++k) uc(k) = ct.normal.dot(X.segment(k * n, n)) + (k == 0 ? ct.gap : 0.0);
-  double fmax = 0.0;
-  for (int j = 0; j < J; ++j) {
-    const double th = 2.0 * M_PI * j / J;
-    us(j) = trig_series(uc, th);
-    fmax = std::max(fmax, contact_force(stiffness_at(ct, th), us(j)));
-  }
-  return {fmax / F0, contact_state(uc, us)};
-}
 
 std::string mesh_name(int i, int planets) {
   return (i < planets ? "sun_" : "ring_") + std::to_string(i % planets + 1);
@@ -212,22 +190,15 @@ void PlanetarySetFromFile::response(Run& run) const {
   FrequencyCurve c = response_curve(run, hb);
   std::vector<bool> evaluated;
   stability(run, hb, c, evaluated);
-  const Table t = response_table(hb, c, evaluated);
-  run.write("response.csv", t);
+  const std::vector<PointMeasures> m = measures(hb, c);
+  run.write("response.csv", response_table(hb, c, evaluated, m));
   run.write("sun_harmonics.csv", sun_harmonics_table(hb, c));
-  response_key_numbers(run, hb, c, evaluated);
+  response_key_numbers(run, c, evaluated, m);
 }
 
-// The loaded set: the output's shaft added to its torsional stiffness, the input torque
-// T / r on the input's u (r: member_radius), the meshes as contacts.
-HarmonicBalance PlanetarySetFromFile::loaded_model() const {
-  const PlanetaryResponseInput& r = file_.response;
-  PlanetarySet s = file_.set;
-  (r.output == Body::sun ? s.sun : r.output == Body::ring ? s.ring : s.carrier).torsional += r.output_shaft;
-  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
-  f0(coordinate(r.input, 2)) = r.torque / member_radius(file_.teeth, s.sun_pressure_angle, r.input);
-  return planetary_harmonic_balance(s, file_.meshes, r.zeta, f0, r.harmonics);
-}
+// The loaded set (planetary_file.hpp planetary_response_model): the output held by its
+// shaft, the input torque, the meshes as contacts.
+HarmonicBalance PlanetarySetFromFile::loaded_model() const { return planetary_response_model(file_); }
 
 // Arc-length continuation over the mesh frequency, no stability yet (the next step).
 FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBalance& hb) const {
@@ -243,7 +214,8 @@ FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBala
 }
 
 // The Floquet multipliers of the variational equation about the HB orbit (floquet.hpp
-// floquet_of_hb_variational; about 0.2 s a point for N = 3, H = 8, so not at every point)
+// floquet_of_hb_variational; about 0.15 s a point for N = 3 and 0.4 s for N = 5, H = 8:
+// gearhb_bench planetary_floquet_point; so not at every point)
 // at every k-th point of the curve, k = ceil(points / stability_points), and at its last point.
 void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c,
                                      std::vector<bool>& evaluated) const {
@@ -264,18 +236,35 @@ void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, Freque
   });
 }
 
+// Every point's meshes over the period (planetary_mesh.hpp): K_v against each mesh's static
+// force, the flank states, and the planets' load-sharing factors.
+std::vector<PointMeasures> PlanetarySetFromFile::measures(const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  const int N = file_.set.planets();
+  const std::vector<double> F0 = planetary_static_mesh_forces(hb, N);
+  const std::vector<int> back = back_flank_contacts(file_.meshes, N);
+  std::vector<PointMeasures> out;
+  for (const BranchPoint& p : c.branch.points) {
+    PointMeasures m;
+    for (int i = 0; i < 2 * N; ++i) m.meshes.push_back(planetary_mesh_orbit(hb, back, p.X, i, F0[std::size_t(i)]));
+    m.load_sharing = planet_load_sharing(m.meshes, N);
+    out.push_back(std::move(m));
+  }
+  return out;
+}
+
 // response.csv: f_mesh_hz, sun_u_rms_um (AC RMS of the sun's rotation u_s), sun_xy_rms_um
-// (of its centre), stable and floquet_modulus (empty where not evaluated), and per mesh
-// (sun_1..N, ring_1..N) dynamic_factor_<mesh> (K_v: largest force over the static one) and
-// contact_<mesh> (open | full | intermittent).
+// (of its centre), stable and floquet_modulus (empty where not evaluated), per planet
+// load_sharing_planet_<n> (L_n, planet_load_sharing), and per mesh (sun_1..N, ring_1..N)
+// dynamic_factor_<mesh> (K_v: largest |drive - back force| over the static one) and
+// contact_<mesh> (full | drive_loss | back_impact | drive_loss+back_impact).
 Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                           const std::vector<bool>& evaluated) const {
+                                           const std::vector<bool>& evaluated, const std::vector<PointMeasures>& m) const {
   const int N = file_.set.planets(), n = hb.dofs(), H = hb.harmonics();
   std::vector<std::string> columns{"f_mesh_hz", "sun_u_rms_um", "sun_xy_rms_um", "stable", "floquet_modulus"};
+  for (int i = 0; i < N; ++i) columns.push_back("load_sharing_planet_" + std::to_string(i + 1));
   for (int i = 0; i < 2 * N; ++i) columns.push_back("dynamic_factor_" + mesh_name(i, N));
   for (int i = 0; i < 2 * N; ++i) columns.push_back("contact_" + mesh_name(i, N));
   Table t(columns);
-  const std::vector<double> F0 = static_mesh_forces(hb);
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     const Eigen::VectorXd& X = c.branch.points[p].X;
     double u2 = 0.0, xy2 = 0.0;
@@ -285,13 +274,9 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
     }
     std::vector<Table::Cell> row{c.branch.points[p].omega / (2.0 * M_PI), 1e6 * std::sqrt(u2), 1e6 * std::sqrt(xy2),
                                  cell(evaluated[p], c.stable[p] ? 1.0 : 0.0), cell(evaluated[p], c.floquet[p].modulus)};
-    std::vector<Table::Cell> states;
-    for (int i = 0; i < 2 * N; ++i) {
-      const MeshOverPeriod m = mesh_over_period(hb, X, std::size_t(i), F0[std::size_t(i)]);
-      row.emplace_back(m.dynamic_factor);
-      states.emplace_back(std::string(to_string(m.state)));
-    }
-    row.insert(row.end(), states.begin(), states.end());
+    for (double L : m[p].load_sharing) row.emplace_back(L);
+    for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(o.dynamic_factor);
+    for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(std::string(to_string(mesh_contact(o.drive, o.back))));
     t.add_row(std::move(row));
   }
   return t;
@@ -301,15 +286,21 @@ Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Freq
 // harmonic l: f_mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
 // sqrt of the x and y amplitudes squared), and the family that mesh phasing lets harmonic l
 // drive (README "Why planet phasing suppresses mesh harmonics"): phasing = rotational (l z_s
-// / N whole), translational ((l z_s +- 1) / N whole) or none; empty for unequal spacing.
+// / N whole), translational ((l z_s +- 1) / N whole) or none; empty where the set is not
+// cyclically symmetric (unequal spacing, pin errors, backlashes that differ between planets).
 Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const {
   const int n = hb.dofs(), N = file_.set.planets(), zs = file_.teeth.sun;
+  // the rule needs the set's cyclic symmetry: equal spacing, no pin errors, one backlash per mesh kind
+  bool symmetric = file_.equally_spaced;
+  for (double e : file_.meshes.pin_errors) symmetric = symmetric && e == 0.0;
+  const std::vector<double>& b = file_.meshes.backlash;
+  for (std::size_t i = 0; i < b.size(); ++i) symmetric = symmetric && b[i] == b[i - i % std::size_t(N)];
   Table t({"f_mesh_hz", "harmonic", "u_um", "xy_um", "phasing"});
   for (const BranchPoint& p : c.branch.points)
     for (int l = 1; l <= hb.harmonics(); ++l) {
       auto amp = [&](int i) { return std::hypot(p.X((2 * l - 1) * n + i), p.X(2 * l * n + i)); };
       const int r = (l * zs) % N;
-      const std::string family = !file_.equally_spaced ? "" : r == 0 ? "rotational"
+      const std::string family = !symmetric ? "" : r == 0 ? "rotational"
                                  : (r == 1 || r == N - 1) ? "translational" : "none";
       t.add_row({p.omega / (2.0 * M_PI), long(l), 1e6 * amp(coordinate(Body::sun, 2)),
                  1e6 * std::hypot(amp(coordinate(Body::sun, 0)), amp(coordinate(Body::sun, 1))), family});
@@ -317,39 +308,49 @@ Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const
   return t;
 }
 
-// The curve's key numbers: points, the largest dynamic factor and where, the points with
-// a mesh losing contact and the first such mesh frequency, the stability evaluated.
-void PlanetarySetFromFile::response_key_numbers(Run& run, const HarmonicBalance& hb,
-                                                const FrequencyCurve& c, const std::vector<bool>& evaluated) const {
+// The curve's key numbers: points, the largest dynamic factor and where, the points with a
+// drive-flank loss or a back-flank impact on some mesh and the lowest such mesh frequencies,
+// the largest load-sharing factor and where, the stability evaluated.
+void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<bool>& evaluated,
+                                                const std::vector<PointMeasures>& m) const {
   KeyNumbers& key = run.key_numbers();
-  double kv_max = 0.0, kv_hz = 0.0, first_loss = NAN;
-  const std::vector<double> F0 = static_mesh_forces(hb);
-  int loss_points = 0, checked = 0, unstable = 0;
+  double kv_max = 0.0, kv_hz = 0.0, ls_max = 0.0, ls_hz = 0.0, first_loss = NAN, first_impact = NAN;
+  int loss_points = 0, impact_points = 0, checked = 0, unstable = 0;
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
     const double hz = c.branch.points[p].omega / (2.0 * M_PI);
-    bool loss = false;
-    for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
-      const MeshOverPeriod m = mesh_over_period(hb, c.branch.points[p].X, i, F0[i]);
-      if (m.dynamic_factor > kv_max) kv_max = m.dynamic_factor, kv_hz = hz;
-      loss = loss || m.state != ContactState::full;
+    bool loss = false, impact = false;
+    for (const PlanetaryMeshOrbit& o : m[p].meshes) {
+      if (o.dynamic_factor > kv_max) kv_max = o.dynamic_factor, kv_hz = hz;
+      loss = loss || o.drive != ContactState::full;
+      impact = impact || o.back != ContactState::open;
     }
+    for (double L : m[p].load_sharing)
+      if (L > ls_max) ls_max = L, ls_hz = hz;
     loss_points += loss ? 1 : 0;
+    impact_points += impact ? 1 : 0;
     if (loss && !(hz >= first_loss)) first_loss = hz;
+    if (impact && !(hz >= first_impact)) first_impact = hz;
     checked += evaluated[p] ? 1 : 0;
     unstable += evaluated[p] && !c.stable[p] ? 1 : 0;
   }
   key.add("response_points", double(c.branch.points.size()), "-");
   key.add("dynamic_factor_max", kv_max, "-");
   key.add("dynamic_factor_max_f_mesh_hz", kv_hz, "Hz");
+  key.add("load_sharing_max", ls_max, "-");
+  key.add("load_sharing_max_f_mesh_hz", ls_hz, "Hz");
   key.add("contact_loss_points", double(loss_points), "-");
   if (std::isfinite(first_loss)) key.add("contact_loss_lowest_f_mesh_hz", first_loss, "Hz");
+  key.add("back_impact_points", double(impact_points), "-");
+  if (std::isfinite(first_impact)) key.add("back_impact_lowest_f_mesh_hz", first_impact, "Hz");
   key.add("stability_points", double(checked), "-");
   key.add("unstable_points", double(unstable), "-");
-  char line[240];
-  std::snprintf(line, sizeof line, "largest K_v %.3f at %.1f Hz; a mesh loses contact at %d points%s; Floquet at %d points, %d unstable",
-                kv_max, kv_hz, loss_points,
-                std::isfinite(first_loss) ? (", the lowest at " + std::to_string(int(std::lround(first_loss))) + " Hz").c_str() : "",
-                checked, unstable);
+  auto lowest = [](double hz) { return std::isfinite(hz) ? ", the lowest at " + std::to_string(int(std::lround(hz))) + " Hz" : std::string(); };
+  char line[320];
+  std::snprintf(line, sizeof line,
+                "largest K_v %.3f at %.1f Hz, largest load sharing %.3f at %.1f Hz; a drive flank loses contact at %d points%s; "
+                "a back flank hits at %d points%s; Floquet at %d points, %d unstable",
+                kv_max, kv_hz, ls_max, ls_hz, loss_points, lowest(first_loss).c_str(), impact_points,
+                lowest(first_impact).c_str(), checked, unstable);
   run.say(file_.name + ": " + line);
 }
 

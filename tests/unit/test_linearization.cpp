@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "gearhb/core/fourier.hpp"
 #include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "test_models.hpp"
@@ -71,6 +72,29 @@ TEST(Linearization, CondensedMatchesDenseWithTwoContacts) {
     X *= 3.0;   // both contacts intermittent
     EXPECT_LT(condensed_vs_dense(hb, X, w, s, 7), 1e-10) << "omega = " << w;
   }
+}
+
+// One contact open over the whole period (its product matrix zero: the condensed solve drops
+// it) and the other intermittent or shut, at states scaled from the closed-contact one; and
+// both open. The condensed solve agrees with the dense LU of the full system.
+TEST(Linearization, CondensedDropsAContactOpenAllPeriod) {
+  const HarmonicBalance hb = two_contacts(6, false);
+  const Scaling s = hb.scaling(0.2, 2.0);
+  int open_states = 0;
+  for (double w : {0.3, 0.9, 1.4})
+    for (double scale : {0.0, 0.2, 1.0, 3.0}) {
+      const Eigen::VectorXd X = scale * linear_first_guess(hb, w);
+      int open = 0;
+      for (std::size_t i = 0; i < 2; ++i) {
+        const Eigen::VectorXd u = hb.penetration(X, i);
+        double top = -INFINITY;
+        for (int j = 0; j < 512; ++j) top = std::max(top, trig_series(u, 2.0 * M_PI * j / 512));
+        open += top < 0.0 ? 1 : 0;
+      }
+      open_states += open > 0 ? 1 : 0;
+      EXPECT_LT(condensed_vs_dense(hb, X, w, s, 11), 1e-10) << "omega = " << w << ", scale " << scale;
+    }
+  EXPECT_GE(open_states, 3) << "the check needs states with an open contact";
 }
 
 // K singular (a rigid-body mode that contact 1 holds: the transmission error of a gear pair

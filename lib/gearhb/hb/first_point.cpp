@@ -82,6 +82,23 @@ struct Candidate {
   double residual = 0.0;
 };
 
+// The set of the loaded flanks (step 2, many contacts): of two contacts with opposite
+// normals (n_j = -c n_i, c > 0: the two flanks of one clearance) the one with the larger
+// gap, and every contact without an opposite one.
+unsigned long long loaded_flanks(const HarmonicBalance& hb) {
+  const auto& c = hb.contacts();
+  const int P = std::min(int(c.size()), 64);
+  unsigned long long S = P >= 64 ? ~0ull : (1ull << P) - 1ull;
+  for (int i = 0; i < P; ++i)
+    for (int j = i + 1; j < P; ++j) {
+      const double ni = c[std::size_t(i)].normal.norm(), nj = c[std::size_t(j)].normal.norm();
+      if (!(ni > 0.0 && nj > 0.0)) continue;
+      if ((c[std::size_t(i)].normal / ni + c[std::size_t(j)].normal / nj).norm() > 1e-12) continue;
+      S &= ~(1ull << (c[std::size_t(i)].gap >= c[std::size_t(j)].gap ? j : i));
+    }
+  return S;
+}
+
 // Linear solutions of every contact set except `skip` (step 2), finite ones only,
 // sorted by their residual in `p` at parameter `par`; `static_only` drops their
 // harmonics (the lambda = 0 problem has no periodic forcing).
@@ -94,6 +111,7 @@ std::vector<Candidate> contact_set_candidates(const HarmonicBalance& hb, const P
     for (unsigned long long S = 0; S < (1ull << P); ++S) sets.push_back(S);
   } else {
     for (int i = 0; i < P && i < 64; ++i) sets.push_back(1ull << i);
+    sets.push_back(loaded_flanks(hb));
   }
   std::vector<Candidate> out;
   Eigen::VectorXd R;

@@ -22,7 +22,9 @@
 //     in increasing order of its harmonic-balance residual. A set that the response
 //     never leaves (the loaded flank closed all period, a small forcing) makes its
 //     linear solution exact: Newton converges in one step. All 2^P sets for
-//     P <= max_set_contacts contacts, else the single-contact sets only.
+//     P <= max_set_contacts contacts, else the single-contact sets and the set of the
+//     loaded flanks (of two contacts with opposite normals, the one with the larger
+//     gap; every contact without an opposite one: a planetary set's drive flanks).
 //  3. Continuation in the forcing amplitude: the periodic forcing fc, fs is scaled
 //     by lambda in [0, 1]. At lambda = 0 the forcing is static (f0; and the periodic
 //     part of a gap if the model has one) and its solution is found by steps 1-2

@@ -336,9 +336,60 @@ bool has_stiffness_profile(const HarmonicBalance& hb) {
 
 }  // namespace
 
+namespace {
+struct SecondOrderContext {
+  const std::function<void(double, Eigen::MatrixXd&)>* B;
+  const Eigen::MatrixXd* C;
+  int n;
+  Eigen::MatrixXd Bt;
+};
+// Y = [X; V] (2n x 2n, column-major): X' = V, V' = -B(t) X - C V.
+int second_order_rhs(double t, const double y[], double dydt[], void* params) {
+  auto* c = static_cast<SecondOrderContext*>(params);
+  (*c->B)(t, c->Bt);
+  const int n = c->n;
+  Eigen::Map<const Eigen::MatrixXd> Y(y, 2 * n, 2 * n);
+  Eigen::Map<Eigen::MatrixXd> dY(dydt, 2 * n, 2 * n);
+  dY.topRows(n) = Y.bottomRows(n);
+  dY.bottomRows(n).noalias() = -c->Bt * Y.topRows(n);
+  dY.bottomRows(n).noalias() -= *c->C * Y.bottomRows(n);
+  return GSL_SUCCESS;
+}
+
+// The monodromy matrix of the second-order variational equation x'' = -B(t) x - C x' over
+// [0, T] in the state [x; v], as monodromy_linear_periodic on A = [0 I; -B -C] (the same
+// GSL rk8pd, tolerances and breakpoints) at half its cost a step: the zero and identity
+// blocks of A are not multiplied.
+Eigen::MatrixXd monodromy_second_order(const std::function<void(double, Eigen::MatrixXd&)>& B, const Eigen::MatrixXd& C,
+                                       double T, const std::vector<double>& breakpoints, double tol) {
+  const int n = int(C.rows());
+  SecondOrderContext ctx{&B, &C, n, Eigen::MatrixXd::Zero(n, n)};
+  Eigen::MatrixXd Y = Eigen::MatrixXd::Identity(2 * n, 2 * n);
+  std::vector<double> ends;
+  for (double b : breakpoints)
+    if (b > 0.0 && b < T) ends.push_back(b);
+  std::sort(ends.begin(), ends.end());
+  ends.push_back(T);
+  gsl_odeiv2_system sys{second_order_rhs, nullptr, std::size_t(2 * n) * std::size_t(2 * n), &ctx};
+  double t = 0.0;
+  for (double t1 : ends) {
+    if (!(t1 > t)) continue;   // equal breakpoints: no segment (as monodromy_linear_periodic)
+    gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * (t1 - t), tol, tol);
+    if (d == nullptr) throw std::runtime_error("monodromy_second_order: GSL could not allocate the driver");
+    const int status = gsl_odeiv2_driver_apply(d, &t, t1, Y.data());
+    gsl_odeiv2_driver_free(d);
+    if (status != GSL_SUCCESS)
+      throw std::runtime_error(std::string("monodromy_second_order: GSL driver failed at t = ") + std::to_string(t) +
+                               ": " + gsl_strerror(status));
+  }
+  return Y;
+}
+
+}  // namespace
+
 FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                         const FloquetOptions& opt) {
-  const int n = hb.dofs(), H = hb.harmonics();
+  const int H = hb.harmonics();
   const double T = 2.0 * M_PI / omega;
   const auto& sys = hb.system();
   const Eigen::MatrixXd Minv = sys.M.inverse();
@@ -353,21 +404,22 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
         for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / omega);
     u.push_back(std::move(uc));
   }
-  auto A = [&](double t, Eigen::MatrixXd& out) {
+  // B(t) = M^-1 (K + sum_i kc_i(t) [u_i(t) > 0] n_i n_i'): M^-1 K and M^-1 n_i once, the
+  // closed contacts' rank-one terms at each t
+  const Eigen::MatrixXd MinvK = Minv * sys.K, MinvC = Minv * sys.C;
+  std::vector<Eigen::VectorXd> Minv_n;
+  for (const auto& ct : hb.contacts()) Minv_n.push_back(Minv * ct.normal);
+  auto B = [&](double t, Eigen::MatrixXd& out) {
     const double th = omega * t;
-    Eigen::MatrixXd Kt = sys.K;
+    out = MinvK;
     for (std::size_t i = 0; i < u.size(); ++i) {
-      const double ui = trig_series(u[i], th);
+      if (!(trig_series(u[i], th) > 0.0)) continue;   // open: contact_stiffness 0
       const auto& ct = hb.contacts()[i];
-      Kt += contact_stiffness(stiffness_at(ct, th), ui) * ct.normal * ct.normal.transpose();
+      out.noalias() += stiffness_at(ct, th) * Minv_n[i] * ct.normal.transpose();
     }
-    out.setZero(2 * n, 2 * n);
-    out.topRightCorner(n, n).setIdentity();
-    out.bottomLeftCorner(n, n) = -Minv * Kt;
-    out.bottomRightCorner(n, n) = -Minv * sys.C;
   };
   FloquetResult r;
-  r.monodromy = monodromy_linear_periodic(A, 2 * n, T, breakpoints, 1e-11);
+  r.monodromy = monodromy_second_order(B, MinvC, T, breakpoints, 1e-11);
   r.orbit_error = NAN;   // the HB orbit is not corrected on this path
   hb_initial_state(hb, X, omega, r.x0, r.v0);
   set_multipliers(r, r.monodromy, opt, omega);
@@ -561,5 +613,6 @@ Eigen::MatrixXd monodromy_linear_periodic(const std::function<void(double, Eigen
   }
   return Y;
 }
+
 
 }  // namespace gearhb

@@ -186,7 +186,8 @@ namespace {
 // coefficients, P contacts) instead of n m + 1, and det(bordered) = det(L)
 // det(reduced): it is singular exactly where the full system is (folds are
 // handled by the border as before). Used when L is well conditioned; the result
-// is checked by its residual on the full system.
+// is checked by its residual on the full system. Contacts open over the whole period
+// (G_i = 0) drop out: P counts the others only.
 class CondensedLinearization : public Linearization {
  public:
   // blocks: L's diagonal blocks (harmonic 0: n x n, k >= 1: 2n x 2n, [cos; sin]);
@@ -197,13 +198,18 @@ class CondensedLinearization : public Linearization {
         b_(std::move(dRdomega)), s_(s), m_(2 * int(L_.size()) - 1) {
     const int n = int(normals_.rows()), P = int(normals_.cols()), m = m_;
     for (std::size_t k = 0; k < L_.size(); ++k) offset_.push_back(k == 0 ? 0 : n * (2 * int(k) - 1));
-    // the contact coordinates q = (contact i, basis a) and W's columns w_q = L_k^-1 (n_i at basis a)
+    // Only the contacts whose product matrix is not zero (in contact somewhere in the
+    // period) enter: an open contact's G_i = 0 removes its v_i from every equation but its
+    // own, and dx does not depend on it (Gc v), so its rows and columns are dropped.
     for (int i = 0; i < P; ++i)
+      if (G_[std::size_t(i)].cwiseAbs().maxCoeff() > 0.0) active_.push_back(i);
+    // the contact coordinates q = (active contact j, basis a) and W's columns w_q = L_k^-1 (n_i at basis a)
+    for (std::size_t j = 0; j < active_.size(); ++j)
       for (int a = 0; a < m; ++a) {
         const int k = (a + 1) / 2, local = (a == 0 || a % 2 == 1) ? 0 : n;
         Eigen::VectorXd e = Eigen::VectorXd::Zero(L_[k].rows());
-        e.segment(local, n) = normals_.col(i);
-        coords_.push_back({i, a, k, local});
+        e.segment(local, n) = normals_.col(active_[j]);
+        coords_.push_back({active_[j], int(j), a, k, local});
         w_.push_back(lu_[k].solve(e));
       }
     Zb_ = solve_L(b_);
@@ -216,7 +222,7 @@ class CondensedLinearization : public Linearization {
         const Coord &c1 = coords_[q1], &c2 = coords_[q2];
         if (c1.block != c2.block) continue;
         const double S = normals_.col(c1.contact).dot(w_[q2].segment(c1.local, n));
-        SG_.row(q1).segment(c2.contact * m, m) += S * G_[c2.contact].row(c2.basis);
+        SG_.row(q1).segment(c2.slot * m, m) += S * G_[c2.contact].row(c2.basis);
       }
   }
 
@@ -235,7 +241,7 @@ class CondensedLinearization : public Linearization {
     for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
       const Coord& cj = coords_[j];
       const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
-      A.row(q).segment(cj.contact * m, m) -= wc * G_[cj.contact].row(cj.basis);
+      A.row(q).segment(cj.slot * m, m) -= wc * G_[cj.contact].row(cj.basis);
     }
     A(q, q) = d - c.dot(Zb_);
     r.head(q) = project(Zf);
@@ -269,7 +275,7 @@ class CondensedLinearization : public Linearization {
   }
 
  private:
-  struct Coord { int contact, basis, block, local; };
+  struct Coord { int contact, slot, basis, block, local; };   // slot: the contact's place in active_
   std::vector<Eigen::MatrixXd> L_;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu_;
   std::vector<int> offset_;     // first unknown of each block
@@ -278,6 +284,7 @@ class CondensedLinearization : public Linearization {
   Eigen::VectorXd b_, Zb_, UZb_;
   Scaling s_;
   int m_;                       // 2H+1 coefficients per coordinate
+  std::vector<int> active_;     // the contacts with G_i != 0
   std::vector<Coord> coords_;
   std::vector<Eigen::VectorXd> w_;
   Eigen::MatrixXd SG_;
@@ -297,10 +304,11 @@ class CondensedLinearization : public Linearization {
       u[j] = normals_.col(coords_[j].contact).dot(x.segment(offset_[coords_[j].block] + coords_[j].local, normals_.rows()));
     return u;
   }
-  Eigen::VectorXd times_G(const Eigen::VectorXd& v) const {   // Gc v
+  Eigen::VectorXd times_G(const Eigen::VectorXd& v) const {   // Gc v over the active contacts
     const Eigen::Index m = m_;
     Eigen::VectorXd out(v.size());
-    for (std::size_t i = 0; i < G_.size(); ++i) out.segment(i * m, m) = G_[i] * v.segment(i * m, m);
+    for (std::size_t j = 0; j < active_.size(); ++j)
+      out.segment(Eigen::Index(j) * m, m) = G_[std::size_t(active_[j])] * v.segment(Eigen::Index(j) * m, m);
     return out;
   }
 };

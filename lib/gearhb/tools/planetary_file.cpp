@@ -113,9 +113,45 @@ Body member_name(const json& parent, const std::string& file, const std::string&
   fail_key(file, path, "must be one of sun | ring | carrier");
 }
 
+// A value per planet at parent[key]: one number for every planet (if `one_for_all`) or a
+// list of N numbers, each in [lo, hi] (key.n names a bad entry).
+std::vector<double> per_planet(const json& parent, const std::string& file, const std::string& where, const char* key,
+                               int N, bool one_for_all, double lo, double hi, const char* range_text) {
+  const std::string path = key_of(where, key);
+  const json& v = parent[key];
+  if (one_for_all && v.is_number()) return std::vector<double>(std::size_t(N), number(parent, file, where, key, lo, hi, range_text));
+  if (!v.is_array() || int(v.size()) != N)
+    fail_key(file, path, std::string(one_for_all ? "must be a number or " : "must be ") + "a list of `planets` = " +
+                             std::to_string(N) + " numbers");
+  std::vector<double> out;
+  for (int n = 0; n < N; ++n) {
+    const std::string k = path + "." + std::to_string(n);
+    const double x = json_number(v[std::size_t(n)], file, k);
+    if (!(x >= lo && x <= hi)) fail_key(file, k, std::string("must be in ") + range_text);
+    out.push_back(x);
+  }
+  return out;
+}
+
+// mesh.sun_planet_backlash, mesh.ring_planet_backlash (a back flank on each mesh of that kind),
+// mesh.back_phase.
+void read_backlash(PlanetaryFile& f, const json& m, const std::string& file) {
+  const int N = f.set.planets();
+  PlanetaryMeshes& r = f.meshes;
+  r.backlash.clear();
+  bool any = false;
+  for (const char* key : {"sun_planet_backlash", "ring_planet_backlash"}) {
+    std::vector<double> b(std::size_t(N), INFINITY);
+    if (m.contains(key)) b = per_planet(m, file, "mesh", key, N, true, 0.0, 1e-2, "[0, 0.01] m"), any = true;
+    r.backlash.insert(r.backlash.end(), b.begin(), b.end());
+  }
+  if (!any) r.backlash.clear();
+  r.back_phase = optional_number(m, file, "mesh", "back_phase", 0.0, 0.0, 1.0, "[0, 1] mesh cycles");
+}
+
 void read_meshes(PlanetaryFile& f, const json& m, const std::string& file) {
   only_keys(m, file, "mesh", {"sun_planet", "ring_planet", "sun_contact_ratio", "ring_contact_ratio", "stiffness_ratio",
-                              "ring_sun_phase"});
+                              "ring_sun_phase", "sun_planet_backlash", "ring_planet_backlash", "back_phase"});
   PlanetaryMeshes& r = f.meshes;
   r.sun.mean = f.set.sun_mesh = number(m, file, "mesh", "sun_planet", 1e3, 1e13, "[1e3, 1e13] N/m");
   r.ring.mean = f.set.ring_mesh = number(m, file, "mesh", "ring_planet", 1e3, 1e13, "[1e3, 1e13] N/m");
@@ -124,6 +160,7 @@ void read_meshes(PlanetaryFile& f, const json& m, const std::string& file) {
   r.sun.ratio = r.ring.ratio = optional_number(m, file, "mesh", "stiffness_ratio", 1.0, 1.0, 4.0, "[1, 4]");
   const double gamma_rs = optional_number(m, file, "mesh", "ring_sun_phase", 0.0, 0.0, 1.0, "[0, 1] mesh cycles");
   r.phases = mesh_phases(f.teeth, f.set.planet_angles, gamma_rs);
+  read_backlash(f, m, file);
 }
 
 void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
@@ -133,9 +170,13 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
                                   "stability_points"});
   PlanetaryResponseInput& p = f.response;
   p.present = true;
-  if (2 * f.set.planets() > kMaxContacts)
-    fail_key(file, "planets", "must be at most " + std::to_string(kMaxContacts / 2) +
-                                  " with a response (two meshes a planet; the engine's contact limit)");
+  int contacts = 2 * f.set.planets();   // the drive flanks, and a back flank where a backlash is given
+  for (double b : f.meshes.backlash) contacts += std::isfinite(b) ? 1 : 0;
+  const int per_planet_flanks = (contacts + f.set.planets() - 1) / f.set.planets();
+  if (contacts > kMaxContacts)
+    fail_key(file, "planets", "must be at most " + std::to_string(kMaxContacts / per_planet_flanks) +
+                                  " with a response and these flanks (" + std::to_string(contacts) +
+                                  " contacts; the engine's contact limit is " + std::to_string(kMaxContacts) + ")");
   p.input = member_name(r, file, "response", "input");
   p.output = member_name(r, file, "response", "output");
   if (p.output == p.input) fail_key(file, "response.output", "must differ from response.input");
@@ -191,11 +232,13 @@ PlanetaryFile read_planetary_file(const std::string& path,
   s.ring = central_member(j, path, "ring");
   s.carrier = central_member(j, path, "carrier");
   const json& p = member(j, path, "planet");
-  only_keys(p, path, "planet", {"mass", "inertia_r2", "bearing"});
+  only_keys(p, path, "planet", {"mass", "inertia_r2", "bearing", "pin_errors"});
   s.planet_mass = number(p, path, "planet", "mass", 1e-6, 1e6, "[1e-6, 1e6] kg");
   s.planet_inertia_r2 = number(p, path, "planet", "inertia_r2", 1e-6, 1e6, "[1e-6, 1e6] kg");
   s.planet_bearing = number(p, path, "planet", "bearing", 0.0, 1e13, "[0, 1e13] N/m");
   read_meshes(f, member(j, path, "mesh"), path);
+  if (p.contains("pin_errors"))
+    f.meshes.pin_errors = per_planet(p, path, "planet", "pin_errors", s.planets(), false, -1e-3, 1e-3, "[-1e-3, 1e-3] m");
   read_response(f, j, path);
   if (j.contains("campbell")) {
     const json& c = member(j, path, "campbell");
@@ -204,6 +247,15 @@ PlanetaryFile read_planetary_file(const std::string& path,
     f.campbell_points = whole(c, path, "campbell", "points", 2, 1001);
   }
   return f;
+}
+
+HarmonicBalance planetary_response_model(const PlanetaryFile& f) {
+  const PlanetaryResponseInput& r = f.response;
+  PlanetarySet s = f.set;
+  (r.output == Body::sun ? s.sun : r.output == Body::ring ? s.ring : s.carrier).torsional += r.output_shaft;
+  Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
+  f0(coordinate(r.input, 2)) = r.torque / member_radius(f.teeth, s.sun_pressure_angle, r.input);
+  return planetary_harmonic_balance(s, f.meshes, r.zeta, f0, r.harmonics);
 }
 
 std::string planetary_file_help() {
@@ -216,11 +268,15 @@ std::string planetary_file_help() {
          "  pressure_angle_deg       operating pressure angle of both meshes [deg]\n"
          "  sun/ring/carrier         mass [kg], inertia_r2 = I / r^2 [kg], bearing (radial) [N/m],\n"
          "                           torsional = k_theta / r^2 [N/m] (0: free to rotate)\n"
-         "  planet                   mass [kg], inertia_r2 [kg], bearing (radial and tangential) [N/m]\n"
+         "  planet                   mass [kg], inertia_r2 [kg], bearing (radial and tangential) [N/m],\n"
+         "                           pin_errors: optional N tangential pin position errors [m] (0)\n"
          "  mesh.sun_planet/ring_planet   mean mesh stiffness [N/m]\n"
          "  mesh.sun_contact_ratio/ring_contact_ratio   of the rectangular wave (1.6, 1.8)\n"
          "  mesh.stiffness_ratio     k_double / k_single of both meshes (1: constant)\n"
          "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0)\n"
+         "  mesh.sun_planet_backlash/ring_planet_backlash   optional: normal backlash [m] of every\n"
+         "                           mesh of that kind, or a list of N (one per planet): a back flank\n"
+         "                           on each (none without); mesh.back_phase: its wave's lag [cycles] (0)\n"
          "  response                 optional: input (sun | ring | carrier), torque [N m] > 0, output,\n"
          "                           output_shaft [N/m] added to its torsional stiffness, f_mesh_hz.from/to,\n"
          "                           zeta (0.02), harmonics (8), stability_points (24)\n"

@@ -77,6 +77,11 @@ PlanetaryFile read_planetary_file(const std::string& path,
 // sun and the ring, the planet-centre radius of the carrier.
 double member_radius(const PlanetaryTeeth& t, double pressure_angle, Body b);
 
+// The loaded set of the file's `response` as a harmonic-balance model: the output's shaft
+// added to its torsional stiffness, the input torque T / r on the input's u (r:
+// member_radius), the meshes as contacts (planetary_harmonic_balance).
+HarmonicBalance planetary_response_model(const PlanetaryFile& f);
+
 // Text for --help: every key, its unit and meaning.
 std::string planetary_file_help();
 

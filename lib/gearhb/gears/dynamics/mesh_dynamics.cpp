@@ -97,6 +97,13 @@ DteGear gear_pair_mesh(const PairSteModel& m, const std::vector<PairStePoint>& s
   return G;
 }
 
+MeshContact mesh_contact(ContactState drive, ContactState back) {
+  const bool loss = drive != ContactState::full, impact = back != ContactState::open;
+  if (loss && impact) return MeshContact::drive_loss_back_impact;
+  if (impact) return MeshContact::back_impact;
+  return loss ? MeshContact::drive_loss : MeshContact::full;
+}
+
 const char* to_string(MeshDofs d) { return d == MeshDofs::bearings ? "six_dof" : "one_dof"; }
 
 const char* to_string(MeshContact c) {
@@ -154,12 +161,6 @@ double largest_contact_force(const HarmonicBalance& hb, const ResponseEvaluator&
   return ev.contact_force_history(X, i).maxCoeff();
 }
 
-MeshContact classify(ContactState drive, ContactState back) {
-  const bool loss = drive != ContactState::full, impact = back != ContactState::open;
-  if (loss && impact) return MeshContact::drive_loss_back_impact;
-  if (impact) return MeshContact::back_impact;
-  return loss ? MeshContact::drive_loss : MeshContact::full;
-}
 
 bool near(const std::vector<double>& at, double omega, double margin) {
   for (double a : at)
@@ -210,7 +211,7 @@ MeshOrbitMeasures mesh_orbit_measures(const HarmonicBalance& hb, const Eigen::Ve
   m.dte_ptp = s.x_max - s.x_min;
   m.drive = s.contact_states.at(0);
   m.back = s.contact_states.size() > 1 ? s.contact_states[1] : ContactState::open;
-  m.contact = classify(m.drive, m.back);
+  m.contact = mesh_contact(m.drive, m.back);
   // N = F_drive - F_back: the flanks never load together (b_n + g_b >= 0), so N is largest
   // where the drive flank is, and smallest where the back flank is (or where the drive force is
   // least if the back flank never touches).

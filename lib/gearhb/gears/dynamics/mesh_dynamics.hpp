@@ -143,6 +143,9 @@ std::vector<double> closed_contact_frequencies(const DteGear& g, MeshDofs dofs, 
 
 enum class MeshContact { full, drive_loss, back_impact, drive_loss_back_impact };
 const char* to_string(MeshContact c);   // full | drive_loss | back_impact | drive_loss+back_impact
+// The class of a mesh from the states of its flanks: drive_loss where the drive flank is not
+// in full contact, back_impact where the back flank is not open, both, or full.
+MeshContact mesh_contact(ContactState drive, ContactState back);
 
 struct MeshOrbitMeasures {
   double dte_rms = 0.0, dte_ptp = 0.0;         // [m]

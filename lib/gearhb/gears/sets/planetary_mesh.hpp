@@ -1,9 +1,9 @@
 #pragma once
 // The meshes of a planetary set over time (gears/sets/planetary.hpp): each sun-planet and
 // ring-planet mesh a unilateral contact along its line of action (contact.hpp; normal =
-// sun_mesh_direction / ring_mesh_direction, no gap: the drive flank, loaded by the input
-// torque; the back flank is not modelled), its stiffness a rectangular wave over the mesh
-// cycle shifted by its mesh phase (Parker & Lin 2004, "Mesh phasing relationships in
+// sun_mesh_direction / ring_mesh_direction: the drive flank, loaded by the input torque),
+// with a back flank at the mesh's backlash where one is given, its stiffness a rectangular
+// wave over the mesh cycle shifted by its mesh phase (Parker & Lin 2004, "Mesh phasing relationships in
 // planetary and epicyclic gears", J. Mech. Des. 126:365), the whole set as one
 // HarmonicBalance at the mesh frequency (theta = mesh phase of sun-planet mesh 1).
 #include <vector>
@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "gearhb/gears/sets/planetary.hpp"
+#include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 
 namespace gearhb {
@@ -38,15 +39,57 @@ struct MeshPhases {
 };
 MeshPhases mesh_phases(const PlanetaryTeeth& t, const std::vector<double>& planet_angles, double ring_sun_phase);
 
+// The meshes of the set. Mesh i = 0..2N-1: sun-planet meshes 1..N, then ring-planet meshes
+// 1..N (the order of every per-mesh list and table).
 struct PlanetaryMeshes {
   RectangularMesh sun, ring;
   MeshPhases phases;
+  // Normal backlash b of each mesh along its line of action [m], 2N entries in mesh order;
+  // infinite: no back flank (empty: none anywhere, the drive flanks only).
+  std::vector<double> backlash;
+  // The back flank's stiffness is the drive flank's wave lagging by back_phase mesh cycles
+  // (it depends on the tooth thicknesses, as gamma_rs; an input).
+  double back_phase = 0.0;
+  // Tangential position error e_n of planet n's pin on the carrier [m] (N entries, or empty:
+  // none): the planet's centre sits displaced by e_n along eta_n, which opens both of its
+  // meshes by e_n cos(alpha) (the eta_n terms of delta_sn and delta_rn): a constant gap
+  // -e_n cos(alpha) in each.
+  std::vector<double> pin_errors;
 };
 
-// The contacts: sun-planet meshes 1..N, then ring-planet meshes 1..N; contact i's stiffness
+// The contacts: the drive flanks of meshes 0..2N-1 (contact i = mesh i), then the back
+// flank of every mesh with a finite backlash, in mesh order. Drive flank of mesh i:
+// normal d_i (its deflection direction), gap g_i = -e_n cos(alpha) (pin error), stiffness
 // k_mean s(theta - 2 pi gamma_i), s the first H harmonics of the rectangular wave / k_mean
-// (the harmonic-balance basis resolves no more).
+// (the harmonic-balance basis resolves no more). Back flank: normal -d_i, gap -b_i - g_i
+// (it touches where the deflection d_i'q + g_i < -b_i), stiffness k_mean s(theta - 2 pi
+// (gamma_i + back_phase)). Throws std::invalid_argument on more than kMaxContacts contacts.
 std::vector<UnilateralContact> planetary_mesh_contacts(const PlanetarySet& s, const PlanetaryMeshes& m, int H);
+
+// The contact index of each mesh's back flank (2N entries, -1: none), as planetary_mesh_contacts orders them.
+std::vector<int> back_flank_contacts(const PlanetaryMeshes& m, int planets);
+
+// What a mesh does over one period of an orbit X of the set's harmonic balance:
+struct PlanetaryMeshOrbit {
+  double force_max = 0.0;        // largest drive-flank force [N]
+  double dynamic_factor = 0.0;   // K_v = max |N| / F0, N = drive force - back force over the period
+  ContactState drive = ContactState::full, back = ContactState::open;
+};
+// Mesh i's orbit; F0 its static force. Sampled on 32 (2H + 1) phases (the stiffness varies);
+// the flank states from the exact crossings (contact.hpp contact_state).
+PlanetaryMeshOrbit planetary_mesh_orbit(const HarmonicBalance& hb, const std::vector<int>& back, const Eigen::VectorXd& X,
+                                        int mesh, double F0);
+
+// The static force of each mesh (2N, mesh order): the drive flanks closed at their mean
+// stiffnesses, the back flanks open (the static part of that linear solution), averaged over
+// the planets per mesh kind (sun, ring): the nominal share of the load, which the pin errors
+// redistribute but do not change (the torque on the input is the sum of its meshes').
+std::vector<double> planetary_static_mesh_forces(const HarmonicBalance& hb, int planets);
+
+// The planet load-sharing factor of each planet n over a period: L_n = N F_n / sum_m F_m,
+// F_n the largest drive-flank force of its sun-planet mesh (meshes[n].force_max). 1 for every
+// planet where the load is shared equally.
+std::vector<double> planet_load_sharing(const std::vector<PlanetaryMeshOrbit>& meshes, int planets);
 
 // Modal damping of the mean system (every mesh closed at k_mean): C = M Phi diag(2 zeta
 // omega) Phi' M.
