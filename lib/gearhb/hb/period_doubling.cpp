@@ -93,11 +93,12 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   Eigen::VectorXd& phi = sp.phi_floquet;
   for (const auto& ct : hb.contacts())
     if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
-  if (!bf.located) throw Failed("the PD was not located (a corrector failed on its chord)");
+  if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
   const auto& P = c.branch.points;
-  const BranchPoint &a = P[std::size_t(bf.after_point)], &b = P[std::size_t(bf.after_point) + 1];
-  const double t = std::clamp((bf.omega - a.omega) / (b.omega - a.omega), 0.0, 1.0);
-  at = point_on_chord(hb, a, b, c.scaling, t, opt.continuation.tolerance);
+  // the located point itself (a point re-derived from omega on the chord misses it where the
+  // branch turns within the chord: beside a fold)
+  at.X = bf.X;
+  at.omega = bf.omega;
   const double xs = c.scaling.x[0], w = at.omega;
   const FloquetResult fr = floquet_of_hb_orbit(hb, at.X, w, xs, opt.floquet);
   if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
