@@ -301,11 +301,13 @@ void GearPairChapter::frequency_responses(Run& run) const {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.mesh, cs.load, sol_.H);
     const double w_end = run.quick() ? cs.quick_omega_max : sol_.omega_max;
-    const FrequencyCurve c = timed_sweep(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label);
+    const SweptCurve s =
+        timed_sweep_with_branches(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
     const GearPairParameters g = gear(cs.mesh);
     const VectorXd T2 = gear_pair_T2(g);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, T2, table_progress(run, c, cs.label)));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, s.doubled, T2, table_progress(run, c, cs.label)));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
     const ContactHistory h = contact_history(hb, c.branch, T2);
     const VectorXd F0 = gear_pair_static_torque(g, cs.load.Fi);
     const MatrixXd K = gear_pair_support_stiffness(g);
@@ -420,10 +422,12 @@ void GearPairChapter::harmonic_convergence(Run& run) const {
 // --case own: one curve with the user's static torque and forcing (kc).
 void GearPairChapter::own_case(Run& run) const {
   const HarmonicBalance hb = model(Mesh::kc, own_, sol_.H);
-  const FrequencyCurve c = timed_sweep(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own");
+  const SweptCurve s =
+      timed_sweep_with_branches(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
   const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
-  run.write("frc.csv", frequency_response_table(hb, c, T2, table_progress(run, c, "own")));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  run.write("frc.csv", frequency_response_table(hb, c, s.doubled, T2, table_progress(run, c, "own")));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   const ContactHistory h = contact_history(hb, c.branch, T2);
   run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");   // 0: natural continuation stopped at a fold
   run.key_numbers().add("points", double(c.branch.points.size()), "-");
