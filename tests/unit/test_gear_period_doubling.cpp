@@ -183,9 +183,10 @@ TEST(GearPeriodDoubling, EverySmoothPeriodDoublingSwitchesFromACriticalMultiplie
   // Every located smooth PD of the period-1 curve and of the period-2 branches (depth 2) starts
   // a branch with points, and the point the switch starts from has a Floquet multiplier at -1:
   // the multipliers of the shooting-corrected orbit there (floquet_of_hb_orbit, the definition
-  // of the PD, not the location's own bookkeeping). Several PDs of the period-2 branches lie
-  // within a step of its folds (1 to 3 rad/s at 6138 and 8068 rad/s): a PD point re-derived
-  // from its omega on the chord missed them (multipliers -0.935, -0.35 + 0.43 i there).
+  // of the PD, not the location's own bookkeeping). A PD point re-derived from its omega on the
+  // chord (linear in omega) missed the located one where the branch turns within the chord: in
+  // this range the period-2 branch's PDs at 6138 and 8068 rad/s (nearest multiplier -0.938 at
+  // the re-derived point of the first: the switch failed there).
   const auto& e = light();
   const std::vector<PeriodDoubledBranch>& all = light_cascade();
   int switches = 0;
