@@ -90,7 +90,9 @@ CHAPTERS = [
         ("fig40_*.png", "Fig. 40", "Fi = 1e5 (static) with harmonic forcing, kc = 5e8 N/m: Delta_max and Delta_min (top), "
          "oscillating amplitude (bottom), a zoom on the folds (middle). Notice the mesh opens at 7638 rad/s, the fold "
          "pairs and bifurcations at 7-12 krad/s (zoom), and the deep Delta_min dip at 22.2 krad/s on no natural-frequency "
-         "line: the bilinear mode of the mesh (closed-mesh mode 5 while in contact, free gears while apart; README)."),
+         "line: the bilinear mode of the mesh (closed-mesh mode 5 while in contact, free gears while apart; README). "
+         "Grey bands: no stable period-1 orbit; in them the period-2 branches switched at the period doublings, a "
+         "colour each (console: where each ends, and the switches that fail)."),
         ("fig41_*.png", "Fig. 41", "Fi = 1e7. Notice full contact everywhere except two narrow windows: 13.53-13.87 krad/s "
          "(four folds, near the closed-mesh mode 13.69 krad/s; middle panel: zoom) and near 47 krad/s. The thesis says it stays in full "
          "contact (chapter README)."),
@@ -98,7 +100,9 @@ CHAPTERS = [
          "open linear response."),
         ("fig43_*.png", "Fig. 43", "Fi = -1e6. Notice the first touch at 10716 rad/s, then a hardening band up to the fold "
          "at 21718 rad/s (towards the mesh's bilinear mode, 22.18 krad/s: README) with period doublings and "
-         "Neimark-Sacker points on it."),
+         "Neimark-Sacker points on it. The period-2 branches from the period doublings at 10716 and 12664 rad/s "
+         "rejoin the period-1 branch near 10976 and 13925 rad/s; between the Neimark-Sacker points at 16.0 and "
+         "17.0 krad/s (grey) no period-2 branch starts: there a complex pair of multipliers lies outside the circle."),
         ("fig44_*.png", "Fig. 44", "Fi = 1e7 with 100x the harmonic forcing. Notice it is Fig. 40 multiplied by 100 "
          "(the contact law with zero gap is positively homogeneous; only Fi/Fa matters): the same folds (zoom) and "
          "the same bilinear-mode dip at 22.2 krad/s, now -388 mm."),

@@ -7,14 +7,18 @@ Upper panel: Delta_max and Delta_min over a period with the contact level Delta 
 more folds crowd together, a middle panel zooms on them. Lower panel: the oscillating
 amplitude (Delta_max - Delta_min)/2 beside the linear open / closed-mesh amplitudes.
 Dotted verticals: linear natural frequencies; the rug at the bottom: the contact state
-(figures/style.py). The deepest Delta_min off every natural frequency is pointed at as the
+(figures/style.py). Grey bands: the ranges with no stable period-1 orbit (key numbers
+unstable_period1_*_<label>); the period-2 (and period-4) branches switched at the curve's period
+doublings in their own colours (rows of branch id > 0 in frc_<label>.csv). The deepest Delta_min off every natural frequency is pointed at as the
 mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
+import json
 import math
 
 from style import (read_params, BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
-                   NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, plot_branch, read_csv,
-                   rug_room, save)
+                   NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, plot_branch,
+                   plot_doubled_branches, read_csv, rows_of, rug_room, save, shade_no_stable_period1,
+                   unstable_period1_ranges)
 
 import matplotlib.pyplot as plt
 
@@ -27,14 +31,16 @@ def modes(data_dir, mesh):
     return sorted(set(round(d["omega_open"][i], 3) for i in idx)), sorted(set(round(d["omega_closed"][i], 3) for i in idx))
 
 
-def mark_bifurcations(ax, data_dir, label, d):
-    """Period doublings, Neimark-Sacker points and branch points on the Delta_max curve."""
+def mark_bifurcations(ax, data_dir, label, full):
+    """Period doublings, Neimark-Sacker points and branch points on the Delta_max curve of the
+    branch each lies on (period 1, or a period-2 branch)."""
     b = read_csv(data_dir / ("bifurcations_%s.csv" % label))
     used = []
-    for t, w, located, smooth in zip(b["type"], b["omega"], b["located"], b["smooth"]):
+    for k, (t, w, located, smooth) in enumerate(zip(b["type"], b["omega"], b["located"], b["smooth"])):
         if t == "fold" or not (located and smooth):
             continue   # folds show as turning points; jumps and unlocated changes are only in the csv
         # the Delta_max value at the nearest point of the branch
+        d = rows_of(full, int(b["branch"][k]) if "branch" in b else 0)
         i = min(range(len(d["omega"])), key=lambda j: abs(d["omega"][j] - w))
         y = column(d, "x_max")[i]
         y = d["x_max"][i] if math.isnan(y) else y   # no exact value there: the HB one
@@ -49,7 +55,8 @@ def fold_window(data_dir, label, span):
     of its width each side, in krad/s; None unless the cluster is a crowd (3 folds or more): a
     lone fold reads well at full scale."""
     b = read_csv(data_dir / ("bifurcations_%s.csv" % label))
-    folds = sorted(w for t, w in zip(b["type"], b["omega"]) if t == "fold")
+    on = b.get("branch", [0] * len(b["type"]))
+    folds = sorted(w for t, w, k in zip(b["type"], b["omega"], on) if t == "fold" and int(k) == 0)
     if not folds:
         return None
     cluster = [folds[0]]
@@ -64,11 +71,14 @@ def fold_window(data_dir, label, span):
     return (lo - pad) / 1e3, (hi + pad) / 1e3
 
 
-def delta_panel(ax, data_dir, label, d, w_open, w_closed):
-    """Delta_max, Delta_min, the contact level, the contact rug and the bifurcations."""
+def delta_panel(ax, data_dir, label, full, w_open, w_closed):
+    """Delta_max, Delta_min, the period-doubled branches, the contact level, the contact rug
+    (period 1) and the bifurcations."""
+    d = rows_of(full, 0)
     plot_branch(ax, d, "x_max", "C0", r"$\Delta_{max}$", x="w_k", scale=1e3)
     plot_branch(ax, d, "x_min", "C1", r"$\Delta_{min}$", x="w_k", scale=1e3)
-    kinds = mark_bifurcations(ax, data_dir, label, d)
+    plot_doubled_branches(ax, full, x="w_k", scale=1e3, entry_per_branch=False)
+    kinds = mark_bifurcations(ax, data_dir, label, full)
     ax.axhline(0.0, **CONTACT_LEVEL)
     natural_lines(ax, w_open, w_closed)
     ax.set_ylabel(r"mesh deflection $\Delta$ [mm]")
@@ -109,20 +119,21 @@ def separation_note(d, params):
 
 def case_figure(data_dir, fig_dir, row, name):
     label, mesh = row["label"], row["mesh"]
-    d = read_csv(data_dir / ("frc_%s.csv" % label))
+    full = read_csv(data_dir / ("frc_%s.csv" % label))
     lin = read_csv(data_dir / ("linear_%s.csv" % mesh))
     w_open, w_closed = modes(data_dir, mesh)
-    d["w_k"] = [w / 1e3 for w in d["omega"]]
-    d["amp"] = [(a - b) / 2 for a, b in zip(d["x_max"], d["x_min"])]
-    if "x_max_exact" in d:
-        d["amp_exact"] = [(a - b) / 2 for a, b in zip(d["x_max_exact"], d["x_min_exact"])]
+    full["w_k"] = [w / 1e3 for w in full["omega"]]
+    full["amp"] = [(a - b) / 2 for a, b in zip(full["x_max"], full["x_min"])]
+    if "x_max_exact" in full:
+        full["amp_exact"] = [(a - b) / 2 for a, b in zip(full["x_max_exact"], full["x_min_exact"])]
+    d = rows_of(full, 0)
     p_span = max(d["omega"]) - min(d["omega"])
     zoom = fold_window(data_dir, label, p_span)
     rows = 3 if zoom else 2
-    fig_, axes = plt.subplots(rows, 1, figsize=(7.6, 10.4 if zoom else 7.6),
+    fig_, axes = plt.subplots(rows, 1, figsize=(7.6, 11.6 if zoom else 8.8),
                               gridspec_kw={"height_ratios": [1.2, 1.0, 0.9][:rows]})
     a1, a2 = axes[0], axes[-1]
-    kinds = delta_panel(a1, data_dir, label, d, w_open, w_closed)
+    kinds = delta_panel(a1, data_dir, label, full, w_open, w_closed)
     a1.set_xlim(min(d["w_k"]), max(d["w_k"]))
     rug_room(a1)
     a1.annotate(r"contact level $\Delta$ = 0 (teeth touch above)", (0.99, 0.0), xycoords=("axes fraction", "data"),
@@ -135,7 +146,7 @@ def case_figure(data_dir, fig_dir, row, name):
                  % (what, row["Fi"], row["Fa"], row["kc"], separation_note(d, read_params(data_dir))), fontsize=9)
     if zoom:
         az = axes[1]
-        delta_panel(az, data_dir, label, d, w_open, w_closed)
+        delta_panel(az, data_dir, label, full, w_open, w_closed)
         inside = [k for k, w in enumerate(d["w_k"]) if zoom[0] <= w <= zoom[1]]
         ys = [d[y][k] * 1e3 for k in inside for y in ("x_max", "x_min")] + [0.0]
         pad = 0.08 * (max(ys) - min(ys))
@@ -143,8 +154,9 @@ def case_figure(data_dir, fig_dir, row, name):
         az.set_ylim(min(ys) - pad, max(ys) + pad)
         rug_room(az)
         az.set_title("zoom on the folds: %.2f-%.2f krad/s" % zoom, fontsize=9)
-        a1.axvspan(*zoom, color="0.5", alpha=0.12, lw=0)
-    plot_branch(a2, d, "amp", "C2", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
+        a1.axvspan(*zoom, fill=False, ec="0.3", ls=":", lw=0.9)   # framed: grey fill marks no stable period 1
+    plot_branch(a2, d, "amp", "0.15", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
+    plot_doubled_branches(a2, full, ys=("amp",), x="w_k", scale=1e3, entry_per_branch=False)
     s = row["Fa"] / 1e4   # linear_*.csv is for Fa = 1e4
     a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
                 label="linear, mesh open")
@@ -161,9 +173,12 @@ def case_figure(data_dir, fig_dir, row, name):
     h2, _ = a2.get_legend_handles_labels()
     seen = set()
     handles = [h for h in h1 + h2 if not (h.get_label() in seen or seen.add(h.get_label()))]   # one entry per label
-    fig_.legend(handles=handles + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=3,
+    with open(data_dir / "key_numbers.json") as f:
+        ranges = unstable_period1_ranges(json.load(f), "_" + label)
+    handles += shade_no_stable_period1(axes, ranges, scale=1e-3, unit="krad/s")
+    fig_.legend(handles=handles + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=2,
                 loc="lower center", framealpha=0.9)
-    fig_.tight_layout(rect=(0, 0.09, 1, 1))
+    fig_.tight_layout(rect=(0, 0.12 if zoom else 0.17, 1, 1))
     fig_.savefig(fig_dir / name)
     plt.close(fig_)
     return str(fig_dir / name)

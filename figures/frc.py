@@ -20,7 +20,8 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
-                   legend_styles, plot_branch, read_csv, rows_of, rug_room, save)
+                   legend_styles, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
+                   shade_no_stable_period1, unstable_period1_ranges)
 from poincare import draw_hb_section, draw_poincare  # noqa: E402
 
 
@@ -79,14 +80,6 @@ def diagram_figure(d_dir, model, p, h):
     save_whole(fig, d_dir / "bifurcation_diagram.png")
 
 
-def rows_of(d, branch):
-    """The rows of branch id `branch` (all rows of a table without the column)."""
-    if "branch" not in d:
-        return d if branch == 0 else {k: [] for k in d}
-    keep = [i for i, b in enumerate(d["branch"]) if int(b) == branch]
-    return {k: [v[i] for i in keep] for k, v in d.items()}
-
-
 def torus_panel(ax, t, b):
     """Rotation omega2 / omega of each torus branch; the NS points' Floquet angle / 2 pi."""
     for bid in sorted({int(x) for x in t["branch"]}):
@@ -105,23 +98,11 @@ def torus_panel(ax, t, b):
     ax.legend(fontsize=7, frameon=False, loc="upper center", bbox_to_anchor=(0.5, -0.16))
 
 
-PERIOD2_COLOURS = ["C2", "C4", "C5", "C6", "C8", "C9", "C1"]   # not red: the diagram draws chaos red
 def no_stable_period1(d_dir, axes):
     """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*)
     on every panel; its legend entry (none without such ranges)."""
-    from matplotlib.patches import Patch
     kn_file = d_dir / "key_numbers.json"
-    kn = json.load(open(kn_file)) if kn_file.exists() else {}
-    n = int(kn.get("unstable_period1_ranges", {"value": 0})["value"])
-    ranges = [(kn["unstable_period1_from_omega_%d" % k]["value"], kn["unstable_period1_to_omega_%d" % k]["value"])
-              for k in range(1, n + 1)]
-    for ax in axes:
-        for a, b in ranges:
-            ax.axvspan(a, b, color="0.5", alpha=0.12, lw=0, zorder=0)
-    if not ranges:
-        return []
-    return [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s rad/s)"
-                  % ", ".join("%.4g-%.4g" % r for r in ranges))]
+    return shade_no_stable_period1(axes, unstable_period1_ranges(json.load(open(kn_file)) if kn_file.exists() else {}))
 
 
 def main():
@@ -151,12 +132,7 @@ def main():
             grid[1][k].axis("off")
     plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, d, "x_min", "C0")
-    for n, bid in enumerate(ids):
-        d2 = rows_of(full, bid)
-        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
-        period = int(d2["period"][0]) if "period" in d2 else 2
-        plot_branch(ax, d2, "x_max", colour, "period %d (branch %d): max, min over %d periods" % (period, bid, period))
-        plot_branch(ax, d2, "x_min", colour)
+    plot_doubled_branches(ax, full)
     if ids:   # x_min over the period-2 branches' range (where the two periods differ most)
         w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]
         lo2, hi2 = min(w2), max(w2)

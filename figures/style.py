@@ -203,7 +203,48 @@ def branch_ids(d):
     return sorted({int(b) for b in d.get("branch", [])} - {0})
 
 
-PERIOD2_COLOURS = ["C2", "C4", "C9", "C8", "C6", "C5", "C1"]   # not red: the diagram draws chaos red
+PERIOD2_COLOURS = ["C2", "C4", "C9", "C8", "C6", "C5"]   # not red (the diagram draws chaos red), not C0 or C1 (period 1)
+
+
+def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True):
+    """The period-2 (and period-4) branches of a frequency-response table (its rows with branch
+    id > 0), each in its own colour (PERIOD2_COLOURS, repeated beyond seven), solid where stable
+    and dashed where not; one legend entry per branch, or (entry_per_branch False) one per period."""
+    named = set()
+    for n, bid in enumerate(branch_ids(full)):
+        d2 = rows_of(full, bid)
+        period = int(d2["period"][0]) if "period" in d2 else 2
+        label = "period %d (branch %d): max, min over %d periods" % (period, bid, period)
+        if not entry_per_branch:
+            label = None if period in named else "period-%d branches (a colour each): max, min over %d periods" % (
+                period, period)
+            named.add(period)
+        for k, y in enumerate(ys):
+            plot_branch(ax, d2, y, PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], x=x, scale=scale,
+                        label=None if k else label)
+
+
+def unstable_period1_ranges(kn, suffix=""):
+    """The frequency ranges [(from, to)] with no stable period-1 orbit, from the key numbers
+    (key_numbers.json as read) unstable_period1_ranges<suffix>, unstable_period1_from_omega<suffix>_k
+    and unstable_period1_to_omega<suffix>_k; none where the run did not write them."""
+    n = int(kn.get("unstable_period1_ranges" + suffix, {"value": 0})["value"])
+    return [(kn["unstable_period1_from_omega%s_%d" % (suffix, k)]["value"],
+             kn["unstable_period1_to_omega%s_%d" % (suffix, k)]["value"]) for k in range(1, n + 1)]
+
+
+def shade_no_stable_period1(axes, ranges, scale=1.0, unit="rad/s"):
+    """Shade the ranges (unstable_period1_ranges) on every panel (x scaled by `scale`); their
+    legend entry, naming them in `unit` (none without ranges)."""
+    from matplotlib.patches import Patch
+    for ax in axes:
+        for a, b in ranges:
+            ax.axvspan(a * scale, b * scale, color="0.5", alpha=0.12, lw=0, zorder=0)
+    if not ranges:
+        return []
+    where = ", ".join("%.4g-%.4g" % (a * scale, b * scale) for a, b in ranges) if len(ranges) <= 3 else \
+        "%d ranges, from %.4g to %.4g" % (len(ranges), ranges[0][0] * scale, ranges[-1][1] * scale)
+    return [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s %s)" % (where, unit))]
 
 
 def torque_colour(T, torques=THESIS_TORQUES):

@@ -41,6 +41,7 @@
 #include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
@@ -152,6 +153,8 @@ class GearPairChapter {
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
+                            const VectorXd& d, double half) const;
   void harmonic_convergence(Run& run) const;
   void own_case(Run& run) const;
 };
@@ -301,11 +304,13 @@ void GearPairChapter::frequency_responses(Run& run) const {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.mesh, cs.load, sol_.H);
     const double w_end = run.quick() ? cs.quick_omega_max : sol_.omega_max;
-    const FrequencyCurve c = timed_sweep(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label);
+    const SweptCurve s =
+        timed_sweep_with_branches(run, hb, sweep(cs.mesh, sol_.omega_min, w_end), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
     const GearPairParameters g = gear(cs.mesh);
     const VectorXd T2 = gear_pair_T2(g);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, T2, table_progress(run, c, cs.label)));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, s.doubled, T2, table_progress(run, c, cs.label)));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
     const ContactHistory h = contact_history(hb, c.branch, T2);
     const VectorXd F0 = gear_pair_static_torque(g, cs.load.Fi);
     const MatrixXd K = gear_pair_support_stiffness(g);
@@ -401,6 +406,50 @@ void GearPairChapter::period_doubled_orbit(Run& run, const HarmonicBalance& hb, 
   run.say("beyond the period doubling at " + std::to_string(pd->omega) + " rad/s: time integration at " +
           std::to_string(P[k].omega) + " rad/s repeats after 2 periods to " + std::to_string(after_two) +
           ", after 1 period only to " + std::to_string(after_one));
+  period2_branch_check(run, hb, c, std::size_t(pd - B.begin()), P[k].omega, d, half);
+}
+
+// Step 4c (issue 34 §1): the period-2 branch by harmonic balance switched at that period
+// doubling, solved at the same omega, against the time-integrated orbit `d` (4 periods, 256
+// samples each): the largest |Delta_HB - Delta_ti| over two periods / half amplitude, the HB
+// orbit taken at whichever of its two phases (t, t + T) fits. Its bound: the HB orbit's own
+// distance to the exact orbit on the flow (hb_orbit_error of the shooting over two periods: the
+// largest over the DOFs), as Delta = T2' q, times sum |T2_i|, / half amplitude, since the time
+// integration follows the exact flow (to its tolerance, 1e-10 of the amplitude).
+void GearPairChapter::period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd,
+                                           double omega, const VectorXd& d, double half) const {
+  SweepOptions o = sweep(Mesh::kc, checks_.check_omega_min, checks_.check_omega_max);
+  FrequencyCurve one = c;   // the curve with only that period doubling to switch at
+  one.bifurcations = {c.bifurcations[pd]};
+  const std::vector<PeriodDoubledBranch> br = run.timed("period-2 branch check", [&] { return period_doubled_branches(hb, one, o); });
+  if (br.empty() || !has_points(br[0])) throw std::runtime_error("the check curve's period-2 switch failed: " + br.at(0).why);
+  const HarmonicBalance& hb2 = *br[0].model;
+  const auto& Q = br[0].curve.branch.points;
+  std::size_t near = 0;
+  for (std::size_t i = 0; i < Q.size(); ++i)
+    if (std::fabs(2.0 * Q[i].omega - omega) < std::fabs(2.0 * Q[near].omega - omega)) near = i;
+  VectorXd X = Q[near].X;
+  Scaling s = br[0].curve.scaling;
+  if (!newton_solve(hb2, X, omega / 2.0, s, {corrector_.tolerance, 30}).converged)
+    throw std::runtime_error("the period-2 orbit did not converge at omega = " + std::to_string(omega));
+  const int N = 256;
+  const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
+  const VectorXd h = ResponseEvaluator(hb2, T2, 2 * N).history(X);
+  double worst = INFINITY;
+  for (int shift : {0, N}) {
+    double w = 0.0;
+    for (int j = 0; j < 2 * N; ++j) w = std::max(w, std::fabs(h[(j + shift) % (2 * N)] - d[j]) / half);
+    worst = std::min(worst, w);
+  }
+  const double bound =
+      T2.cwiseAbs().sum() * floquet_of_hb_orbit(hb2, X, omega / 2.0, s.x[0], o.floquet).orbit_error / half + 1e-9;
+  KeyNumbers& key = run.key_numbers();
+  key.add("period2_hb_vs_time_integration_fig43", worst, "-");
+  key.add("period2_hb_orbit_error_fig43", bound, "-");
+  key.add("period2_hb_within_orbit_error_fig43", worst <= bound ? 1.0 : 0.0, "-");
+  run.say("the period-2 branch by harmonic balance (H = " + std::to_string(hb2.harmonics()) + " on omega/2) at " +
+          std::to_string(omega) + " rad/s: largest difference to the time integration " + std::to_string(worst) +
+          " of the half amplitude (bound by its own orbit error " + std::to_string(bound) + ")");
 }
 
 // Step 5: convergence in H of the peak Delta_max / Delta_min of Fig. 43 over 10-20 krad/s.
@@ -420,10 +469,12 @@ void GearPairChapter::harmonic_convergence(Run& run) const {
 // --case own: one curve with the user's static torque and forcing (kc).
 void GearPairChapter::own_case(Run& run) const {
   const HarmonicBalance hb = model(Mesh::kc, own_, sol_.H);
-  const FrequencyCurve c = timed_sweep(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own");
+  const SweptCurve s =
+      timed_sweep_with_branches(run, hb, sweep(Mesh::kc, sol_.omega_min, sol_.omega_max), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
   const VectorXd T2 = gear_pair_T2(gear(Mesh::kc));
-  run.write("frc.csv", frequency_response_table(hb, c, T2, table_progress(run, c, "own")));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  run.write("frc.csv", frequency_response_table(hb, c, s.doubled, T2, table_progress(run, c, "own")));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   const ContactHistory h = contact_history(hb, c.branch, T2);
   run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");   // 0: natural continuation stopped at a fold
   run.key_numbers().add("points", double(c.branch.points.size()), "-");

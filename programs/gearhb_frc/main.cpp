@@ -206,13 +206,7 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
   key.add("folds", double(c.branch.folds.size()), "-");
   key.add("x_max_peak", peak, "m");
   // The ranges with no stable period-1 orbit (issue 34 §4; frc.png shades them).
-  const Intervals gaps = uncovered(std::min(model_.omega_from, model_.omega_to),
-                                   std::max(model_.omega_from, model_.omega_to), stable_intervals(c));
-  key.add("unstable_period1_ranges", double(gaps.size()), "-");
-  for (std::size_t k = 0; k < gaps.size(); ++k) {
-    key.add("unstable_period1_from_omega_" + std::to_string(k + 1), gaps[k].first, "rad/s");
-    key.add("unstable_period1_to_omega_" + std::to_string(k + 1), gaps[k].second, "rad/s");
-  }
+  add_unstable_period1_ranges(key, c, std::min(model_.omega_from, model_.omega_to), std::max(model_.omega_from, model_.omega_to));
   // The response at either end of the range (omega.from, omega.to): the first point and
   // the last, as a time integration from rest would see it where they are stable.
   const auto& P = c.branch.points;

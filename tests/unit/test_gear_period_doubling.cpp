@@ -10,6 +10,7 @@
 //    kc max |x_a - x_b| for the piecewise-linear flank law);
 //  - stable_intervals / uncovered (the ranges with no stable period-1 orbit) against the
 //    stability flags of the points themselves.
+#include <algorithm>
 #include <cmath>
 
 #include <gtest/gtest.h>
@@ -46,6 +47,11 @@ struct LightLoad {
 const LightLoad& light() {
   static const LightLoad e;
   return e;
+}
+// Its branches to depth 2 (period 2 and 4), computed once for the tests that use them.
+const std::vector<PeriodDoubledBranch>& light_cascade() {
+  static const std::vector<PeriodDoubledBranch> all = period_doubling_cascade(light().hb, light().c, light().o, 2);
+  return all;
 }
 
 // GSL rk8pd on the ORIGINAL model at the mesh frequency from point i's HB state of branch b
@@ -150,7 +156,7 @@ TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration
   // stable orbits against GSL rk8pd on the original model: back at the shooting-corrected
   // period-4 state every four mesh periods, not every two.
   const auto& e = light();
-  const std::vector<PeriodDoubledBranch> all = period_doubling_cascade(e.hb, e.c, e.o, 2);
+  const std::vector<PeriodDoubledBranch>& all = light_cascade();
   const TimeIntegrator ti(e.hb);
   TimeIntegrationOptions to;
   to.x_scale = e.c.scaling.x[0];
@@ -171,4 +177,36 @@ TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration
   }
   EXPECT_GE(period4, 1);
   EXPECT_GE(compared, 1);
+}
+
+TEST(GearPeriodDoubling, EverySmoothPeriodDoublingSwitchesFromACriticalMultiplier) {
+  // Every located smooth PD of the period-1 curve and of the period-2 branches (depth 2) starts
+  // a branch with points, and the point the switch starts from has a Floquet multiplier at -1:
+  // the multipliers of the shooting-corrected orbit there (floquet_of_hb_orbit, the definition
+  // of the PD, not the location's own bookkeeping). A PD point re-derived from its omega on the
+  // chord (linear in omega) missed the located one where the branch turns within the chord: in
+  // this range the period-2 branch's PDs at 6138 and 8068 rad/s (nearest multiplier -0.938 at
+  // the re-derived point of the first: the switch failed there).
+  const auto& e = light();
+  const std::vector<PeriodDoubledBranch>& all = light_cascade();
+  int switches = 0;
+  for (const auto& b : all) {
+    const FrequencyCurve& parent = b.parent < 0 ? e.c : all[std::size_t(b.parent)].curve;
+    const HarmonicBalance& model = b.parent < 0 ? e.hb : *all[std::size_t(b.parent)].model;
+    const Bifurcation& bf = parent.bifurcations.at(b.from);
+    ASSERT_EQ(bf.type, BifurcationType::period_doubling);
+    if (!bf.smooth) continue;
+    ++switches;
+    EXPECT_NE(b.end, PeriodDoubledBranch::End::failed) << b.why;
+    EXPECT_TRUE(has_points(b)) << b.why;
+    SweepOptions o = e.o;
+    o.omega_min /= b.period / 2, o.omega_max /= b.period / 2;
+    const SwitchPoint sp = critical_direction(model, parent, bf, o, {}, *subharmonic_model(model, 2));
+    const FloquetResult fr = floquet_of_hb_orbit(model, sp.at.X, sp.at.omega, e.c.scaling.x[0], o.floquet);
+    ASSERT_TRUE(fr.corrected) << b.why;
+    double nearest = INFINITY;
+    for (Eigen::Index k = 0; k < fr.multipliers.size(); ++k) nearest = std::min(nearest, std::abs(fr.multipliers[k] + 1.0));
+    EXPECT_LT(nearest, 1e-4) << b.why;
+  }
+  EXPECT_GE(switches, 5);
 }

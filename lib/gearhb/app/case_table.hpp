@@ -14,6 +14,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
 
@@ -57,6 +58,43 @@ inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, SweepOpti
   FrequencyCurve c = run.timed("sweep " + label, [&] { return require_complete(sweep_frequency(hb, o, label), label); });
   run.say(label + ": " + c.branch.summary());
   return c;
+}
+
+// The ranges of [omega_min, omega_max] with no stable period-1 orbit on c (issue 34 §4; the
+// figures shade them): key numbers unstable_period1_ranges<suffix> and, for each range k,
+// unstable_period1_from_omega<suffix>_k, unstable_period1_to_omega<suffix>_k.
+inline void add_unstable_period1_ranges(KeyNumbers& key, const FrequencyCurve& c, double omega_min, double omega_max,
+                                        const std::string& suffix = "") {
+  const Intervals gaps = uncovered(omega_min, omega_max, stable_intervals(c));
+  key.add("unstable_period1_ranges" + suffix, double(gaps.size()), "-");
+  for (std::size_t k = 0; k < gaps.size(); ++k) {
+    key.add("unstable_period1_from_omega" + suffix + "_" + std::to_string(k + 1), gaps[k].first, "rad/s");
+    key.add("unstable_period1_to_omega" + suffix + "_" + std::to_string(k + 1), gaps[k].second, "rad/s");
+  }
+}
+
+// A frequency-response curve and the period-doubled branches switched at its period doublings.
+struct SweptCurve {
+  FrequencyCurve curve;
+  std::vector<PeriodDoubledBranch> doubled;   // period_doubling_cascade (empty: depth 0 or no PD)
+};
+
+// timed_sweep (throws if incomplete), then, at depth >= 1 where the curve has a period doubling,
+// its period-doubled branches over the same range (timings.csv "period-doubled branches
+// <label>"), each saying in one line where it starts and how it ends (a switch that fails: at
+// which PD and why; the rest of the run stands), and the key numbers of the ranges with no
+// stable period-1 orbit (suffix "_<label>").
+inline SweptCurve timed_sweep_with_branches(Run& run, const HarmonicBalance& hb, SweepOptions o,
+                                            const std::string& label, int depth) {
+  SweptCurve s{timed_sweep(run, hb, o, label), {}};
+  const auto& B = s.curve.bifurcations;
+  if (depth >= 1 && std::any_of(B.begin(), B.end(), [](const Bifurcation& b) { return b.type == BifurcationType::period_doubling; })) {
+    report_sweep_progress(run, o, label + ": period 2");
+    s.doubled = run.timed("period-doubled branches " + label, [&] { return period_doubling_cascade(hb, s.curve, o, depth); });
+    for (const auto& b : s.doubled) run.say(label + ": " + b.why);
+  }
+  add_unstable_period1_ranges(run.key_numbers(), s.curve, o.omega_min, o.omega_max, "_" + label);
+  return s;
 }
 
 // The same with the shared solver settings.

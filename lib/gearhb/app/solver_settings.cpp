@@ -1,5 +1,7 @@
 #include "gearhb/app/solver_settings.hpp"
 
+#include "gearhb/app/bifurcation_input.hpp"   // max_period_doubling_depth
+
 namespace gearhb {
 
 int max_harmonics(int dofs) { return (max_hb_unknowns / (dofs > 0 ? dofs : 1) - 1) / 2; }
@@ -14,6 +16,9 @@ void add_solver_parameters(ParameterSet& params, SolverSettings& s, int dofs) {
   params.add("omega_min", &s.omega_min, "rad/s", "start of the frequency range", Range::positive());
   params.add("omega_max", &s.omega_max, "rad/s", "end of the frequency range", Range::positive());
   params.add("ds_max", &s.ds_max, "-", "largest arc-length step (scaled unknowns)", Range::between(1e-6, 1.0));
+  params.add("period_doubling_depth", &s.period_doubling_depth, "-",
+             "period-doubled branches from the located period doublings: 0 none, 1 period 2, 2 also period 4",
+             Range::between(0, max_period_doubling_depth));
 }
 
 void check_solver_settings(const SolverSettings& s) {

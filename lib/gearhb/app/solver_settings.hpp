@@ -24,6 +24,9 @@ struct SolverSettings {
   double omega_min = 0.5;    // start of the frequency range [rad/s]
   double omega_max = 2.0;    // end of the frequency range [rad/s]
   double ds_max = 0.02;      // largest arc-length step (scaled)
+  // Period-doubled branches switched at the located period doublings of every curve
+  // (hb/period_doubling.hpp): 0 none, 1 period 2, 2 also period 4.
+  int period_doubling_depth = 1;
 };
 
 constexpr int max_hb_unknowns = 4096;   // n (2H+1)
@@ -33,7 +36,7 @@ constexpr int max_aft_samples = 1 << 20;
 int max_harmonics(int dofs);
 
 // Register the settings under the names H, N, exact_contact, natural, omega_min,
-// omega_max, ds_max (with bounds for a model of `dofs` DOFs) in a group "solver".
+// omega_max, ds_max, period_doubling_depth (with bounds for a model of `dofs` DOFs) in a group "solver".
 void add_solver_parameters(ParameterSet& params, SolverSettings& s, int dofs);
 
 // Cross-parameter checks: omega_min < omega_max, N = 0 or 4H+2 <= N. Throws UsageError.

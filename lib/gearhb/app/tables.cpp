@@ -132,6 +132,25 @@ Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label, const
   return t;
 }
 
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
+                               const std::vector<PeriodDoubledBranch>& pd, const Eigen::VectorXd& q,
+                               const RowProgress& progress) {
+  Table t = frequency_response_table(hb, c, q, progress);
+  for (std::size_t k = 0; k < pd.size(); ++k)
+    if (has_points(pd[k]))
+      t.append(frequency_response_table(*pd[k].model, pd[k].curve, q, {}, {}, {}, {},
+                                        BranchLabel{pd[k].period, int(k) + 1}));
+  return t;
+}
+
+Table bifurcation_table(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd) {
+  Table t = bifurcation_table(c, {}, branch_starts(c, pd));
+  for (std::size_t k = 0; k < pd.size(); ++k)
+    if (has_points(pd[k]))
+      t.append(bifurcation_table(pd[k].curve, BranchLabel{pd[k].period, int(k) + 1}, branch_starts(pd[k].curve, pd, int(k))));
+  return t;
+}
+
 Table time_integration_table(const TimeIntegrationCheck& check) {
   Table t(check_columns(FrequencyAxis::omega, {"x_max"}));
   for (const auto& r : check.rows)

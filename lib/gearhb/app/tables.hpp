@@ -15,6 +15,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/quasi_periodic.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
 
@@ -77,6 +78,16 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
 // frequency), starts_branch (the id of the period-2 branch a PD starts: starts[i] for
 // bifurcation i, empty where none or `starts` is empty).
 Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, const std::vector<int>& starts = {});
+
+// A curve with the period-doubled branches switched at its period doublings (`pd`,
+// hb/period_doubling.hpp period_doubling_cascade): the curve's rows (period 1, branch 0), then
+// those of each branch pd[k] with points on its own model (its period, branch k + 1; x_max and
+// x_min over its period); the bifurcations of every curve, `starts_branch` naming the branch
+// each PD starts.
+Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
+                               const std::vector<PeriodDoubledBranch>& pd, const Eigen::VectorXd& q,
+                               const RowProgress& progress = {});
+Table bifurcation_table(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point:
 // check_columns(omega, {"x_max"}) (app/schema.hpp).

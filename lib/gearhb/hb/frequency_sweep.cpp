@@ -160,6 +160,7 @@ std::vector<Bifurcation> one_entry_per_crossing(const HarmonicBalance& hb, const
     Bifurcation bf;
     bf.type = BifurcationType::fold;
     bf.omega = f.omega;
+    bf.X = f.X;
     bf.after_point = f.after_point;
     bf.multiplier = std::complex<double>(NAN, 0.0);
     try {
@@ -266,6 +267,7 @@ void add_narrow_bands(const HarmonicBalance& hb, FrequencyCurve& c, double xs, c
         Bifurcation bf;
         bf.after_point = int(i) - 1;
         bf.omega = at.omega;
+        bf.X = at.X;
         bf.multiplier = floquet_at(at.X, at.omega).critical;
         bf.type = crossing_type(bf.multiplier);
         if (bf.type == BifurcationType::fold) bf.type = BifurcationType::branch_point;   // +1 with no fold of the branch
@@ -410,6 +412,7 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
     try {
       const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, state, 1e-9, corrector_tolerance);
       bf.omega = at.omega;
+      bf.X = at.X;
       bf.multiplier = crossing_multiplier(memo.at(at.X, at.omega), fa, fb);
     } catch (const std::exception&) {
       // corrector failure on the chord (rare): the second point's multiplier

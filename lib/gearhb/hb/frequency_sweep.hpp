@@ -91,6 +91,11 @@ struct Bifurcation {
   // correction lands on a coexisting orbit next to a fold; the type is then that of the
   // kind whose count changed, not of a smooth crossing.
   bool smooth = true;
+  // The located point's coefficients (the branch at `omega`: the trial point of the location,
+  // or the fold's turning point); empty where a corrector failed on the chord. The branch switch at a period
+  // doubling starts from it (period_doubling.hpp): re-deriving it from `omega` misses it where
+  // the branch turns within the chord.
+  Eigen::VectorXd X;
 };
 
 // Floquet data of one point (the stable flag is FrequencyCurve::stable).

@@ -93,11 +93,12 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   Eigen::VectorXd& phi = sp.phi_floquet;
   for (const auto& ct : hb.contacts())
     if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
-  if (!bf.located) throw Failed("the PD was not located (a corrector failed on its chord)");
+  if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
   const auto& P = c.branch.points;
-  const BranchPoint &a = P[std::size_t(bf.after_point)], &b = P[std::size_t(bf.after_point) + 1];
-  const double t = std::clamp((bf.omega - a.omega) / (b.omega - a.omega), 0.0, 1.0);
-  at = point_on_chord(hb, a, b, c.scaling, t, opt.continuation.tolerance);
+  // the located point itself (a point re-derived from omega on the chord misses it where the
+  // branch turns within the chord: beside a fold)
+  at.X = bf.X;
+  at.omega = bf.omega;
   const double xs = c.scaling.x[0], w = at.omega;
   const FloquetResult fr = floquet_of_hb_orbit(hb, at.X, w, xs, opt.floquet);
   if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
@@ -221,6 +222,35 @@ BranchPoint merge_point(const HarmonicBalance& hbp, const BranchPoint& a, const 
   return best;
 }
 
+// A corrector that converged far off its predictor (the arc-length corrector's hyperplane is
+// unbounded: on ch. 6 Fig. 44, forced a hundredfold, one step of 0.005 landed 54000 rad/s away,
+// at a negative frequency, from the PD point itself): the branch ends before the first chord
+// longer than five times the step that made it (scaled as the continuation measures it), as a
+// failure saying where
+// (`factor`: forcing frequency per base frequency).
+// The first chord, from the branch point, is corrected in the hyperplane normal to the null
+// vector, which holds the whole omega axis: the branch's own curvature may move it several steps
+// in omega, so it counts as a jump only where it leaves the range [omega_min, omega_max] (base
+// frequencies).
+void end_before_jump(Branch& b, const Scaling& s, double factor, double omega_min, double omega_max) {
+  for (std::size_t k = 1; k < b.points.size(); ++k) {
+    const BranchPoint &a = b.points[k - 1], &z = b.points[k];
+    const double dw = (z.omega - a.omega) / s.omega;
+    const double chord = std::sqrt(((z.X - a.X).array() / s.x.array()).square().sum() + dw * dw);
+    const bool jumped = k == 1 ? !(z.omega >= omega_min && z.omega <= omega_max) : chord > 5.0 * z.ds && z.ds > 0.0;
+    if (!jumped) continue;
+    std::ostringstream os;
+    os << "the corrector jumped from omega = " << factor * a.omega << " to " << factor * z.omega << " (a chord "
+       << chord / z.ds << " times its step): the branch ends before it";
+    b.points.resize(k);
+    b.folds.erase(std::remove_if(b.folds.begin(), b.folds.end(), [k](const Fold& f) { return f.after_point + 1 >= int(k); }),
+                  b.folds.end());
+    b.complete = false;
+    b.failures.push_back(Failure{a.omega, 0.0, z.ds, os.str()});
+    return;
+  }
+}
+
 }  // namespace
 
 std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -306,6 +336,7 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
       // the branch starts at the PD point: the period-1 orbit, a solution of the period-2 model
       b.points.insert(b.points.begin(), BranchPoint{X0, at.omega / 2.0, 0, 0.0, 0.0, 0.0});
       for (auto& f : b.folds) ++f.after_point;
+      end_before_jump(b, s, 2.0 * P, end.omega_min, end.omega_max);
       FrequencyCurve& c2 = r.curve;
       c2.scaling = s;
       c2.stability = opt.stability;

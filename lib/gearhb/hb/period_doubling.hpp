@@ -19,7 +19,10 @@
 // frequency.
 //
 // The switch at a PD of the period-1 curve c (located omega_pd, between two points):
-//  1. the PD point: the chord point at omega_pd corrected onto the period-1 branch;
+//  1. the PD point: the point the location found (Bifurcation::X; the multiplier crossed -1
+//     there to a chord fraction of 1e-9), not one re-derived from omega_pd on the chord
+//     (linear in omega, that missed the PDs beside a fold of the branch: 3 of 10 switches of
+//     the light-load gear at depth 2 failed);
 //  2. its Floquet multipliers on the corrected orbit (floquet.hpp) and the real eigenvector
 //     e = (dx0, dv0) of the multiplier nearest -1;
 //  3. the eigen-solution dx(t) over one forcing period, by central differences of the
