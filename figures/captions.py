@@ -327,7 +327,8 @@ PLANETARY_CAPTIONS = {
 FRC_CAPTIONS = {
     "frc.png": "The frequency response of a model file (gearhb_frc): the output's largest and least value over a "
                "period against the forcing frequency, stable solid, unstable dashed (Floquet), bifurcations "
-               "marked, the contact state as a rug at the bottom. Where the file asks for them: the period-2 "
+               "marked, the contact state as a rug at the bottom (one row per branch, named by a tick in its "
+               "colour at the left). Where the file asks for them: the period-2 "
                "branches switched at the period doublings (colours of their own, x_min close up on the right), a "
                "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right), the Poincare "
                "points of the bifurcation diagram by time integration (below); the frequencies with no stable "

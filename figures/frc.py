@@ -105,81 +105,95 @@ def no_stable_period1(d_dir, axes):
     return shade_no_stable_period1(axes, unstable_period1_ranges(json.load(open(kn_file)) if kn_file.exists() else {}))
 
 
-def main():
-    d_dir = pathlib.Path(sys.argv[1])
-    model = json.load(open(d_dir / "params.json"))
-    full = read_csv(d_dir / "frc.csv")
-    d = rows_of(full, 0)
-    ids = branch_ids(full)
-    diagram = d_dir / "bifurcation_diagram.csv"
-    p = h = None
-    if diagram.exists() and (d_dir / "bifurcation_diagram_hb.csv").exists():
-        p, h = read_csv(diagram), read_csv(d_dir / "bifurcation_diagram_hb.csv")
-    # The response (top left); the period-2 branches close up (right, if any); the Poincare
-    # points of the bifurcation diagram under the response (if computed).
-    tor = d_dir / "torus.csv"
-    t = read_csv(tor) if tor.exists() and tor.read_text().count("\n") > 1 else None
-    rows, cols = (2 if p is not None else 1), 1 + (1 if ids else 0) + (1 if t is not None else 0)
+def read_run(d_dir):
+    """What the run wrote: the model, the response (every branch), the diagram, the torus, the
+    bifurcations (None where not written)."""
+    def table(name):
+        f = d_dir / name
+        return read_csv(f) if f.exists() and f.read_text().count("\n") > 1 else None
+    r = {"model": json.load(open(d_dir / "params.json")), "full": table("frc.csv"), "torus": table("torus.csv"),
+         "bif": table("bifurcations.csv"), "diagram": None, "diagram_hb": None}
+    if table("bifurcation_diagram_hb.csv") is not None:
+        r["diagram"], r["diagram_hb"] = table("bifurcation_diagram.csv"), table("bifurcation_diagram_hb.csv")
+    r["d"], r["ids"] = rows_of(r["full"], 0), branch_ids(r["full"])
+    return r
+
+
+def layout(r):
+    """The response (top left); the period-2 branches close up (right, if any); the torus'
+    rotation (right, if any); the Poincare points of the diagram under the response (if any)."""
+    rows = 2 if r["diagram"] is not None else 1
+    cols = 1 + (1 if r["ids"] else 0) + (1 if r["torus"] is not None else 0)
     fig, grid = plt.subplots(rows, cols, squeeze=False, figsize=(6.8 + 3.6 * (cols - 1), 4.6 + 2.8 * (rows - 1)),
                              gridspec_kw={"width_ratios": [2, 1, 1][:cols], "height_ratios": [3, 2][:rows]})
-    ax = grid[0][0]
-    ins = grid[0][1] if ids else None
-    axt = grid[0][cols - 1] if t is not None else None
-    axp = grid[1][0] if p is not None else None
-    if axp is not None:
-        axp.sharex(ax)
+    axes = {"main": grid[0][0], "closeup": grid[0][1] if r["ids"] else None,
+            "torus": grid[0][cols - 1] if r["torus"] is not None else None,
+            "poincare": grid[1][0] if rows == 2 else None}
+    if axes["poincare"] is not None:
+        axes["poincare"].sharex(axes["main"])
         for k in range(1, cols):
             grid[1][k].axis("off")
-    plot_branch(ax, d, "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
-    plot_branch(ax, d, "x_min", "C0")
-    plot_doubled_branches(ax, full)
-    if ids:   # x_min over the period-2 branches' range (where the two periods differ most)
-        w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]
-        lo2, hi2 = min(w2), max(w2)
-        pad = 0.15 * (hi2 - lo2)
-        ys = []
-        for n, bid in enumerate(ids):
-            d2 = rows_of(full, bid)
-            plot_branch(ins, d2, "x_min", PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
-            ys += d2["x_min"]
-        span = max(ys) - min(ys)
-        near = [i for i, w in enumerate(d["omega"]) if lo2 - pad <= w <= hi2 + pad
-                and min(ys) - span <= d["x_min"][i] <= max(ys) + span]
-        ins.plot([d["omega"][i] for i in near], [d["x_min"][i] for i in near], ".", color="C0", ms=3,
-                 label="period 1 (points)")
-        ins.set_xlim(lo2 - pad, hi2 + pad)
-        ins.set_ylim(min(ys) - 0.3 * span, max(ys) + 0.3 * span)
-        ins.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-        ins.set_title("x_min beside the period-2 branches\n(dots: period 1's points)", fontsize=9)
-    if t is not None:
-        for bid in sorted({int(x) for x in t["branch"]}):
-            r = rows_of(t, bid)
-            ax.plot(r["omega"], r["x_max"], "k-.", lw=1, label="torus (two-frequency HB): max, min over the torus"
-                    if bid == min(int(x) for x in t["branch"]) else None)
-            ax.plot(r["omega"], r["x_min"], "k-.", lw=1)
-    contact_rug(ax, per_contact_state(d))
-    bif = d_dir / "bifurcations.csv"
-    if bif.exists() and bif.read_text().count("\n") > 1:
-        b = read_csv(bif)
-        for kind, m in BIFURCATION_MARKERS.items():
-            c = BIFURCATION_COLOURS[kind]
-            w, ys = [], []
-            for i in range(len(b["omega"])):
-                if b["type"][i] != kind:
-                    continue
-                on = rows_of(full, int(b["branch"][i]) if "branch" in b else 0)
-                if not on["omega"]:
-                    continue
-                j = min(range(len(on["omega"])), key=lambda k: abs(on["omega"][k] - b["omega"][i]))
-                w.append(b["omega"][i])
-                ys.append(on["x_max"][j])
-            if w:
-                ax.plot(w, ys, ls="none", marker=m, color=c, mfc="none", ms=8, label=kind.replace("_", " "))
-    rug_room(ax)
-    shaded = no_stable_period1(d_dir, [a for a in (ax, axp) if a is not None])
-    direction = model["output"]["direction"]
+    return fig, axes
+
+
+def period2_closeup(ins, full, d, ids):
+    """x_min over the period-2 branches' range (where the two periods differ most), period 1 as points."""
+    w2 = [w for bid in ids for w in rows_of(full, bid)["omega"]]
+    lo2, hi2 = min(w2), max(w2)
+    pad = 0.15 * (hi2 - lo2)
+    ys = []
+    for n, bid in enumerate(ids):
+        d2 = rows_of(full, bid)
+        plot_branch(ins, d2, "x_min", PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
+        ys += d2["x_min"]
+    span = max(ys) - min(ys)
+    near = [i for i, w in enumerate(d["omega"]) if lo2 - pad <= w <= hi2 + pad
+            and min(ys) - span <= d["x_min"][i] <= max(ys) + span]
+    ins.plot([d["omega"][i] for i in near], [d["x_min"][i] for i in near], ".", color="C0", ms=3)
+    ins.set_xlim(lo2 - pad, hi2 + pad)
+    ins.set_ylim(min(ys) - 0.3 * span, max(ys) + 0.3 * span)
+    ins.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+    ins.set_title("x_min beside the period-2 branches\n(dots: period 1's points)", fontsize=9)
+
+
+def torus_curves(ax, t, lo="x_min", hi="x_max", label="torus (two-frequency HB): max, min over the torus"):
+    """Each torus branch dash-dot, one legend entry for all."""
+    first = min(int(x) for x in t["branch"])
+    for bid in sorted({int(x) for x in t["branch"]}):
+        r = rows_of(t, bid)
+        ax.plot(r["omega"], r[hi], "k-.", lw=1, label=label if bid == first else None)
+        ax.plot(r["omega"], r[lo], "k-.", lw=1)
+
+
+def contact_rugs(ax, full, ids):
+    """One rug row per branch (period 1 at the bottom, then each period-2 branch in its colour):
+    on coexisting branches the reader sees which one loses contact."""
+    contact_rug(ax, per_contact_state(rows_of(full, 0)), row=0, colour="C0" if ids else None)
+    for n, bid in enumerate(ids):
+        contact_rug(ax, per_contact_state(rows_of(full, bid)), row=n + 1,
+                    colour=PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
+    rug_room(ax, rows=1 + len(ids))
+
+
+def bifurcation_markers(ax, full, b):
+    """Each located bifurcation on the branch it lies on, at that branch's x_max."""
+    for kind, m in BIFURCATION_MARKERS.items():
+        w, ys = [], []
+        for i in range(len(b["omega"])):
+            on = rows_of(full, int(b["branch"][i]) if "branch" in b else 0)
+            if b["type"][i] != kind or not on["omega"]:
+                continue
+            j = min(range(len(on["omega"])), key=lambda k: abs(on["omega"][k] - b["omega"][i]))
+            w.append(b["omega"][i])
+            ys.append(on["x_max"][j])
+        if w:
+            ax.plot(w, ys, ls="none", marker=m, color=BIFURCATION_COLOURS[kind], mfc="none", ms=8,
+                    label=kind.replace("_", " "))
+
+
+def labels(ax, model, d):
     ax.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-    ax.set_ylabel("output q'x, q = %s [m]" % direction_text(direction))
+    ax.set_ylabel("output q'x, q = %s [m]" % direction_text(model["output"]["direction"]))
     lo, hi = sorted((model["omega"]["from"], model["omega"]["to"]))
     beyond = ""   # a branch that folds back out of the range at its start is followed there
     if min(d["omega"]) < lo * (1 - 1e-9) or max(d["omega"]) > hi * (1 + 1e-9):
@@ -187,31 +201,46 @@ def main():
     ax.set_title("%s\nH = %d, swept %g to %g rad/s%s" % (model.get("name", "model"), model["harmonics"],
                                                          model["omega"]["from"], model["omega"]["to"], beyond),
                  fontsize=9)
-    h_main, _ = ax.get_legend_handles_labels()
-    if t is not None:
-        torus_panel(axt, t, read_csv(bif) if bif.exists() and bif.read_text().count("\n") > 1 else None)
-    h_main += shaded
-    if p is not None:
-        ax.set_xlabel("")
-        handles = poincare_panel(axp, p, h, direction)
-        if t is not None:   # the torus' section theta1 = 0: where its Poincare points lie
-            for bid in sorted({int(x) for x in t["branch"]}):
-                r = rows_of(t, bid)
-                first = bid == min(int(x) for x in t["branch"])
-                axp.plot(r["omega"], r["section_max"], "k-.", lw=1,
-                         label="torus (HB): least, largest q'x on the section" if first else None)
-                axp.plot(r["omega"], r["section_min"], "k-.", lw=1)
-            handles += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
-        axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-        axp.legend(handles=h_main + legend_styles(ax) + handles, fontsize=6.5, loc="upper center",
-                   bbox_to_anchor=(0.5, -0.2), ncol=2, frameon=False)
-        save_whole(fig, d_dir / "frc.png")
-        diagram_figure(d_dir, model, p, h)
-        return
-    fig.legend(handles=h_main + legend_styles(ax), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, 0.0),
-               ncol=3, frameon=False)
-    save_whole(fig, d_dir / "frc.png")
 
+
+def poincare_below(axp, r, handles):
+    """The diagram's Poincare points under the response, the torus' section on them; the legend."""
+    more = poincare_panel(axp, r["diagram"], r["diagram_hb"], r["model"]["output"]["direction"])
+    if r["torus"] is not None:   # the torus' section theta1 = 0: where its Poincare points lie
+        torus_curves(axp, r["torus"], "section_min", "section_max", "torus (HB): least, largest q'x on the section")
+        more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
+    axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+    axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2,
+               frameon=False)
+
+
+def main():
+    d_dir = pathlib.Path(sys.argv[1])
+    r = read_run(d_dir)
+    fig, axes = layout(r)
+    ax = axes["main"]
+    plot_branch(ax, r["d"], "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
+    plot_branch(ax, r["d"], "x_min", "C0")
+    plot_doubled_branches(ax, r["full"])
+    if r["ids"]:
+        period2_closeup(axes["closeup"], r["full"], r["d"], r["ids"])
+    if r["torus"] is not None:
+        torus_curves(ax, r["torus"])
+        torus_panel(axes["torus"], r["torus"], r["bif"])
+    if r["bif"] is not None:
+        bifurcation_markers(ax, r["full"], r["bif"])
+    contact_rugs(ax, r["full"], r["ids"])
+    shaded = no_stable_period1(d_dir, [a for a in (ax, axes["poincare"]) if a is not None])
+    labels(ax, r["model"], r["d"])
+    handles = ax.get_legend_handles_labels()[0] + shaded + legend_styles(ax)
+    if axes["poincare"] is not None:
+        ax.set_xlabel("")
+        poincare_below(axes["poincare"], r, handles)
+        diagram_figure(d_dir, r["model"], r["diagram"], r["diagram_hb"])
+    else:
+        fig.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3,
+                   frameon=False)
+    save_whole(fig, d_dir / "frc.png")
 
 if __name__ == "__main__":
     main()
