@@ -117,6 +117,37 @@ def separation_note(d, params):
             "loads on a model without a back flank" % (gap, gap / rb, rb))
 
 
+def zoom_panel(az, a1, data_dir, label, full, d, zoom, w_open, w_closed):
+    """Delta on the folds' window, framed (dotted) on the whole curve above."""
+    delta_panel(az, data_dir, label, full, w_open, w_closed)
+    inside = [k for k, w in enumerate(d["w_k"]) if zoom[0] <= w <= zoom[1]]
+    ys = [d[y][k] * 1e3 for k in inside for y in ("x_max", "x_min")] + [0.0]
+    pad = 0.08 * (max(ys) - min(ys))
+    az.set_xlim(*zoom)
+    az.set_ylim(min(ys) - pad, max(ys) + pad)
+    rug_room(az)
+    az.set_title("zoom on the folds: %.2f-%.2f krad/s" % zoom, fontsize=9)
+    a1.axvspan(*zoom, fill=False, ec="0.3", ls=":", lw=0.9)   # framed: grey fill marks no stable period 1
+
+
+def amplitude_panel(a2, full, d, lin, s, w_open, w_closed):
+    """The oscillating amplitude against the linear open and closed meshes (linear_*.csv is for
+    Fa = 1e4: scaled by s)."""
+    plot_branch(a2, d, "amp", "0.15", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
+    plot_doubled_branches(a2, full, ys=("amp",), x="w_k", scale=1e3, entry_per_branch=False)
+    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
+                label="linear, mesh open")
+    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_closed"]], **LINEAR_CLOSED,
+                label="linear, mesh closed")
+    natural_lines(a2, w_open, w_closed)
+    contact_rug(a2, d, x="w_k")
+    a2.set_xlim(min(d["w_k"]), max(d["w_k"]))
+    rug_room(a2)
+    a2.set_ylabel(r"oscillating amplitude of $\Delta$ [mm]")
+    a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]   (dotted: natural frequencies, light grey open, dark closed "
+                  "mesh)", fontsize=8)
+
+
 def case_figure(data_dir, fig_dir, row, name):
     label, mesh = row["label"], row["mesh"]
     full = read_csv(data_dir / ("frc_%s.csv" % label))
@@ -145,30 +176,8 @@ def case_figure(data_dir, fig_dir, row, name):
     a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m%s"
                  % (what, row["Fi"], row["Fa"], row["kc"], separation_note(d, read_params(data_dir))), fontsize=9)
     if zoom:
-        az = axes[1]
-        delta_panel(az, data_dir, label, full, w_open, w_closed)
-        inside = [k for k, w in enumerate(d["w_k"]) if zoom[0] <= w <= zoom[1]]
-        ys = [d[y][k] * 1e3 for k in inside for y in ("x_max", "x_min")] + [0.0]
-        pad = 0.08 * (max(ys) - min(ys))
-        az.set_xlim(*zoom)
-        az.set_ylim(min(ys) - pad, max(ys) + pad)
-        rug_room(az)
-        az.set_title("zoom on the folds: %.2f-%.2f krad/s" % zoom, fontsize=9)
-        a1.axvspan(*zoom, fill=False, ec="0.3", ls=":", lw=0.9)   # framed: grey fill marks no stable period 1
-    plot_branch(a2, d, "amp", "0.15", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
-    plot_doubled_branches(a2, full, ys=("amp",), x="w_k", scale=1e3, entry_per_branch=False)
-    s = row["Fa"] / 1e4   # linear_*.csv is for Fa = 1e4
-    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
-                label="linear, mesh open")
-    a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_closed"]], **LINEAR_CLOSED,
-                label="linear, mesh closed")
-    natural_lines(a2, w_open, w_closed)
-    contact_rug(a2, d, x="w_k")
-    a2.set_xlim(min(d["w_k"]), max(d["w_k"]))
-    rug_room(a2)
-    a2.set_ylabel(r"oscillating amplitude of $\Delta$ [mm]")
-    a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]   (dotted: natural frequencies, light grey open, dark closed "
-                  "mesh)", fontsize=8)
+        zoom_panel(axes[1], a1, data_dir, label, full, d, zoom, w_open, w_closed)
+    amplitude_panel(a2, full, d, lin, row["Fa"] / 1e4, w_open, w_closed)
     h1, _ = a1.get_legend_handles_labels()
     h2, _ = a2.get_legend_handles_labels()
     seen = set()

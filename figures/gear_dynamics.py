@@ -166,8 +166,11 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     if extra:
         axes[2].legend(handles=list(extra.values()), fontsize=7, loc="upper left", bbox_to_anchor=(1.19, 1.0))
     dyn = params.get("dynamics", {})
+    model = dyn.get("model", "one_dof")
+    if model == "six_dof" and params.get("helix_angle_deg", 0) > 0 and "double_helical" not in params:
+        model = "six_dof + axial z1, z2"   # a single helix on bearings: the axial DOFs are on
     axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
-        params.get("name", "gear pair"), dyn.get("model", "one_dof"), dyn.get("mesh", "constant"),
+        params.get("name", "gear pair"), model, dyn.get("mesh", "constant"),
         dyn.get("zeta", 0.08), dyn.get("harmonics", 5), kn["normal_backlash_m"] * 1e6), fontsize=8)
     save(fig, d_dir / "response.png")
 

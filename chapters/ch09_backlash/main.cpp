@@ -389,10 +389,14 @@ void BacklashChapter::own_case(Run& run) const {
   const HarmonicBalance hb = balance(g, sol_.H);
   const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
   run.write("frc.csv", mesh_response_table(hb, c));
+  run.write("bifurcations.csv", bifurcation_table(c));
   run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));
-  run.key_numbers().add("fn", hz(std::sqrt(g.kc / g.me)), "Hz");
+  KeyNumbers& key = run.key_numbers();
+  key.add("fn", hz(std::sqrt(g.kc / g.me)), "Hz");
+  key.add("folds", double(c.branch.folds.size()), "-");
+  key.add("bifurcations", double(c.bifurcations.size()), "-");
 }
 
 }  // namespace

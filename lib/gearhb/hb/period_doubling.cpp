@@ -84,24 +84,9 @@ Eigen::MatrixXd odd_block(const HarmonicBalance& hbp, const Eigen::VectorXd& X, 
 
 int det_sign(const Eigen::MatrixXd& A) { return Eigen::PartialPivLU<Eigen::MatrixXd>(A).determinant() > 0.0 ? 1 : -1; }
 
-}  // namespace
-
-SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
-                               const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp) {
-  SwitchPoint sp;
-  BranchPoint& at = sp.at;
-  Eigen::VectorXd& phi = sp.phi_floquet;
-  for (const auto& ct : hb.contacts())
-    if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
-  if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
-  const auto& P = c.branch.points;
-  // the located point itself (a point re-derived from omega on the chord misses it where the
-  // branch turns within the chord: beside a fold)
-  at.X = bf.X;
-  at.omega = bf.omega;
-  const double xs = c.scaling.x[0], w = at.omega;
-  const FloquetResult fr = floquet_of_hb_orbit(hb, at.X, w, xs, opt.floquet);
-  if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+// The critical Floquet eigenvector of the corrected PD orbit (multiplier near -1), made real,
+// displacements and velocities scaled alike (velocities / omega, as the shooting scales them).
+Eigen::VectorXd critical_eigenvector(const HarmonicBalance& hb, const FloquetResult& fr, double w) {
   Eigen::EigenSolver<Eigen::MatrixXd> es(fr.monodromy);
   Eigen::Index j = 0;
   es.eigenvalues().unaryExpr([](std::complex<double> m) { return std::abs(m + 1.0); }).real().minCoeff(&j);
@@ -119,11 +104,18 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   ec *= std::conj(ec[big]) / std::abs(ec[big]);
   const int n = hb.dofs();
   Eigen::VectorXd e = ec.real();
-  e.tail(n) /= w;   // velocities in units of displacement (as the shooting scales them)
+  e.tail(n) /= w;
   e /= e.cwiseAbs().maxCoeff();
   e.tail(n) *= w;
-  // the eigen-solution over one forcing period by central differences of the exact flow
-  const int N = pdo.samples;
+  return e;
+}
+
+// The eigen-solution over one forcing period by central differences of the exact flow, and
+// its odd harmonics k of Omega = omega / 2 (Omega t_i = pi i / N; the antiperiodic extension
+// makes the integral over two periods twice that over one), on hbp's basis, unit norm.
+Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FloquetResult& fr,
+                                 const Eigen::VectorXd& e, double w, double xs, int N) {
+  const int n = hb.dofs();
   const double T = 2.0 * M_PI / w, delta = 1e-6 * xs;
   std::vector<double> nodes(static_cast<std::size_t>(N));
   for (int i = 0; i < N; ++i) nodes[std::size_t(i)] = T * i / N;
@@ -133,9 +125,7 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   flow.period_map(fr.x0 + delta * e.head(n), fr.v0 + delta * e.tail(n), w, nodes, xT, vT, Phi, &xp);
   flow.period_map(fr.x0 - delta * e.head(n), fr.v0 - delta * e.tail(n), w, nodes, xT, vT, Phi, &xm);
   const Eigen::MatrixXd D = (xp - xm) / (2.0 * delta);
-  // odd harmonics k of Omega = omega / 2: Omega t_i = pi i / N; the antiperiodic extension
-  // makes the integral over two periods twice that over one
-  phi = Eigen::VectorXd::Zero(hbp.size());
+  Eigen::VectorXd phi = Eigen::VectorXd::Zero(hbp.size());
   for (int k = 1; k <= hbp.harmonics(); k += 2) {
     Eigen::VectorXd ck = Eigen::VectorXd::Zero(n), sk = Eigen::VectorXd::Zero(n);
     for (int i = 0; i < N; ++i) {
@@ -147,14 +137,18 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
     phi.segment(hbp.index(2 * k, 0), n) = 2.0 * sk / N;
   }
   if (!(phi.norm() > 0.0)) throw Failed("the critical eigen-solution has no odd harmonics");
-  phi.normalize();
-  // The branch point of the period-2 model itself: where the odd block of its Jacobian on
-  // the period-1 branch is singular (det changes sign), searched on the chords within two
-  // points of the PD, the nearest taken, located by bisection on the chord. The HB model at
-  // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
-  // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
-  // largest and turns back): then there is no period-2 HB branch to switch to.
-  std::vector<int> odd;
+  return phi.normalized();
+}
+
+// The branch point of the period-2 model itself: where the odd block of its Jacobian on
+// the period-1 branch is singular (det changes sign), searched on the chords within two
+// points of the PD, the nearest taken, located by bisection on the chord. The HB model at
+// finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
+// all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
+// largest and turns back): then there is no period-2 HB branch to switch to.
+BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FrequencyCurve& c,
+                                 const Bifurcation& bf, const SweepOptions& opt, std::vector<int>& odd) {
+  const auto& P = c.branch.points;
   auto sign_at = [&](const BranchPoint& q) {
     return det_sign(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
   };
@@ -179,12 +173,33 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
     q = point_on_chord(hb, pa, pb, c.scaling, tm, opt.continuation.tolerance);
     (sign_at(q) == sa ? tl : th) = tm;
   }
-  sp.branch_point = q;
+  return q;
+}
+
+}  // namespace
+
+SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
+                               const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp) {
+  for (const auto& ct : hb.contacts())
+    if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
+  if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
+  // the located point itself (a point re-derived from omega on the chord misses it where the
+  // branch turns within the chord: beside a fold)
+  SwitchPoint sp;
+  sp.at.X = bf.X;
+  sp.at.omega = bf.omega;
+  const double xs = c.scaling.x[0], w = sp.at.omega;
+  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, opt.floquet);
+  if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  sp.phi_floquet = odd_harmonics_of(hb, hbp, fr, critical_eigenvector(hb, fr, w), w, xs, pdo.samples);
+  std::vector<int> odd;
+  sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
   // its null vector by inverse iteration from the Floquet direction
+  const BranchPoint& q = sp.branch_point;
   const Eigen::MatrixXd Jo = odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd);
   const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jo);
   Eigen::VectorXd v(odd.size()), po(odd.size());
-  for (std::size_t i = 0; i < odd.size(); ++i) po[Eigen::Index(i)] = phi[odd[i]];
+  for (std::size_t i = 0; i < odd.size(); ++i) po[Eigen::Index(i)] = sp.phi_floquet[odd[i]];
   v = po;
   for (int it = 0; it < 3; ++it) v = lu.solve(v).normalized();
   if (v.dot(po) < 0.0) v = -v;
@@ -253,6 +268,159 @@ void end_before_jump(Branch& b, const Scaling& s, double factor, double omega_mi
 
 }  // namespace
 
+namespace {
+
+// The continuation of the period-2 branch away from its branch point, with what decides its end:
+// it merged when its odd part reverses against the point before (a smooth branch turns its odd
+// part gradually; it flips only through zero).
+struct Period2Continuation {
+  const HarmonicBalance& hbp;
+  Scaling s;
+  ContinuationOptions co;
+  ContinuationEnd end;
+  Eigen::VectorXd prev_odd;
+
+  Period2Continuation(const HarmonicBalance& hbp_, const FrequencyCurve& c, const SweepOptions& opt)
+      : hbp(hbp_), s(c.scaling), co(opt.continuation) {
+    s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
+    s.omega = c.scaling.omega / 2.0;
+    co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
+    end.omega_min = opt.omega_min / 2.0;
+    end.omega_max = opt.omega_max / 2.0;
+    end.stop = [this](const Eigen::VectorXd& X, double) {
+      const Eigen::VectorXd odd = subharmonic_part(hbp, 2, X);
+      const bool flipped = odd.dot(prev_odd) < 0.0;
+      if (!flipped) prev_odd = odd;
+      return flipped;
+    };
+  }
+  Period2Continuation(const Period2Continuation&) = delete;   // end.stop holds `this`
+
+  // The first step: pdo.step, shortened tenfold while the corrector fails (the branch point is
+  // singular: its basin shrinks with the step's error against the branch).
+  Branch from_branch_point(const Eigen::VectorXd& X0, double Omega0, const Eigen::VectorXd& phi, double xs,
+                           double step0) {
+    Eigen::VectorXd d = Eigen::VectorXd::Zero(hbp.size() + 1);
+    d.head(hbp.size()) = phi / xs;
+    Branch b;
+    for (double step = step0;; step *= 0.1) {
+      prev_odd = phi;
+      b = arc_length_continuation_from(hbp, X0, Omega0, d, step, s, co, end);
+      if (b.points.size() > 1 || step < 1e-6 * step0) break;
+    }
+    return b;
+  }
+
+  // A step that overshot the merge (near a branch point the branch is a parabola omega - omega_b
+  // ~ odd^2, nearly normal to the period-1 branch: a step along its tangent crosses to the mirror
+  // half) with the last point still far from it (odd part above 5 % of the branch's largest): the
+  // last chord is walked again from its start with steps ten times shorter, up to five times.
+  void refine_overshoot(Branch& b, double xs) {
+    auto odd_norm = [this](const BranchPoint& q) { return subharmonic_part(hbp, 2, q.X).norm(); };
+    for (int refine = 0; refine < 5 && b.complete && b.points.size() >= 2 && end.stop(b.points.back().X, 0.0); ++refine) {
+      double largest = 0.0;
+      for (const auto& q : b.points) largest = std::max(largest, odd_norm(q));
+      const BranchPoint a = b.points[b.points.size() - 2], z = b.points.back();
+      if (odd_norm(a) <= 0.05 * largest) break;
+      Eigen::VectorXd chord(hbp.size() + 1);
+      chord.head(hbp.size()) = (z.X - a.X) / xs;
+      chord[hbp.size()] = (z.omega - a.omega) / s.omega;
+      ContinuationOptions fine = co;
+      fine.ds_max = 0.1 * std::max(chord.norm(), co.ds_min);
+      fine.ds_initial = fine.ds_max;
+      prev_odd = subharmonic_part(hbp, 2, a.X);
+      Branch more = arc_length_continuation_from(hbp, a.X, a.omega, chord, fine.ds_max, s, fine, end);
+      if (more.points.empty()) break;
+      b.points.pop_back();
+      for (auto& f : more.folds) f.after_point += int(b.points.size());
+      b.folds.insert(b.folds.end(), more.folds.begin(), more.folds.end());
+      b.points.insert(b.points.end(), more.points.begin(), more.points.end());
+      b.complete = more.complete;
+      b.failures = more.failures;
+    }
+  }
+};
+
+// How the branch ends: failed (where and why), merged with the period-1 branch (at which of its
+// located PDs, if any), or left the range; said in os.
+void classify_end(PeriodDoubledBranch& r, Branch& b, Period2Continuation& p2, const FrequencyCurve& c, std::size_t i,
+                  double P, int period, std::ostringstream& os) {
+  const BranchPoint& last = b.points.back();
+  if (!b.complete) {
+    const Failure& f = b.failures.empty() ? Failure{last.omega, 0.0, 0.0, "stopped"} : b.failures.back();
+    os << "failed at omega = " << 2.0 * P * f.omega << ": " << f.what;
+    r.end = PeriodDoubledBranch::End::failed;
+    r.omega_end = 2.0 * P * f.omega;
+  } else if (b.points.size() >= 3 && subharmonic_part(p2.hbp, 2, last.X).dot(p2.prev_odd) < 0.0) {
+    try {
+      b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], last, p2.s, p2.prev_odd, p2.co.tolerance);
+    } catch (const std::exception&) {
+      b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
+    }
+    r.omega_end = 2.0 * P * b.points.back().omega;
+    double dmin = INFINITY;
+    for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
+      const auto& o = c.bifurcations[k];
+      const double dk = std::fabs(P * o.omega - r.omega_end);
+      if (o.type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, r.to = int(k);
+    }
+    if (r.to >= 0 && dmin > 1e-3 * std::fabs(r.omega_end)) r.to = -1;
+    r.end = PeriodDoubledBranch::End::merged;
+    os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
+    if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
+    else os << " where no PD of the period-" << period << " branch was located";
+  } else {
+    r.end = PeriodDoubledBranch::End::left_range;
+    r.omega_end = 2.0 * P * last.omega;
+    os << "leaves the range at omega = " << r.omega_end;
+  }
+}
+
+// Floquet stability and bifurcations of the switched branch, its progress in the forcing frequency.
+void branch_stability(PeriodDoubledBranch& r, const SweepOptions& opt) {
+  SweepOptions o2 = opt;
+  o2.omega_min /= 2.0;
+  o2.omega_max /= 2.0;
+  if (opt.step_progress)
+    o2.step_progress = [&opt, &r](const std::string& step, const ContinuationProgress& q) {
+      ContinuationProgress f = q;
+      f.omega *= r.period;
+      opt.step_progress("period-" + std::to_string(r.period) + " " + step, f);
+    };
+  analyse_stability(*r.model, o2, r.curve);
+}
+
+// One switch: at the i-th bifurcation of c (a PD), the period-2 branch from its critical
+// direction, continued to its end.
+void switch_branch(PeriodDoubledBranch& r, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i,
+                   const SweepOptions& opt, const PeriodDoublingOptions& pdo, std::ostringstream& os) {
+  const double P = pdo.period;   // hb's omegas are the forcing frequency / P
+  r.model = subharmonic_model(hb, 2);
+  const HarmonicBalance& hbp = *r.model;
+  const SwitchPoint sp = critical_direction(hb, c, c.bifurcations[i], opt, pdo, hbp);
+  const BranchPoint& at = sp.branch_point;
+  r.omega_branch_point = P * at.omega;
+  r.direction_agreement = sp.agreement;
+  Period2Continuation p2(hbp, c, opt);
+  const Eigen::VectorXd X0 = to_subharmonic_basis(hb, hbp, 2, at.X);
+  Branch b = p2.from_branch_point(X0, at.omega / 2.0, sp.phi, c.scaling.x[0], pdo.step);
+  p2.refine_overshoot(b, c.scaling.x[0]);
+  // the branch starts at the PD point: the period-1 orbit, a solution of the period-2 model
+  b.points.insert(b.points.begin(), BranchPoint{X0, at.omega / 2.0, 0, 0.0, 0.0, 0.0});
+  for (auto& f : b.folds) ++f.after_point;
+  end_before_jump(b, p2.s, 2.0 * P, p2.end.omega_min, p2.end.omega_max);
+  classify_end(r, b, p2, c, i, P, pdo.period, os);
+  FrequencyCurve& c2 = r.curve;
+  c2.scaling = p2.s;
+  c2.stability = opt.stability;
+  c2.branch = std::move(b);
+  c2.complete = r.end != PeriodDoubledBranch::End::failed;
+  if (!c2.complete) c2.failure = os.str();
+  branch_stability(r, opt);
+}
+
+}  // namespace
+
 std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& hb, const FrequencyCurve& c,
                                                          const SweepOptions& opt, const PeriodDoublingOptions& pdo) {
   std::vector<PeriodDoubledBranch> out;
@@ -264,124 +432,13 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
     for (const auto& o : out) reached = reached || o.to == int(i);
     if (reached) continue;
     PeriodDoubledBranch r;
-    const double P = pdo.period;   // hb's omegas are the forcing frequency / P
     r.period = 2 * pdo.period;
     r.from = i;
-    r.omega_start = P * bf.omega;
+    r.omega_start = pdo.period * bf.omega;
     std::ostringstream os;
-    os << "period-" << r.period << " branch from the PD at omega = " << P * bf.omega << ": ";
+    os << "period-" << r.period << " branch from the PD at omega = " << r.omega_start << ": ";
     try {
-      r.model = subharmonic_model(hb, 2);
-      const HarmonicBalance& hbp = *r.model;
-      const SwitchPoint sp = critical_direction(hb, c, bf, opt, pdo, hbp);
-      const BranchPoint& at = sp.branch_point;
-      const Eigen::VectorXd& phi = sp.phi;
-      r.omega_branch_point = P * at.omega;
-      r.direction_agreement = sp.agreement;
-      Scaling s = c.scaling;
-      s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
-      s.omega = c.scaling.omega / 2.0;
-      ContinuationOptions co = opt.continuation;
-      co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
-      // it merged when its odd part reverses against the point before (a smooth branch
-      // turns its odd part gradually; it flips only through zero)
-      Eigen::VectorXd prev_odd = phi;
-      ContinuationEnd end;
-      end.omega_min = opt.omega_min / 2.0;
-      end.omega_max = opt.omega_max / 2.0;
-      end.stop = [&hbp, &prev_odd](const Eigen::VectorXd& X, double) {
-        const Eigen::VectorXd odd = subharmonic_part(hbp, 2, X);
-        const bool flipped = odd.dot(prev_odd) < 0.0;
-        if (!flipped) prev_odd = odd;
-        return flipped;
-      };
-      Eigen::VectorXd d = Eigen::VectorXd::Zero(hbp.size() + 1);
-      d.head(hbp.size()) = phi / c.scaling.x[0];
-      const Eigen::VectorXd X0 = to_subharmonic_basis(hb, hbp, 2, at.X);
-      // the first step: pdo.step, shortened tenfold while the corrector fails (the branch
-      // point is singular: its basin shrinks with the step's error against the branch)
-      Branch b;
-      for (double step = pdo.step;; step *= 0.1) {
-        prev_odd = phi;
-        b = arc_length_continuation_from(hbp, X0, at.omega / 2.0, d, step, s, co, end);
-        if (b.points.size() > 1 || step < 1e-6 * pdo.step) break;
-      }
-      // A step that overshot the merge (near a branch point the branch is a parabola
-      // omega - omega_b ~ odd^2, nearly normal to the period-1 branch: a step along its
-      // tangent crosses to the mirror half) with the last point still far from it (odd part
-      // above 5 % of the branch's largest): the last chord is walked again from its start
-      // with steps ten times shorter, up to five times.
-      auto odd_norm = [&hbp](const BranchPoint& q) { return subharmonic_part(hbp, 2, q.X).norm(); };
-      for (int refine = 0; refine < 5 && b.complete && b.points.size() >= 2 && end.stop(b.points.back().X, 0.0); ++refine) {
-        double largest = 0.0;
-        for (const auto& q : b.points) largest = std::max(largest, odd_norm(q));
-        const BranchPoint a = b.points[b.points.size() - 2], z = b.points.back();
-        if (odd_norm(a) <= 0.05 * largest) break;
-        Eigen::VectorXd chord(hbp.size() + 1);
-        chord.head(hbp.size()) = (z.X - a.X) / c.scaling.x[0];
-        chord[hbp.size()] = (z.omega - a.omega) / s.omega;
-        ContinuationOptions fine = co;
-        fine.ds_max = 0.1 * std::max(chord.norm(), co.ds_min);
-        fine.ds_initial = fine.ds_max;
-        prev_odd = subharmonic_part(hbp, 2, a.X);
-        Branch more = arc_length_continuation_from(hbp, a.X, a.omega, chord, fine.ds_max, s, fine, end);
-        if (more.points.empty()) break;
-        b.points.pop_back();
-        for (auto& f : more.folds) f.after_point += int(b.points.size());
-        b.folds.insert(b.folds.end(), more.folds.begin(), more.folds.end());
-        b.points.insert(b.points.end(), more.points.begin(), more.points.end());
-        b.complete = more.complete;
-        b.failures = more.failures;
-      }
-      // the branch starts at the PD point: the period-1 orbit, a solution of the period-2 model
-      b.points.insert(b.points.begin(), BranchPoint{X0, at.omega / 2.0, 0, 0.0, 0.0, 0.0});
-      for (auto& f : b.folds) ++f.after_point;
-      end_before_jump(b, s, 2.0 * P, end.omega_min, end.omega_max);
-      FrequencyCurve& c2 = r.curve;
-      c2.scaling = s;
-      c2.stability = opt.stability;
-      const BranchPoint& last = b.points.back();
-      if (!b.complete) {
-        const Failure& f = b.failures.empty() ? Failure{last.omega, 0.0, 0.0, "stopped"} : b.failures.back();
-        os << "failed at omega = " << 2.0 * P * f.omega << ": " << f.what;
-        r.end = PeriodDoubledBranch::End::failed;
-        r.omega_end = 2.0 * P * f.omega;
-      } else if (b.points.size() >= 3 && subharmonic_part(hbp, 2, last.X).dot(prev_odd) < 0.0) {
-        try {
-          b.points.back() = merge_point(hbp, b.points[b.points.size() - 2], last, s, prev_odd, co.tolerance);
-        } catch (const std::exception&) {
-          b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
-        }
-        r.omega_end = 2.0 * P * b.points.back().omega;
-        double dmin = INFINITY;
-        for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
-          const auto& o = c.bifurcations[k];
-          const double dk = std::fabs(P * o.omega - r.omega_end);
-          if (o.type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, r.to = int(k);
-        }
-        if (r.to >= 0 && dmin > 1e-3 * std::fabs(r.omega_end)) r.to = -1;
-        r.end = PeriodDoubledBranch::End::merged;
-        os << "merges with the period-" << pdo.period << " branch at omega = " << r.omega_end;
-        if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
-        else os << " where no PD of the period-" << pdo.period << " branch was located";
-      } else {
-        r.end = PeriodDoubledBranch::End::left_range;
-        r.omega_end = 2.0 * P * last.omega;
-        os << "leaves the range at omega = " << r.omega_end;
-      }
-      c2.branch = std::move(b);
-      c2.complete = r.end != PeriodDoubledBranch::End::failed;
-      if (!c2.complete) c2.failure = os.str();
-      SweepOptions o2 = opt;
-      o2.omega_min /= 2.0;
-      o2.omega_max /= 2.0;
-      if (opt.step_progress)   // reported in the forcing frequency
-        o2.step_progress = [&opt, &r](const std::string& step, const ContinuationProgress& q) {
-          ContinuationProgress f = q;
-          f.omega *= r.period;
-          opt.step_progress("period-" + std::to_string(r.period) + " " + step, f);
-        };
-      analyse_stability(hbp, o2, c2);
+      switch_branch(r, hb, c, i, opt, pdo, os);
     } catch (const std::exception& e) {
       os << "failed: " << e.what();
       r.end = PeriodDoubledBranch::End::failed;
