@@ -169,7 +169,7 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     model = dyn.get("model", "one_dof")
     if model == "six_dof" and params.get("helix_angle_deg", 0) > 0 and "double_helical" not in params:
         model = "six_dof + axial z1, z2"   # a single helix on bearings: the axial DOFs are on
-    axes[0].set_title("%s\n%s model, %s mesh, zeta = %g, H = %d, normal backlash %.1f um" % (
+    axes[0].set_title("%s\n%s model, %s mesh,\nzeta = %g, H = %d, normal backlash %.1f um" % (
         params.get("name", "gear pair"), model, dyn.get("mesh", "constant"),
         dyn.get("zeta", 0.08), dyn.get("harmonics", 5), kn["normal_backlash_m"] * 1e6), fontsize=8)
     save(fig, d_dir / "response.png")
@@ -196,6 +196,27 @@ def diagram_figure(d_dir, params, torques, diagram):
     plt.close(fig)
 
 
+def equal_groups(values, rel=1e-9):
+    """[(indices, value)] of the lists in `values` grouped where they are equal (to rel): lines
+    that would lie on one another are drawn once."""
+    groups = []
+    for i, v in enumerate(values):
+        for members, w in groups:
+            if len(v) == len(w) and all(abs(a - b) <= rel * max(abs(a), abs(b), 1e-300) for a, b in zip(v, w)):
+                members.append(i)
+                break
+        else:
+            groups.append(([i], v))
+    return groups
+
+
+def torques_label(torques, members):
+    """T1 = 100 N m, or T1 = 100, 200, 300 N m (one line) for torques whose lines coincide."""
+    if len(members) == 1:
+        return torque_label(torques[members[0]])
+    return "T1 = %s N m (one line)" % ", ".join("%g" % torques[i] for i in members)
+
+
 def campbell_figure(d_dir, params, kn, torques, frc):
     modes = read_csv(d_dir / "modes.csv")
     z1 = params["gears"][0]["z"]
@@ -206,14 +227,16 @@ def campbell_figure(d_dir, params, kn, torques, frc):
         f_top = 1.8 * max(modes["f_hz"])
         n_end = min(n_max, 60.0 * (1.02 - 0.08 * k) * f_top / (k * z1))   # inside the axes, staggered
         ax.text(n_end, k * z1 * n_end / 60.0, "%d x mesh " % k, fontsize=7, va="top", ha="right")
-    for i, T in enumerate(torques):
-        f = [modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
+    naturals = [[modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
+                for i in range(len(torques))]
+    peaks = [[kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1] for i in range(len(torques))]
+    for members, f in equal_groups(naturals):   # torques whose lines coincide: drawn and named once
         for j, fj in enumerate(f):
-            ax.axhline(fj, color=torque_colour(T, torques), ls=":", lw=1.2,
-                       label="closed-contact natural frequencies, %s" % torque_label(T) if j == 0 else None)
-        ax.axvline(kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1, color=torque_colour(T, torques), ls="-",
-                   lw=0.6, alpha=0.6,
-                   label="DTE RMS peak, %s" % torque_label(T))
+            ax.axhline(fj, color=torque_colour(torques[members[-1]], torques), ls=":", lw=1.2,
+                       label="closed-contact natural frequencies, %s" % torques_label(torques, members) if j == 0 else None)
+    for members, n in equal_groups(peaks):
+        ax.axvline(n[0], color=torque_colour(torques[members[-1]], torques), ls="-", lw=0.6, alpha=0.6,
+                   label="DTE RMS peak, %s" % torques_label(torques, members))
     ax.set_xlim(0, n_max * 1.12)
     ax.set_ylim(0, 1.8 * max(modes["f_hz"]))   # the orders that can meet a mode
     ax.set_xlabel("speed of gear 1 [rpm]")
