@@ -319,11 +319,11 @@ class HbLinearization : public Linearization {
  public:
   HbLinearization(std::unique_ptr<CondensedLinearization> condensed, std::function<Eigen::MatrixXd()> dense_J,
                   Eigen::VectorXd dRdomega, const Scaling& s)
-      : condensed_(std::move(condensed)), dense_J_(std::move(dense_J)), dRdw_(std::move(dRdomega)), s_(s) {}
+      : condensed_(std::move(condensed)), dense_J_(std::move(dense_J)), dRdomega_(std::move(dRdomega)), s_(s) {}
   bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
     structured_ = condensed_ && condensed_->solve_bordered(row, rhs, dy);
     if (structured_) return true;
-    if (!dense_) dense_ = std::make_unique<DenseLinearization>(dense_J_(), dRdw_, s_);
+    if (!dense_) dense_ = std::make_unique<DenseLinearization>(dense_J_(), dRdomega_, s_);
     return dense_->solve_bordered(row, rhs, dy);
   }
   bool last_solve_structured() const override { return structured_; }
@@ -331,7 +331,7 @@ class HbLinearization : public Linearization {
  private:
   std::unique_ptr<CondensedLinearization> condensed_;
   std::function<Eigen::MatrixXd()> dense_J_;
-  Eigen::VectorXd dRdw_;
+  Eigen::VectorXd dRdomega_;
   Scaling s_;
   mutable std::unique_ptr<DenseLinearization> dense_;
   mutable bool structured_ = false;

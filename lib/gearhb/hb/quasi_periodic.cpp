@@ -65,21 +65,21 @@ Eigen::MatrixXd TorusBalance::restriction(double theta2) const {
 }
 
 void TorusBalance::evaluate(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R,
-                            Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const {
-  linear_terms(X, omega, omega2, R, dRdX, dRdw, dRdw2);
+                            Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdomega, Eigen::VectorXd* dRdomega2) const {
+  linear_terms(X, omega, omega2, R, dRdX, dRdomega, dRdomega2);
   contact_terms(X, R, dRdX);
 }
 
 // The linear terms, pair by pair (harmonic_balance.hpp with k omega -> w), and the forcing.
 void TorusBalance::linear_terms(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R,
-                                Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const {
+                                Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdomega, Eigen::VectorXd* dRdomega2) const {
   const int n = n_;
   const LinearSystem& s = hb_.system();
   const Excitation& f = hb_.excitation();
   R = Eigen::VectorXd::Zero(size());
   if (dRdX) *dRdX = Eigen::MatrixXd::Zero(size(), size());
-  if (dRdw) *dRdw = Eigen::VectorXd::Zero(size());
-  if (dRdw2) *dRdw2 = Eigen::VectorXd::Zero(size());
+  if (dRdomega) *dRdomega = Eigen::VectorXd::Zero(size());
+  if (dRdomega2) *dRdomega2 = Eigen::VectorXd::Zero(size());
   R.head(n) = s.K * X.head(n) - f.f0;
   if (dRdX) dRdX->topLeftCorner(n, n) = s.K;
   for (int p = 1; p <= pairs(); ++p) {
@@ -100,13 +100,13 @@ void TorusBalance::linear_terms(const Eigen::VectorXd& X, double omega, double o
       dRdX->block(sn, sn, n, n) = D;
     }
     const Eigen::VectorXd dc = -2.0 * w * (s.M * a) + s.C * b, ds = -2.0 * w * (s.M * b) - s.C * a;
-    if (dRdw) {
-      dRdw->segment(c, n) = k1(p) * dc;
-      dRdw->segment(sn, n) = k1(p) * ds;
+    if (dRdomega) {
+      dRdomega->segment(c, n) = k1(p) * dc;
+      dRdomega->segment(sn, n) = k1(p) * ds;
     }
-    if (dRdw2) {
-      dRdw2->segment(c, n) = k2(p) * dc;
-      dRdw2->segment(sn, n) = k2(p) * ds;
+    if (dRdomega2) {
+      dRdomega2->segment(c, n) = k2(p) * dc;
+      dRdomega2->segment(sn, n) = k2(p) * ds;
     }
   }
 }

@@ -79,7 +79,7 @@ class TorusBalance {
 
   // R(X, omega, omega2), and if asked its Jacobian in X and derivatives in omega, omega2.
   void evaluate(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
-                Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const;
+                Eigen::VectorXd* dRdomega, Eigen::VectorXd* dRdomega2) const;
   // d X / d theta2 (the phase condition's row).
   Eigen::VectorXd theta2_derivative(const Eigen::VectorXd& X) const;
   // A period-1 point of hb (its harmonics up to H1) as a torus of zero amplitude.
@@ -98,7 +98,7 @@ class TorusBalance {
   Eigen::MatrixXd restriction(double theta2) const;
   void add_sandwich(int j, const Eigen::MatrixXd& DG, Eigen::MatrixXd& J) const;
   void linear_terms(const Eigen::VectorXd& X, double omega, double omega2, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
-                    Eigen::VectorXd* dRdw, Eigen::VectorXd* dRdw2) const;
+                    Eigen::VectorXd* dRdomega, Eigen::VectorXd* dRdomega2) const;
   void contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX) const;
 };
 
