@@ -227,8 +227,9 @@ GEAR_CAPTIONS_HELICAL = {
     "ste.png": "Loaded static transmission error over one mesh cycle of the helical pair (the face in slices), "
                "one curve per torque. Notice how small and smooth its fluctuation is beside a spur pair's: the "
                "contact lines enter and leave the path gradually, across the face.",
-    "stiffness.png": "Mesh stiffness k = F / STE over the mesh cycle per torque, its mean dotted: nearly constant, "
-                     "the contact-line length on the path varying only with the fractional part of the overlap ratio.",
+    "stiffness.png": "Mesh stiffness k = F / STE over the mesh cycle per torque, its mean dotted. It follows the "
+                     "contact-line length on the path, which varies with the fractional part of the overlap ratio "
+                     "and is constant only at whole eps_beta.",
     "shares.png": "Load share of each tooth pair, summed over the slices of the face, along the mesh cycle (exact "
                   "contact problem over slices x pairs): a pair takes up and gives off its load gradually.",
 }
@@ -260,7 +261,7 @@ GEAR_CAPTIONS = {
                     "linear, always-closed mesh. An order line crosses one where that linear mesh would resonate; the "
                     "computed peaks (response.png) lie lower wherever the teeth separate, the softening of contact loss.",
     "time_history.png": "Two periods of the DTE and the mesh force (drive and back flank) at the hardest contact "
-                        "of the run: where the teeth separate and where the back flank is hit.",
+                        "of the run: where the teeth separate and where the back flank is hit, if anywhere in the run.",
     "dte_spectrum.png": "DTE per mesh order at the speeds named in its legend (the peak's among them): which "
                         "order carries the response.",
 }
