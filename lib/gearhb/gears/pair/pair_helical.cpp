@@ -195,12 +195,8 @@ class SlicedLoadedPair final : public LoadedPair {
           c.stiffness *= seg.weight / n;
           p.mesh.pairs.push_back(c);
         }
-      const LoadShare share = share_load(contacts, layout_.scale * F, model_.hertz, model_.pair_hertz, layout_.line);
-      for (std::size_t i = 0; i < contacts.size(); ++i) p.mesh.pairs[i].force = share.force[i] / layout_.scale;
-      p.loaded = share.loaded;
-      p.approach = share.approach;
-      p.hertz = share.hertz;
-      p.ste = share.ste;
+      take_share(p, share_load(contacts, layout_.scale * F, model_.hertz, model_.pair_hertz, layout_.line),
+                 layout_.scale);
       out.push_back(std::move(p));
     }
     return out;

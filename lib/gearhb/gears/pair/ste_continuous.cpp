@@ -312,17 +312,20 @@ std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<Mesh
   for (const MeshPhase& ph : phases) {
     pairs.clear();
     for (const PairContact& c : ph.pairs) pairs.push_back({c.stiffness, c.separation});
-    const LoadShare share = share_load(pairs, F, m.hertz, m.pair_hertz, L);
     PairStePoint p;
     p.mesh = ph;
-    for (std::size_t i = 0; i < pairs.size(); ++i) p.mesh.pairs[i].force = share.force[i];
-    p.loaded = share.loaded;
-    p.approach = share.approach;
-    p.hertz = share.hertz;
-    p.ste = share.ste;
+    take_share(p, share_load(pairs, F, m.hertz, m.pair_hertz, L));
     out.push_back(std::move(p));
   }
   return out;
+}
+
+void take_share(PairStePoint& p, const LoadShare& share, double scale) {
+  for (std::size_t i = 0; i < share.force.size(); ++i) p.mesh.pairs[i].force = share.force[i] / scale;
+  p.loaded = share.loaded;
+  p.approach = share.approach;
+  p.hertz = share.hertz;
+  p.ste = share.ste;
 }
 
 double single_pair_ste(const PairSteModel& m, double s, double torque, const PairStiffnessFn& stiffness) {

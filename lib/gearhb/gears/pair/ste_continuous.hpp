@@ -185,6 +185,11 @@ struct PairStePoint {
   int loaded = 0;              // pairs carrying load
   double approach = 0.0, hertz = 0.0, ste = 0.0;   // [m] (load_sharing.hpp)
 };
+struct LoadShare;
+// A phase's loaded point from its shared load (load_sharing.hpp share_load): each pair's force
+// share.force[i] / scale (scale: the helical slices' scaled problem; 1 otherwise), the loaded
+// count, the approach, the Hertz part and the STE.
+void take_share(PairStePoint& p, const LoadShare& share, double scale = 1.0);
 // The STE over the phases for gear 1's torque T1 [N m].
 std::vector<PairStePoint> pair_ste(const PairSteModel& m, const std::vector<MeshPhase>& phases, double torque);
 
