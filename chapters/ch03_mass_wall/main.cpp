@@ -173,9 +173,10 @@ void MassAgainstWall::frequency_responses(Run& run) const {
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.load, sol_);
-    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, kX));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, s.doubled, kX));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
     index.add_row({cs.label, cs.figure, cs.load.gap, cs.load.Fa, cs.load.F0, long(c.branch.points.size()),
                    long(c.branch.folds.size()), long(c.branch.rejected_steps), long(c.branch.complete)});
     measure(run, cs, hb, c);
@@ -279,9 +280,10 @@ void MassAgainstWall::sample_study(Run& run) const {
 // --case own: one curve with the user's parameters.
 void MassAgainstWall::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_);
-  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  run.write("frc.csv", frequency_response_table(hb, c, kX));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
+  run.write("frc.csv", frequency_response_table(hb, c, s.doubled, kX));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   const ResponseEvaluator ev(hb, kX);
   double peak = -INFINITY;
   for (const auto& p : c.branch.points) peak = std::max(peak, ev.summarize(p.X).x_max);

@@ -106,7 +106,7 @@ class TwoMassesChapter {
 
   LinearSystem open_system() const;
   HarmonicBalance model(const Loading& l) const;
-  void write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const std::string& label) const;
+  void write_curves(Run& run, const HarmonicBalance& hb, const SweptCurve& s, const std::string& label) const;
   void normal_modes(Run& run) const;
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -165,15 +165,16 @@ HarmonicBalance TwoMassesChapter::model(const Loading& l) const {
   return HarmonicBalance(open_system(), {contact}, f, sol_.H, sol_.N, contact_quadrature(sol_));
 }
 
-// One curve as three tables, d = x1 - x2 (frc<label>.csv) and each mass (frc<label>_x1/_x2.csv),
-// and its bifurcations (bifurcations<label>.csv); label "" or "_<case>".
-void TwoMassesChapter::write_curves(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+// One curve and its period-doubled branches as three tables, d = x1 - x2 (frc<label>.csv) and
+// each mass (frc<label>_x1/_x2.csv), and its bifurcations (bifurcations<label>.csv); label ""
+// or "_<case>".
+void TwoMassesChapter::write_curves(Run& run, const HarmonicBalance& hb, const SweptCurve& s,
                                     const std::string& label) const {
   const std::string stem = "frc" + label;
-  run.write(stem + ".csv", frequency_response_table(hb, c, kNormal));
-  run.write("bifurcations" + label + ".csv", bifurcation_table(c));
-  run.write(stem + "_x1.csv", frequency_response_table(hb, c, Vector2d(1, 0)));
-  run.write(stem + "_x2.csv", frequency_response_table(hb, c, Vector2d(0, 1)));
+  run.write(stem + ".csv", frequency_response_table(hb, s.curve, s.doubled, kNormal));
+  run.write("bifurcations" + label + ".csv", bifurcation_table(s.curve, s.doubled));
+  run.write(stem + "_x1.csv", frequency_response_table(hb, s.curve, s.doubled, Vector2d(1, 0)));
+  run.write(stem + "_x2.csv", frequency_response_table(hb, s.curve, s.doubled, Vector2d(0, 1)));
 }
 
 // Step 1 (thesis §4.1): natural frequencies and mass-normalised shapes, contact open and
@@ -207,8 +208,9 @@ void TwoMassesChapter::frequency_responses(Run& run) const {
   for (const auto& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.load);
-    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
-    write_curves(run, hb, c, "_" + cs.label);
+    const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
+    write_curves(run, hb, s, "_" + cs.label);
     const ResponseEvaluator ev(hb, kNormal);
     ContactCounts n;
     for (const auto& pt : c.branch.points) {
@@ -301,8 +303,9 @@ void TwoMassesChapter::time_integration_check(Run& run, const HarmonicBalance& h
 // --case own: one curve (d and each mass) with the user's loading.
 void TwoMassesChapter::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_);
-  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  write_curves(run, hb, c, "");
+  const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
+  write_curves(run, hb, s, "");
   run.key_numbers().add("complete", c.branch.complete ? 1.0 : 0.0, "-");
   run.key_numbers().add("folds", double(c.branch.folds.size()), "-");
   run.key_numbers().add("points", double(c.branch.points.size()), "-");

@@ -594,9 +594,10 @@ void ComparinSingh::two_mass_check(Run& run, const HarmonicBalance& hb, const Fr
 // --case own: one curve with the user's loading and the classifier's prediction.
 void ComparinSingh::own_case(Run& run) const {
   const HarmonicBalance hb = model(own_, sol_.H, sol_.N);
-  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  run.write("frc.csv", frequency_response_table(hb, c, kDelta));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
+  run.write("frc.csv", frequency_response_table(hb, c, s.doubled, kDelta));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   const Classifier cls{pair_, own_};
   write_prediction(run, cls, "prediction.csv");
   run.say("predicted: " + cls.describe(sol_.omega_min, sol_.omega_max) + "; HB states " +

@@ -243,9 +243,10 @@ void GearResponse::frequency_responses(Run& run) const {
     const DteGear g = mesh(cs.torque);
     const DteModel model = model_of(cs);
     const HarmonicBalance hb = dte_harmonic_balance(g, cs.H, sol_.N, contact_quadrature(sol_), model);
-    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
-    run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
+    run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c, s.doubled));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
     run.write("linear_" + cs.label + ".csv", linear_mesh_table(g, cs.H, sol_.omega_min, sol_.omega_max));
     const DteCurveReport rep = measure(run, cs.label, g, model, hb, c);
     worst.add(rep);
@@ -362,9 +363,10 @@ void GearResponse::own_case(Run& run) const {
   g.c = mesh_damping(gear_.zeta, g.kc, g.me);
   g.ste = periodic_fourier(e, sol_.H);
   const HarmonicBalance hb = dte_harmonic_balance(g, sol_.H, sol_.N, contact_quadrature(sol_), mesh_model(gear_));
-  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  run.write("frc.csv", mesh_response_table(hb, c));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
+  run.write("frc.csv", mesh_response_table(hb, c, s.doubled));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, mesh_model(gear_), hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));

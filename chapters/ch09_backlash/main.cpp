@@ -300,9 +300,10 @@ std::vector<CurveResult> BacklashChapter::frequency_responses(Run& run) const {
     if (!run.wants(cs.label, cs.quick)) continue;
     const DteGear g = mesh(cs.torque, cs.reading);
     const HarmonicBalance hb = balance(g, cs.H);
-    const FrequencyCurve c = timed_sweep(run, hb, sol_, cs.label);
-    run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c));
+    const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), cs.label, sol_.period_doubling_depth);
+    const FrequencyCurve& c = s.curve;
+    run.write("frc_" + cs.label + ".csv", mesh_response_table(hb, c, s.doubled));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
     run.write("linear_" + cs.label + ".csv", linear_mesh_table(g, cs.H, sol_.omega_min, sol_.omega_max));
     const DteCurveReport rep = measure(run, cs.label, g, hb, c);
     reports.push_back({cs.label, rep});
@@ -387,9 +388,10 @@ DteTimeCheck BacklashChapter::peak_change(Run& run, const CurveResult& with, con
 void BacklashChapter::own_case(Run& run) const {
   const DteGear g = mesh(own_.torque, Reading::chosen);
   const HarmonicBalance hb = balance(g, sol_.H);
-  const FrequencyCurve c = timed_sweep(run, hb, sol_, "own");
-  run.write("frc.csv", mesh_response_table(hb, c));
-  run.write("bifurcations.csv", bifurcation_table(c));
+  const SweptCurve s = timed_sweep_with_branches(run, hb, sweep_options(sol_), "own", sol_.period_doubling_depth);
+  const FrequencyCurve& c = s.curve;
+  run.write("frc.csv", mesh_response_table(hb, c, s.doubled));
+  run.write("bifurcations.csv", bifurcation_table(c, s.doubled));
   run.write("linear_own.csv", linear_mesh_table(g, sol_.H, sol_.omega_min, sol_.omega_max));
   const DteCurveReport rep = measure(run, "own", g, hb, c);
   run.write("loss_bands.csv", loss_band_table({{"own", rep}}));

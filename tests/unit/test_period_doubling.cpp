@@ -169,3 +169,42 @@ TEST(PeriodDoubling, SubharmonicModelPlacesTheForcingOnHarmonicTwo) {
     EXPECT_EQ(subharmonic_part(*hbp, 2, to_subharmonic_basis(hb, *hbp, 2, p.X)).norm(), 0.0);
   }
 }
+
+TEST(PeriodDoubling, BilinearBranchEndsAtTheOtherDoublingNotOnThePeriodOneBranch) {
+  // The bilinear oscillator x'' + 0.02 x' + x + max(x, 0) = 0.01 cos(omega t) (ch. 3's mass
+  // against a wall with gap 0 and c = 0.02, H = 10, omega 0.5-3.5) has four PDs of its period-1
+  // orbit (Floquet on the exact flow): 0.7443 and 0.7981, 2.1212 and 2.6436 (about twice its
+  // bilinear frequency 2 sqrt(2) / (1 + sqrt(2)) = 1.17). The period-2 branch switched at
+  // 2.1212 runs through its subharmonic resonance to 2.6436, where the corrector turns onto the
+  // period-1 branch (a solution of the period-2 model too): the branch must end there, at that
+  // PD, not go on along the period-1 orbit (before: it merged at omega = 2.746 "where no PD was
+  // located", its last points period-1 orbits, and 2.6436 was switched again).
+  Eigen::VectorXd one = Eigen::VectorXd::Constant(1, 1.0);
+  const LinearSystem s{one.asDiagonal(), 0.02 * one.asDiagonal(), one.asDiagonal()};
+  const HarmonicBalance hb(s, {UnilateralContact{one, 1.0, 0.0, {}}},
+                           Excitation{Eigen::VectorXd::Zero(1), 0.01 * one, Eigen::VectorXd::Zero(1)}, 10);
+  SweepOptions o;
+  o.omega_min = 0.5;
+  o.omega_max = 3.5;
+  o.stability = StabilityMethod::floquet;
+  const FrequencyCurve c = sweep_frequency(hb, o, "bilinear");
+  ASSERT_TRUE(c.complete) << c.failure;
+  std::vector<std::size_t> pd;
+  for (std::size_t k = 0; k < c.bifurcations.size(); ++k)
+    if (c.bifurcations[k].type == BifurcationType::period_doubling) pd.push_back(k);
+  ASSERT_EQ(pd.size(), 4u);
+  const auto br = period_doubled_branches(hb, c, o);
+  ASSERT_EQ(br.size(), 2u);   // each branch's end PD is not switched again
+  for (const PeriodDoubledBranch& b : br) {
+    ASSERT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+    ASSERT_GE(b.to, 0) << b.why;
+    EXPECT_NEAR(b.omega_end, c.bifurcations[std::size_t(b.to)].omega, 1e-3) << b.why;
+    // the two PDs of one resonance: 0.74-0.80 or 2.12-2.64
+    EXPECT_LT(std::fabs(b.omega_end - b.omega_start), 0.6) << b.why;
+    // every point between the ends is a period-2 orbit: its odd part well away from zero
+    const auto& P = b.curve.branch.points;
+    double largest = 0.0;
+    for (const auto& p : P) largest = std::max(largest, odd_norm(b, p));
+    for (std::size_t k = 1; k + 1 < P.size(); ++k) EXPECT_GT(odd_norm(b, P[k]), 1e-6 * largest) << b.why << ", point " << k;
+  }
+}

@@ -134,12 +134,12 @@ Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label, const
 
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
                                const std::vector<PeriodDoubledBranch>& pd, const Eigen::VectorXd& q,
-                               const RowProgress& progress) {
-  Table t = frequency_response_table(hb, c, q, progress);
+                               const RowProgress& progress, const ResponseLayout& layout) {
+  Table t = frequency_response_table(hb, c, q, {}, {}, {}, progress, {}, layout);
   for (std::size_t k = 0; k < pd.size(); ++k)
     if (has_points(pd[k]))
       t.append(frequency_response_table(*pd[k].model, pd[k].curve, q, {}, {}, {}, {},
-                                        BranchLabel{pd[k].period, int(k) + 1}));
+                                        BranchLabel{pd[k].period, int(k) + 1}, layout));
   return t;
 }
 
@@ -171,8 +171,8 @@ Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branch
   return t;
 }
 
-Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c) {
-  return frequency_response_table(hb, c, Eigen::VectorXd::Constant(1, 1.0), {}, {}, {}, {}, {}, {FrequencyAxis::mesh});
+Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd) {
+  return frequency_response_table(hb, c, pd, Eigen::VectorXd::Constant(1, 1.0), {}, {FrequencyAxis::mesh});
 }
 
 }  // namespace gearhb

@@ -86,7 +86,7 @@ Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, 
 // each PD starts.
 Table frequency_response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
                                const std::vector<PeriodDoubledBranch>& pd, const Eigen::VectorXd& q,
-                               const RowProgress& progress = {});
+                               const RowProgress& progress = {}, const ResponseLayout& layout = {});
 Table bifurcation_table(const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd);
 
 // The harmonic-balance vs time-integration comparison, one row per compared point:
@@ -103,6 +103,8 @@ Table time_integration_table(const TimeIntegrationCheck& check);
 Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q);
 
 // The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: omega,
-// f_mesh_hz, then the common columns of the mesh deflection (app/schema.hpp).
-Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c);
+// f_mesh_hz, then the common columns of the mesh deflection (app/schema.hpp); the rows of
+// the period-doubled branches pd after the curve's, as frequency_response_table above.
+Table mesh_response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
+                          const std::vector<PeriodDoubledBranch>& pd = {});
 }  // namespace gearhb

@@ -270,15 +270,28 @@ void end_before_jump(Branch& b, const Scaling& s, double factor, double omega_mi
 
 namespace {
 
-// The continuation of the period-2 branch away from its branch point, with what decides its end:
-// it merged when its odd part reverses against the point before (a smooth branch turns its odd
-// part gradually; it flips only through zero).
+// How a period-2 branch met the period-1 branch: its odd part reversed against the point before
+// (a smooth branch turns its odd part gradually; it flips only through zero: it crossed onto the
+// mirror half), or vanished (the corrector turned onto the period-1 branch, itself a solution
+// of the period-2 model: odd parts of 1e-18 against 1e-2 on the branch, the bilinear
+// oscillator of ch. 3 at omega = 2.64; before, that went on along the period-1 branch until the
+// rounding-level odd part happened to flip, 0.1 rad/s later).
+enum class Merge { none, crossed, joined };
+
+// The continuation of the period-2 branch away from its branch point, with what decides its end.
 struct Period2Continuation {
   const HarmonicBalance& hbp;
   Scaling s;
   ContinuationOptions co;
   ContinuationEnd end;
   Eigen::VectorXd prev_odd;
+  double largest = 0.0;   // the largest odd part of the points so far
+
+  Merge merge_at(const Eigen::VectorXd& X) const {
+    const Eigen::VectorXd odd = subharmonic_part(hbp, 2, X);
+    if (largest > 0.0 && odd.norm() <= 1e-8 * largest) return Merge::joined;
+    return odd.dot(prev_odd) < 0.0 ? Merge::crossed : Merge::none;
+  }
 
   Period2Continuation(const HarmonicBalance& hbp_, const FrequencyCurve& c, const SweepOptions& opt)
       : hbp(hbp_), s(c.scaling), co(opt.continuation) {
@@ -288,10 +301,10 @@ struct Period2Continuation {
     end.omega_min = opt.omega_min / 2.0;
     end.omega_max = opt.omega_max / 2.0;
     end.stop = [this](const Eigen::VectorXd& X, double) {
-      const Eigen::VectorXd odd = subharmonic_part(hbp, 2, X);
-      const bool flipped = odd.dot(prev_odd) < 0.0;
-      if (!flipped) prev_odd = odd;
-      return flipped;
+      if (merge_at(X) != Merge::none) return true;
+      prev_odd = subharmonic_part(hbp, 2, X);
+      largest = std::max(largest, prev_odd.norm());
+      return false;
     };
   }
   Period2Continuation(const Period2Continuation&) = delete;   // end.stop holds `this`
@@ -305,6 +318,7 @@ struct Period2Continuation {
     Branch b;
     for (double step = step0;; step *= 0.1) {
       prev_odd = phi;
+      largest = 0.0;
       b = arc_length_continuation_from(hbp, X0, Omega0, d, step, s, co, end);
       if (b.points.size() > 1 || step < 1e-6 * step0) break;
     }
@@ -341,31 +355,68 @@ struct Period2Continuation {
   }
 };
 
+// The PD of c other than the i-th nearest to the forcing frequencies [lo, hi], -1 where none lies
+// within 1e-3 hi of them (P: forcing frequency per c's omega).
+int nearest_pd(const FrequencyCurve& c, std::size_t i, double P, double lo, double hi) {
+  int to = -1;
+  double dmin = INFINITY;
+  for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
+    const double w = P * c.bifurcations[k].omega, dk = std::max({lo - w, w - hi, 0.0});
+    if (c.bifurcations[k].type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, to = int(k);
+  }
+  return dmin <= 1e-3 * std::fabs(hi) ? to : -1;
+}
+
+// The merge of a branch that crossed the period-1 branch: refined on its last chord (merge_point).
+void end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const FrequencyCurve& c,
+                     std::size_t i, double P) {
+  try {
+    b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], b.points.back(), p2.s, p2.prev_odd,
+                                  p2.co.tolerance);
+  } catch (const std::exception&) {
+    b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
+  }
+  r.omega_end = 2.0 * P * b.points.back().omega;
+  r.to = nearest_pd(c, i, P, r.omega_end, r.omega_end);
+}
+
+// The merge of a branch that joined the period-1 branch: its last point lies on that branch past
+// the merge and is dropped; the merge is the period-2 model's branch point beside the PD of c
+// nearest the last chord (where the switch would start a branch), or, where no PD was located
+// near it, the branch ends at the point before.
+void end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
+                 const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
+  const double wa = 2.0 * P * b.points[b.points.size() - 2].omega, wb = 2.0 * P * b.points.back().omega;
+  b.points.pop_back();
+  r.to = nearest_pd(c, i, P, std::min(wa, wb), std::max(wa, wb));
+  r.omega_end = wa;
+  if (r.to < 0) return;
+  try {
+    std::vector<int> odd;
+    const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
+    b.points.push_back(BranchPoint{to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, 0, 0.0, 0.0, 0.0});
+    r.omega_end = P * q.omega;
+  } catch (const std::exception&) {
+    // no branch point of the period-2 model there: the branch ends at the point before
+  }
+}
+
 // How the branch ends: failed (where and why), merged with the period-1 branch (at which of its
 // located PDs, if any), or left the range; said in os.
-void classify_end(PeriodDoubledBranch& r, Branch& b, Period2Continuation& p2, const FrequencyCurve& c, std::size_t i,
-                  double P, int period, std::ostringstream& os) {
+void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const HarmonicBalance& hb,
+                  const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P, std::ostringstream& os) {
   const BranchPoint& last = b.points.back();
+  const Merge m = b.points.size() >= 3 ? p2.merge_at(last.X) : Merge::none;
   if (!b.complete) {
     const Failure& f = b.failures.empty() ? Failure{last.omega, 0.0, 0.0, "stopped"} : b.failures.back();
     os << "failed at omega = " << 2.0 * P * f.omega << ": " << f.what;
     r.end = PeriodDoubledBranch::End::failed;
     r.omega_end = 2.0 * P * f.omega;
-  } else if (b.points.size() >= 3 && subharmonic_part(p2.hbp, 2, last.X).dot(p2.prev_odd) < 0.0) {
-    try {
-      b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], last, p2.s, p2.prev_odd, p2.co.tolerance);
-    } catch (const std::exception&) {
-      b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
-    }
-    r.omega_end = 2.0 * P * b.points.back().omega;
-    double dmin = INFINITY;
-    for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
-      const auto& o = c.bifurcations[k];
-      const double dk = std::fabs(P * o.omega - r.omega_end);
-      if (o.type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, r.to = int(k);
-    }
-    if (r.to >= 0 && dmin > 1e-3 * std::fabs(r.omega_end)) r.to = -1;
+  } else if (m != Merge::none) {
+    if (m == Merge::crossed) end_at_crossing(r, b, p2, c, i, P);
+    else end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
     r.end = PeriodDoubledBranch::End::merged;
+    const int period = int(P);
     os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
     if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
     else os << " where no PD of the period-" << period << " branch was located";
@@ -409,7 +460,7 @@ void switch_branch(PeriodDoubledBranch& r, const HarmonicBalance& hb, const Freq
   b.points.insert(b.points.begin(), BranchPoint{X0, at.omega / 2.0, 0, 0.0, 0.0, 0.0});
   for (auto& f : b.folds) ++f.after_point;
   end_before_jump(b, p2.s, 2.0 * P, p2.end.omega_min, p2.end.omega_max);
-  classify_end(r, b, p2, c, i, P, pdo.period, os);
+  classify_end(r, b, p2, hb, c, i, opt, P, os);
   FrequencyCurve& c2 = r.curve;
   c2.scaling = p2.s;
   c2.stability = opt.stability;
