@@ -114,6 +114,13 @@ CHAPTERS = [
                          (44, "Fi = 1e7, 100x forcing"), (45, "Fi = -1e8, 100x forcing"))] + [
         ("figS46_*.png", "supplement S46", "Beyond Fig. 43's first period doubling. Notice the time-integrated orbit "
          "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
+        ("figS47_*.png", "supplement S47", "What the gear does where Fig. 43 has no stable period-1 orbit: the "
+         "bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over 10-15 krad/s, the "
+         "mesh deflection once per forcing period) under the harmonic-balance branches. Notice the two views agree "
+         "where HB's period-1 orbit is stable (the Poincare points on the grey line: CTest "
+         "ch06_gear_pair.fig43_diagram.diagram_vs_hb), period-2 motion in both grey bands where HB's period-2 "
+         "branches are stable, period 4 at a few speeds, and chaotic motion (red) near 12.7-13.0 krad/s in both "
+         "sweeps, where the period-2 branch is unstable (dashed)."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
         ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "

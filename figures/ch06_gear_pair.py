@@ -209,7 +209,52 @@ def draw(data_dir, fig_dir):
         out.append(case_figure(data_dir, fig_dir, row, name))
     if (data_dir / "period2_fig43.csv").exists():
         out.append(period_doubling_figure(data_dir, fig_dir))
+    for label, row in case_rows(data_dir).items():
+        if (data_dir / ("bifurcation_diagram_%s.csv" % label)).exists():
+            out.append(diagram_figure(data_dir, fig_dir, label, row))
     return out
+
+
+def diagram_figure(data_dir, fig_dir, label, row):
+    """Supplement: the case's bifurcation diagram by time integration over its band (bifurcation_diagram_<label>.csv)
+    under its harmonic-balance curves: above, Delta_max and Delta_min of every branch; below, Delta at
+    phase 0 of each forcing period (the Poincare section) over the HB period-1 branch at that phase."""
+    from poincare import draw_hb_section, draw_poincare
+    full = read_csv(data_dir / ("frc_%s.csv" % label))
+    p, h = (read_csv(data_dir / ("bifurcation_diagram_%s.csv" % label)),
+            read_csv(data_dir / ("bifurcation_diagram_hb_%s.csv" % label)))
+    lo, hi = min(p["omega"]) / 1e3, max(p["omega"]) / 1e3
+    full["w_k"] = [w / 1e3 for w in full["omega"]]
+    h["w_k"], p["w_k"] = [w / 1e3 for w in h["omega"]], [w / 1e3 for w in p["omega"]]
+    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.6, 8.6), sharex=True, gridspec_kw={"height_ratios": [1.0, 1.2]})
+    inside = lambda d: {c: [v[i] for i in range(len(v)) if lo <= d["w_k"][i] <= hi] for c, v in d.items()}
+    band = inside(full)
+    d = rows_of(band, 0)
+    plot_branch(a1, d, "x_max", "0.15", r"HB period 1: $\Delta_{max}$, $\Delta_{min}$", x="w_k", scale=1e3)
+    plot_branch(a1, d, "x_min", "0.15", None, x="w_k", scale=1e3)
+    plot_doubled_branches(a1, band, x="w_k", scale=1e3, entry_per_branch=False)
+    a1.axhline(0.0, **CONTACT_LEVEL)
+    a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
+    handles = draw_hb_section(a2, inside(h), "w_k", "delta", scale=1e3) + draw_poincare(a2, p, "w_k", "delta", scale=1e3)
+    a2.set_ylabel(r"$\Delta$ at phase 0 of each forcing period [mm]")
+    a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]")
+    a2.set_xlim(lo, hi)
+    with open(data_dir / "key_numbers.json") as f:
+        ranges = unstable_period1_ranges(json.load(f), "_" + label)
+    handles += shade_no_stable_period1((a1, a2), [r for r in ranges if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
+                                       scale=1e-3, unit="krad/s")
+    a1.set_title("Fig. %d's case ($F_i$ = %g N m, F = %g): bifurcation diagram by time integration (GSL rk8pd,\n"
+                 "speed stepped up then down, %d speeds each way) under the harmonic-balance branches"
+                 % (int(row["figure"]), row["Fi"], row["Fa"], len(set(p["omega"]))), fontsize=9)
+    h1, _ = a1.get_legend_handles_labels()
+    styles = [hd for hd in legend_styles() if "rug" not in hd.get_label()]   # no contact rug here
+    fig.tight_layout()
+    fig.legend(handles=h1 + handles + styles, fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, 0.0),
+               framealpha=0.9)
+    path = fig_dir / ("figS47_ch06_diagram_%s.png" % label)
+    fig.savefig(path, bbox_inches="tight")   # the legend below the axes, inside the image
+    plt.close(fig)
+    return str(path)
 
 
 def period_doubling_figure(data_dir, fig_dir):

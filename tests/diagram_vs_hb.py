@@ -7,7 +7,8 @@ the same phase (bifurcation_diagram_hb.csv).
 
 X: the frequency column (omega, f_mesh_hz), VALUE: the Poincare value column (x, dte_um),
 GROUP: a column splitting the tables into curves (torque_index; the frequency response of
-curve g is then frc_<g>.csv, else frc.csv). The HB orbits at the diagram's own speeds are the
+curve g is then frc_<g>.csv, else frc.csv), or label=L for a chapter case's own files
+(bifurcation_diagram_L.csv, bifurcation_diagram_hb_L.csv, frc_L.csv). The HB orbits at the diagram's own speeds are the
 rows `point = speed` of the HB table (every segment of the branch stable at both ends that
 brackets the speed, solved by Newton there). The tolerance: HB's own error bound,
 hb_orbit_error of the frequency-response table (max |x_HB - x_exact| over the period, the
@@ -29,13 +30,16 @@ def rows(path):
 def main():
     d_dir, X, V, scale, min_compared = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), int(sys.argv[5])
     group = sys.argv[6] if len(sys.argv) > 6 else None
-    diagram, hb = rows(d_dir + "/bifurcation_diagram.csv"), rows(d_dir + "/bifurcation_diagram_hb.csv")
+    stem = ""
+    if group and group.startswith("label="):
+        stem, group = "_" + group[len("label="):], None
+    diagram, hb = rows(d_dir + "/bifurcation_diagram%s.csv" % stem), rows(d_dir + "/bifurcation_diagram_hb%s.csv" % stem)
     curves = sorted({r[group] for r in hb}) if group else [None]
     failures, elsewhere, compared, worst = [], [], 0, 0.0
     for g in curves:
         h = [r for r in hb if group is None or r[group] == g]
         branch = [r for r in h if r["point"] == "branch"]
-        frc = rows(d_dir + ("/frc.csv" if g is None else "/frc_%s.csv" % g))
+        frc = rows(d_dir + ("/frc%s.csv" % stem if g is None else "/frc_%s.csv" % g))
         frc = [r for r in frc if r.get("branch", "0") == "0"]   # the period-1 branch (period-2 rows follow it)
         assert len(frc) == len(branch), "frc and the HB section table differ in length"
         E = max(float(r["hb_orbit_error"]) * scale for r, b in zip(frc, branch) if b["stable"] == "1"

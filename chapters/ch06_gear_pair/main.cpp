@@ -33,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
@@ -93,6 +94,10 @@ struct Case {
   bool quick;              // part of the regression subset
   double quick_omega_max;  // end of its range in --case quick [rad/s]: just past the first change
   std::vector<Measure> measures;
+  // The band [rad/s] of its bifurcation diagram by time integration (issue 34 §3: the speeds
+  // with no stable period-1 orbit and what the gear does there; {0, 0}: none). The whole
+  // chapter only: not in --case quick.
+  std::pair<double, double> diagram = {0.0, 0.0};
 };
 
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
@@ -101,7 +106,7 @@ const std::vector<Case> kCases = {
     {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}},
     {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
-    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}},
+    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0}},
     {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}},
     {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}},
     {"fig40_kc_alt", "40", Mesh::kc_alt, {1e5, 1e4}, false, 0, {}},
@@ -151,6 +156,7 @@ class GearPairChapter {
   void linear_responses(Run& run) const;
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -324,6 +330,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
                    cell(std::isfinite(h.changed_hi), h.changed_hi), h.x_max, h.x_min});
     run.key_numbers().add("transitions_" + cs.label, h.transitions, "-");
     measure(run, cs, hb, c);
+    if (cs.diagram.second > 0.0 && !run.quick()) bifurcation_diagram(run, cs, hb, c);
   }
   run.write("cases.csv", index);
 }
@@ -338,6 +345,29 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
     if (std::isfinite(omega)) run.key_numbers().add("first_change_omega_" + cs.label, omega, "rad/s");
     else run.say(cs.label + ": the contact state never changes in the frequency range");
   }
+}
+
+// Step 3b (issue 34 §3): the case's bifurcation diagram by time integration over its band, up
+// then down, from the HB orbit at the band's lower end (hb/bifurcation_diagram.hpp: GSL rk8pd
+// with the contact switches located, 400 transient periods, 64 Poincare points per speed):
+// bifurcation_diagram_<label>.csv, Delta at phase 0 of each forcing period;
+// bifurcation_diagram_hb_<label>.csv, the HB branch at the same section (its stable stretches
+// under the Poincare points; tests/diagram_vs_hb.py compares the two views).
+void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb,
+                                          const FrequencyCurve& c) const {
+  BifurcationDiagramOptions o;
+  o.speeds = 150;
+  const auto [lo, hi] = cs.diagram;
+  const BifurcationDiagram d = diagram_of_curve(run, hb, c, lo, hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
+  const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
+  auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
+  Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega"}, "delta"));
+  add_bifurcation_rows(t, d, T2, 1.0, lead);
+  add_hb_section_rows(h, hb, c, d, T2, 1.0, lead);
+  run.write("bifurcation_diagram_" + cs.label + ".csv", t);
+  run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);
+  diagram_key_numbers(run.key_numbers(), d, "_" + cs.label);
+  run.say(cs.label + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
 }
 
 // Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the
