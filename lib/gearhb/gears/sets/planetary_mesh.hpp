@@ -39,10 +39,26 @@ struct MeshPhases {
 };
 MeshPhases mesh_phases(const PlanetaryTeeth& t, const std::vector<double>& planet_angles, double ring_sun_phase);
 
+// A mesh kind's stiffness computed by a tooth model: k(theta) sampled at J >= 4 equal phases
+// theta_j = 2 pi j / J of the mesh cycle [N/m] (the pair model's STE at the mesh's static
+// force F: k_j = F / STE_j, as gearhb_gear's ste_<i>.csv). Its first H harmonics / k_mean,
+// [1, a_1, b_1, ..., a_H, b_H] (H <= (J - 2) / 2; core/fourier.hpp periodic_fourier), k_mean
+// the samples' mean.
+struct SampledMesh {
+  std::vector<double> samples;
+  double mean() const;
+  Eigen::VectorXd harmonics(int H) const;
+};
+
 // The meshes of the set. Mesh i = 0..2N-1: sun-planet meshes 1..N, then ring-planet meshes
 // 1..N (the order of every per-mesh list and table).
 struct PlanetaryMeshes {
   RectangularMesh sun, ring;
+  // A mesh kind's computed stiffness replaces its rectangular wave where it has samples
+  // (its mean is then also sun.mean / ring.mean).
+  SampledMesh sun_computed, ring_computed;
+  // The first H harmonics / k_mean of the stiffness of the sun (ring = false) or ring meshes.
+  Eigen::VectorXd harmonics(bool ring, int H) const;
   MeshPhases phases;
   // Normal backlash b of each mesh along its line of action [m], 2N entries in mesh order;
   // infinite: no back flank (empty: none anywhere, the drive flanks only).

@@ -1,0 +1,158 @@
+// The mesh stiffnesses of a planetary set from its teeth (tools/planetary_stiffness.hpp,
+// gears/sets/planetary_mesh.hpp SampledMesh). Each check names its independent truth: a
+// closed-form Fourier series, the linear statics of Lin & Parker's model, the geometric
+// construction of the path of contact, and ISO 6336-1's formula typed from its table.
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "gearhb/gears/rating/iso6336.hpp"
+#include "gearhb/gears/sets/planetary_mesh.hpp"
+#include "gearhb/gears/tooth/potential_energy.hpp"
+#include "gearhb/tools/planetary_file.hpp"
+#include "gearhb/tools/planetary_stiffness.hpp"
+
+using namespace gearhb;
+
+namespace {
+
+// The teeth of programs/gearhb_planetary/examples/gtf_star_five_planets_teeth.json.
+const PlanetaryTeeth kGtfTeeth{32, 33, 98, 0.0045, 1.0};
+const double kAlpha = 25.0 * M_PI / 180.0;
+
+// The path of contact of the internal pair by construction: the planet's centre at the
+// origin, the ring's at (a, 0), a = (z_r - z_p) m / 2; the line of action n.P = r_bp touches
+// both base circles with both centres on the same side (n.O_r - r_bp = -r_br: n_x = (r_bp -
+// r_br) / a). Along it from the planet's tangent point T_p = r_bp n, P = T_p + s e, the
+// contact points are those inside the planet's tip circle and outside the ring's tip circle
+// (the ring's teeth reach inwards to it) on the side s > 0 (beyond the planet's tangent
+// point), found on a grid of 4e5 points along the line (to 4e-7 m).
+double constructed_internal_contact_ratio(const PlanetaryTeeth& t, double alpha) {
+  const double m = t.module, a = 0.5 * (t.ring - t.planet) * m;
+  const double rbp = 0.5 * t.planet * m * std::cos(alpha), rbr = 0.5 * t.ring * m * std::cos(alpha);
+  const double rap = 0.5 * t.planet * m + m, rar = 0.5 * t.ring * m - m;
+  const double nx = (rbp - rbr) / a, ny = std::sqrt(1.0 - nx * nx);
+  const double Tpx = rbp * nx, Tpy = rbp * ny, ex = -ny, ey = nx;
+  double lo = INFINITY, hi = -INFINITY;
+  const double step = rap / 2e5;
+  for (double s = step; s <= 2.0 * rap; s += step) {
+    const double px = Tpx + s * ex, py = Tpy + s * ey;
+    if (std::hypot(px, py) <= rap && std::hypot(px - a, py) >= rar) lo = std::min(lo, s), hi = std::max(hi, s);
+  }
+  return (hi - lo) / (M_PI * m * std::cos(alpha));
+}
+
+}  // namespace
+
+// k(theta) samples of 3 + 0.6 cos(2 theta) + 0.3 sin(theta): harmonics / mean are exactly
+// [1, 0, 0.1, 0.2, 0, 0, ...] (a trigonometric polynomial is its own Fourier series).
+TEST(PlanetaryStiffness, SampledMeshHarmonicsAreTheFourierSeries) {
+  SampledMesh k;
+  const int J = 16;
+  for (int j = 0; j < J; ++j) {
+    const double th = 2.0 * M_PI * j / J;
+    k.samples.push_back(3.0 + 0.6 * std::cos(2.0 * th) + 0.3 * std::sin(th));
+  }
+  EXPECT_NEAR(k.mean(), 3.0, 1e-14);
+  const Eigen::VectorXd c = k.harmonics(5);
+  const double expected[11] = {1.0, 0.0, 0.1, 0.2, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
+  for (int i = 0; i < 11; ++i) EXPECT_NEAR(c(i), expected[i], 1e-14) << "coefficient " << i;
+  EXPECT_THROW(k.harmonics(8), std::invalid_argument);   // 16 samples resolve 7 harmonics
+}
+
+// The nominal mesh force from the torque balance against the static solution of the
+// linear model (every mesh closed at its mean stiffness, planetary_static_mesh_forces) loaded
+// as gearhb_planetary loads it (planetary_response_model: the file's torque on the input),
+// the input member free to turn and the other two held: the sun, the carrier or the ring
+// driven. Each mesh's static force is F, and positive: the drive flanks carry it.
+TEST(PlanetaryStiffness, NominalForceIsTheStaticSolution) {
+  const int N = 5;
+  PlanetaryFile f;
+  f.teeth = kGtfTeeth;
+  f.set = lin_parker_1999_set(N);
+  f.set.sun_pressure_angle = f.set.ring_pressure_angle = kAlpha;
+  f.meshes.sun = {2e9, 1.6, 1.0};
+  f.meshes.ring = {2.5e9, 1.8, 1.0};
+  f.meshes.phases = mesh_phases(kGtfTeeth, f.set.planet_angles, 0.0);
+  f.response.torque = 1000.0;
+  f.response.harmonics = 2;
+  for (const Body input : {Body::sun, Body::carrier, Body::ring}) {
+    f.response.input = input;
+    for (Body b : {Body::sun, Body::ring, Body::carrier})
+      (b == Body::sun ? f.set.sun : b == Body::ring ? f.set.ring : f.set.carrier).torsional = b == input ? 0.0 : 1e9;
+    const std::vector<double> F0 = planetary_static_mesh_forces(planetary_response_model(f), N);
+    const double F = nominal_mesh_force(kGtfTeeth, kAlpha, N, input, f.response.torque);
+    for (int i = 0; i < 2 * N; ++i) EXPECT_NEAR(F0[std::size_t(i)] / F, 1.0, 1e-9) << "input " << int(input) << " mesh " << i;
+  }
+}
+
+// The internal pair's contact ratio (closed form) against the path of contact constructed
+// on the line of action between the tip circles: the example's ring-planet pair and a
+// 20-degree one.
+TEST(PlanetaryStiffness, InternalContactRatioIsTheConstructedPath) {
+  EXPECT_NEAR(internal_contact_ratio(kGtfTeeth, kAlpha), constructed_internal_contact_ratio(kGtfTeeth, kAlpha), 1e-4);
+  const PlanetaryTeeth t20{27, 33, 93, 0.0032, 1.0};
+  const double a20 = 20.0 * M_PI / 180.0;
+  EXPECT_NEAR(internal_contact_ratio(t20, a20), constructed_internal_contact_ratio(t20, a20), 1e-4);
+  EXPECT_GT(internal_contact_ratio(t20, a20), 1.0);
+}
+
+// ISO 6336-1:2006 eq. (99), Table 9, for the internal pair (zn2 infinite): by hand for the
+// example's planet (z 33, x 0, alpha 25 deg, h_fP = 1.25 m, b = 120 mm, line load >= 100 N/mm):
+//   q' = 0.04723 + 0.15551 / 33 = 0.0519424 mm um / N,  c'_th = 19.2521 N/(mm um),
+//   C_B = [1 + 0.5 (1.2 - 1.25)] [1 - 0.02 (20 - 25)] = 0.975 x 1.1 = 1.0725,
+//   c' = c'_th 0.8 C_B = 16.5183 N/(mm um),  c' b = 1.98220e9 N/m.
+TEST(PlanetaryStiffness, InternalIsoStiffnessIsTheStandardsFormula) {
+  Iso6336Input in;
+  in.z1 = 33;
+  in.internal2 = true;
+  in.normal_pressure_angle_deg = 25.0;
+  in.hfP_over_mn = 1.25;
+  in.eps_alpha = 1.7;
+  in.face_width_m = 0.12;
+  const Iso6336Stiffness s = iso6336_mesh_stiffness(in);
+  const double q = 0.04723 + 0.15551 / 33.0, c = 1.0 / q * 0.8 * 0.975 * 1.1;
+  EXPECT_NEAR(s.q_prime, q, 1e-15);
+  EXPECT_NEAR(s.c_single_total, c * 120.0 * 1e6, 1e-6 * c * 120e6);
+  EXPECT_NEAR(s.c_single_total, 1.98220e9, 1e5);
+  EXPECT_NEAR(s.c_gamma_alpha_total, s.c_single_total * (0.75 * 1.7 + 0.25), 1.0);
+  // an external wheel of many teeth tends to it (the internal gear's limit z2 -> infinity)
+  in.internal2 = false;
+  in.z2 = 100000000;   // C3 / zn2 = 2.6e-9 of q' = 0.052
+  EXPECT_NEAR(iso6336_mesh_stiffness(in).c_single_total / s.c_single_total, 1.0, 1e-7);
+}
+
+// The internal tooth (pe_internal_tooth_compliance) against the external one of as many teeth
+// loaded at the same height above its root: both tend to the rack's tooth as z grows, so
+// their difference must fall as 1/z: a convergence study at z = 400, 1600, 6400, where each
+// difference (bending, shear, axial compliance; load angle) shrinks by 4 within 20 % per step.
+// (To leading order the two teeth's thicknesses differ by 2 s h / r over a height h: the
+// internal tooth thins by s / r per unit height faster than the rack, the external slower;
+// about 9 / z of the thickness at the root here, 27 / z in the bending compliance.)
+TEST(PlanetaryStiffness, InternalToothTendsToTheExternalAsTeethGrow) {
+  PeOptions o;
+  o.fillet_foundation = false;
+  auto parts = [](const PeToothCompliance& c) { return std::vector<double>{c.bending, c.shear, c.axial}; };
+  std::vector<double> diff[3];
+  const int teeth[3] = {400, 1600, 6400};
+  for (int i = 0; i < 3; ++i) {
+    PeGear g;
+    g.teeth = teeth[i];
+    g.module = 0.004;
+    g.pressure_angle = 20.0 * M_PI / 180.0;
+    g.face_width = 0.05;
+    const double r0 = 0.5 * g.module * g.teeth, h = 0.3 * g.module;   // 0.3 m above the pitch circle
+    const PeToothCompliance ext = pe_tooth_compliance(g, r0 + h, o);
+    const PeToothCompliance in = pe_internal_tooth_compliance(g, r0 - h, o);
+    const std::vector<double> e = parts(ext), n = parts(in);
+    for (int k = 0; k < 3; ++k) diff[i].push_back(std::fabs(n[std::size_t(k)] / e[std::size_t(k)] - 1.0));
+    diff[i].push_back(std::fabs(in.load_angle - ext.load_angle));
+  }
+  for (int k = 0; k < 4; ++k)
+    for (int i = 0; i < 2; ++i)
+      EXPECT_NEAR(diff[i][std::size_t(k)] / diff[i + 1][std::size_t(k)], 4.0, 0.8)
+          << "part " << k << ", z " << teeth[i] << " -> " << teeth[i + 1] << ": " << diff[i][std::size_t(k)] << " -> "
+          << diff[i + 1][std::size_t(k)];
+  EXPECT_NEAR(diff[2][0] * 6400, 27.0, 8.0) << "the leading-order estimate of the bending difference";
+}
