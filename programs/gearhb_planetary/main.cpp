@@ -197,7 +197,8 @@ void PlanetarySetFromFile::campbell(Run& run) const {
 // F / STE), k_ring_planet_N_per_m (mesh.ring_planet_stiffness: potential energy, or ISO
 // 6336-1's rectangular wave); sun_planet_pair.json, the
 // sun-planet pair as a gear-pair file that gearhb_gear runs (its ste_1.csv k_N_per_m is the
-// same k); the key numbers of both meshes.
+// same k); the key numbers of both meshes and the ring-sun phase gamma_rs (used, and from the
+// teeth).
 void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
   const PlanetaryToothStiffness& k = file_.tooth;
   Table t({"phase", "k_sun_planet_N_per_m", "k_ring_planet_N_per_m"});
@@ -215,6 +216,8 @@ void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
   const double ring_mean = iso ? k.ring.mean : k.ring_pe.mean();
   key.add("mesh_stiffness_mean_ring_planet_N_per_m", ring_mean, "N/m");
   key.add("contact_ratio_ring_planet", k.ring_contact_ratio, "-");
+  key.add("ring_sun_phase", file_.ring_sun_phase, "cycles");
+  key.add("ring_sun_phase_from_teeth", file_.ring_sun_phase_from_teeth, "cycles");
   char line[240];
   std::snprintf(line, sizeof line, "mesh stiffness from the teeth at F = %.1f N: sun-planet mean %.4g N/m (eps %.3f), "
                 "ring-planet mean %.4g N/m (%s, eps %.3f)", k.tooth_force, k.sun.mean(), k.sun_contact_ratio,

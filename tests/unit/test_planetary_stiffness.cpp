@@ -156,3 +156,31 @@ TEST(PlanetaryStiffness, InternalToothTendsToTheExternalAsTeethGrow) {
           << diff[i + 1][std::size_t(k)];
   EXPECT_NEAR(diff[2][0] * 6400, 27.0, 8.0) << "the leading-order estimate of the bending difference";
 }
+
+// The internal tooth against a second implementation: reference/scripts/internal_tooth_pe.py
+// integrates the same compliances over the radius by composite Simpson (20 000 intervals; the
+// library by Gauss-Legendre in the pressure angle), for the example's ring (z 98, m 4.5 mm,
+// 25 deg, b 120 mm, E 206 GPa, nu 0.3) at its tip, its pitch circle and 1.1 m beyond it.
+TEST(PlanetaryStiffness, InternalToothIsTheSimpsonIntegral) {
+  PeGear g;
+  g.teeth = 98;
+  g.module = 0.0045;
+  g.pressure_angle = 25.0 * M_PI / 180.0;
+  g.face_width = 0.12;
+  g.youngs_modulus = 206e9;
+  g.poisson_ratio = 0.3;
+  struct Row {
+    double r, bending, shear, axial, load_angle;
+  };
+  const Row rows[3] = {{0.216000, 1.2700623298e-10, 1.6416092697e-10, 8.3808678551e-12, 0.396246246340},
+                       {0.220500, 5.6413810095e-12, 5.8965885927e-11, 4.0616900077e-12, 0.452360846945},
+                       {0.225450, 1.0744951582e-12, 5.1046524753e-12, 4.6207893030e-13, 0.508276387327}};
+  for (const Row& w : rows) {
+    const PeToothCompliance c = pe_internal_tooth_compliance(g, w.r);
+    EXPECT_NEAR(c.bending / w.bending, 1.0, 1e-8) << "r " << w.r;
+    EXPECT_NEAR(c.shear / w.shear, 1.0, 1e-8) << "r " << w.r;
+    EXPECT_NEAR(c.axial / w.axial, 1.0, 1e-8) << "r " << w.r;
+    EXPECT_NEAR(c.load_angle, w.load_angle, 1e-11) << "r " << w.r;
+    EXPECT_EQ(c.fillet, 0.0);
+  }
+}

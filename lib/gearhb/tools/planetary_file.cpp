@@ -166,8 +166,11 @@ void read_tooth_model(PlanetaryFile& f, const json& m, const std::string& file) 
       fail_key(file, "mesh.ring_planet_stiffness", "must be one of potential_energy | iso6336");
     f.ring_planet_model = k == "iso6336" ? RingPlanetModel::iso6336 : RingPlanetModel::potential_energy;
   }
-  f.meshes.phases = mesh_phases(f.teeth, f.set.planet_angles,
-                                optional_number(m, file, "mesh", "ring_sun_phase", 0.0, 0.0, 1.0, "[0, 1] mesh cycles"));
+  // gamma_rs from the teeth unless the file gives it (an override)
+  f.ring_sun_phase_from_teeth = ring_sun_phase_from_teeth(f.teeth, f.set.sun_pressure_angle);
+  f.ring_sun_phase = optional_number(m, file, "mesh", "ring_sun_phase", f.ring_sun_phase_from_teeth, 0.0, 1.0,
+                                     "[0, 1] mesh cycles");
+  f.meshes.phases = mesh_phases(f.teeth, f.set.planet_angles, f.ring_sun_phase);
   read_backlash(f, m, file);
 }
 
@@ -338,7 +341,8 @@ std::string planetary_file_help() {
          "  mesh.sun_planet/ring_planet   mean mesh stiffness [N/m]\n"
          "  mesh.sun_contact_ratio/ring_contact_ratio   of the rectangular wave (1.6, 1.8)\n"
          "  mesh.stiffness_ratio     k_double / k_single of both meshes (1: constant)\n"
-         "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0)\n"
+         "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0; with\n"
+         "                           mesh.stiffness tooth_model: from the teeth unless given)\n"
          "  mesh.stiffness           rectangular (default: the keys above) | tooth_model: the sun-planet mesh's\n"
          "                           k(theta) by gearhb_gear's pair model of mesh.sun_planet_pair (the gear-pair\n"
          "                           file's basic_rack, gears [sun, planet] without z, model), the ring-planet\n"

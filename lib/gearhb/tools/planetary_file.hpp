@@ -28,6 +28,7 @@
 //                                     the sun-planet pair in the gear-pair file's keys (gear_file.hpp)
 //                                     without z, module, pressure angle, addendum (the set's), x = 0
 //                 "ring_planet_stiffness": "potential_energy",        or "iso6336"
+//                 "ring_sun_phase": optional, default from the teeth (ring_sun_phase_from_teeth)
 //                 "ring_sun_phase": 0, ...backlash keys as above}
 //     "response": {"input": "sun", "torque": 100,                      optional: the response over
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
@@ -75,6 +76,8 @@ struct PlanetaryFile {
   bool tooth_model = false;     // mesh.stiffness tooth_model (tools/planetary_stiffness.hpp)
   nlohmann::json sun_planet_pair;   // mesh.sun_planet_pair as the file gives it
   RingPlanetModel ring_planet_model = RingPlanetModel::potential_energy;   // mesh.ring_planet_stiffness
+  double ring_sun_phase = 0.0;            // tooth_model: gamma_rs used (the file's, or from the teeth)
+  double ring_sun_phase_from_teeth = 0.0; // tooth_model: ring_sun_phase_from_teeth
   PlanetaryToothStiffness tooth;    // what the tooth model gave (tooth_model only)
   PlanetaryResponseInput response;
   double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)

@@ -175,6 +175,13 @@ double internal_contact_ratio(const PlanetaryTeeth& t, double alpha) {
   return (p.T1E - p.T1A) / p.pb;
 }
 
+double ring_sun_phase_from_teeth(const PlanetaryTeeth& t, double alpha) {
+  const InternalPath p = internal_path(t, alpha);
+  const double theta_b = 0.5 * M_PI / t.planet + involute(alpha);
+  const double g = t.planet / (2.0 * M_PI) * (M_PI - 2.0 * alpha - 2.0 * theta_b + (p.T1E + p.T1A) / p.rbp);
+  return g - std::floor(g);
+}
+
 PlanetaryToothStiffness planetary_tooth_stiffness(const json& pair, const std::string& file, const std::string& name,
                                                   const PlanetaryTeeth& t, double alpha, int planets, Body input,
                                                   double torque, RingPlanetModel ring_model) {

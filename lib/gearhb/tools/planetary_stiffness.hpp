@@ -68,6 +68,23 @@ InternalPath internal_path(const PlanetaryTeeth& t, double pressure_angle);
 
 enum class RingPlanetModel { potential_energy, iso6336 };
 
+// The ring-sun mesh phase gamma_rs [mesh cycles, in [0, 1)] of a planet from the teeth
+// (unshifted, standard centre distances), the sun turning counter-clockwise relative to the
+// carrier (planetary_mesh.hpp mesh_phases), each mesh's wave starting (theta = 0) when a new
+// pair enters its path at A. The planet turns clockwise by phi; the sun pushes the flanks of
+// its teeth that face backwards, it pushes the ring with the flanks that face forwards (the
+// two meshes use opposite flanks: the tooth thickness enters). An involute flank meets a line
+// of action at rb_p times the angle between its origin on the base circle and the line's
+// tangent point; with the tangent points of the sun-planet and ring-planet lines at alpha and
+// pi - alpha from the direction to the sun's centre, a pair enters the sun mesh at the
+// planet's tip (T2A_s = sqrt(r_ap^2 - r_bp^2) from its tangent point, the distance falling as
+// phi grows) and the ring mesh at T1A_r (internal_path; the distance growing), so
+//     gamma_rs = z_p / (2 pi) [pi - 2 alpha - 2 theta_b + (T2A_s + T1A_r) / r_bp]   (mod 1),
+//     theta_b = pi / (2 z_p) + inv(alpha)   (the planet's half tooth angle at its base circle).
+// (Parker & Lin 2004 eq. (10) states the same dependence on the tooth thickness; this is our
+// derivation, checked by the construction of reference/scripts/planetary_ring_sun_phase.py.)
+double ring_sun_phase_from_teeth(const PlanetaryTeeth& t, double pressure_angle);
+
 // What the tooth model gives for a set.
 struct PlanetaryToothStiffness {
   nlohmann::json sun_planet_pair;   // the sun-planet pair as a gear-pair file (torques [T1])
