@@ -1,6 +1,9 @@
 #include "gearhb/tools/planetary_stiffness.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <string>
+#include <utility>
 
 #include "gearhb/app/cli.hpp"
 #include "gearhb/app/json_file.hpp"
@@ -48,14 +51,20 @@ json sun_planet_pair_file(const json& pair, const std::string& file, const std::
   return g;
 }
 
-// read_gear_json's error, its key named where the set file has it (mesh.sun_planet_pair.<key>).
+// read_gear_json's error, its key named where the set file has it: the teeth the set's
+// (gears.0.z: teeth.sun, gears.1.z: teeth.planet), the others mesh.sun_planet_pair.<key>.
 GearFile read_pair(const json& g, const std::string& file) {
   try {
     return read_gear_json(g, file);
   } catch (const UsageError& e) {
     std::string m = e.what();
     const std::string head = file + ": '";
-    if (m.compare(0, head.size(), head) == 0) m.insert(head.size(), std::string(kPairKey) + ".");
+    if (m.compare(0, head.size(), head) != 0) throw;
+    const std::pair<const char*, const char*> teeth[] = {{"gears.0.z'", "teeth.sun'"}, {"gears.1.z'", "teeth.planet'"}};
+    for (const auto& [pair_key, set_key] : teeth)
+      if (m.compare(head.size(), std::string(pair_key).size(), pair_key) == 0)
+        throw UsageError(head + set_key + m.substr(head.size() + std::string(pair_key).size()));
+    m.insert(head.size(), std::string(kPairKey) + ".");
     throw UsageError(m);
   }
 }
@@ -66,6 +75,9 @@ void sun_planet_mesh(PlanetaryToothStiffness& s, const json& pair, const std::st
   const GearFile unit = read_pair(sun_planet_pair_file(pair, file, name, t, alpha, 1.0), file);
   const std::unique_ptr<LoadedPair> model = gear_file_loaded_pair(unit);
   s.sun_planet_torque = s.tooth_force / model->force(1.0);   // the force is linear in the torque
+  if (!(s.sun_planet_torque >= 1e-3 && s.sun_planet_torque <= 1e7))
+    fail_key(file, "response.torque", "gives one sun-planet pair T1 = " + std::to_string(s.sun_planet_torque) +
+                                          " N m, outside the pair model's [1e-3, 1e7] N m");
   s.sun_planet_pair = sun_planet_pair_file(pair, file, name, t, alpha, s.sun_planet_torque);
   const double F = model->force(s.sun_planet_torque);
   for (const PairStePoint& p : model->ste(s.sun_planet_torque)) s.sun.samples.push_back(F / p.ste);
@@ -193,7 +205,14 @@ PlanetaryToothStiffness planetary_tooth_stiffness(const json& pair, const std::s
   if (ring_model == RingPlanetModel::iso6336) {
     ring_planet_iso(s, loaded, file, t, alpha);
   } else {
-    ring_planet_pe(s, loaded, file, t, alpha, int(s.sun.samples.size()));
+    try {
+      ring_planet_pe(s, loaded, file, t, alpha, int(s.sun.samples.size()));
+    } catch (const UsageError&) {
+      throw;
+    } catch (const std::exception& e) {   // a tooth the potential-energy method does not take
+      fail_key(file, "teeth.planet", std::string("gives a ring-planet pair the potential-energy method does not take: ") +
+                                         e.what());
+    }
   }
   return s;
 }
