@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """gearhb_planetary's ring-sun phase gamma_rs from the teeth (key number ring_sun_phase_from_teeth,
 and ring_sun_phase where the file does not give it) against the construction in the plane of
-reference/scripts/planetary_ring_sun_phase.py (issue 36).
+reference/scripts/planetary_ring_sun_phase.py (issue 36); and the ring-planet mesh's back-flank
+mirror phase (key number back_mirror_phase_ring_planet) against its construction there.
 
     planetary_ring_sun_phase.py BIN_DIR SET.json WORK_DIR
 
@@ -15,7 +16,7 @@ import subprocess
 import sys
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "reference", "scripts"))
-from planetary_ring_sun_phase import ring_sun_phase  # noqa: E402
+from planetary_ring_sun_phase import ring_back_mirror, ring_sun_phase  # noqa: E402
 
 
 def main():
@@ -44,7 +45,10 @@ def main():
         ref = ring_sun_phase(zs, zp, zr, s["module"], alpha)
         d = min(abs(ours - ref), 1 - abs(ours - ref))
         print(f"z {zs}/{zp}/{zr}, {alpha} deg: gamma_rs {ours:.12f}, construction {ref:.12f}, used {used:.12f}")
-        if d > 1e-9 or used != ours:
+        back, back_ref = keys["back_mirror_phase_ring_planet"]["value"], ring_back_mirror(zs, zp, zr, s["module"], alpha)
+        d_back = min(abs(back - back_ref), 1 - abs(back - back_ref))
+        print(f"    ring-planet back-flank mirror phase {back:.12f}, construction {back_ref:.12f}")
+        if d > 1e-9 or used != ours or d_back > 1e-9:
             bad += 1
     if bad:
         sys.exit(f"{bad} case(s) differ")

@@ -218,6 +218,9 @@ void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
   key.add("contact_ratio_ring_planet", k.ring_contact_ratio, "-");
   key.add("ring_sun_phase", file_.ring_sun_phase, "cycles");
   key.add("ring_sun_phase_from_teeth", file_.ring_sun_phase_from_teeth, "cycles");
+  key.add("back_mirror_phase_sun_planet", k.sun_back_mirror / (2.0 * M_PI), "cycles");
+  key.add("back_mirror_phase_ring_planet", k.ring_back_mirror / (2.0 * M_PI), "cycles");
+  key.add("back_flanks_mirrored", file_.back_phase_from_teeth ? 1.0 : 0.0, "-");
   char line[240];
   std::snprintf(line, sizeof line, "mesh stiffness from the teeth at F = %.1f N: sun-planet mean %.4g N/m (eps %.3f), "
                 "ring-planet mean %.4g N/m (%s, eps %.3f)", k.tooth_force, k.sun.mean(), k.sun_contact_ratio,

@@ -5,7 +5,9 @@
     planetary_ring_sun_phase.py Z_SUN Z_PLANET Z_RING MODULE PRESSURE_ANGLE_DEG [ADDENDUM]
 
 prints gamma_rs in mesh cycles (the ring-planet mesh's stiffness wave lags the sun-planet mesh's
-by gamma_rs; both waves start, theta = 0, when a new tooth pair enters the path of contact).
+by gamma_rs; both waves start, theta = 0, when a new tooth pair enters the path of contact), and
+the ring-planet mesh's back-flank mirror phase psi / (2 pi) (ring_back_mirror below; the
+library's ring_back_mirror_phase).
 
 Construction, in the carrier frame (no formula of the library): the sun's centre O = (0, 0),
 the planet's C = (0, a), a = (z_s + z_p) m / 2; the sun turns counter-clockwise, the planet
@@ -75,8 +77,58 @@ def ring_sun_phase(zs, zp, zr, m, alpha_deg, ha=1.0):
     return g - math.floor(g)
 
 
+def ring_back_mirror(zs, zp, zr, m, alpha_deg, ha=1.0):
+    """The ring-planet mesh's back-flank mirror phase psi / (2 pi) [cycles], by construction: the
+    back line is the drive line mirrored about the line of centres (x = 0), its planet tangent
+    point T' = C + r_bp (sin a, cos a). At the instant a drive pair enters at A_r (phi0 as in
+    ring_sun_phase), the planet's backward-facing flank of a tooth is intersected with the back
+    line (points of the involute by their polar angle, the crossing found by bisection on the
+    signed distance to the line), d_b its distance from T'. A back pair at d_b from T' is the
+    mirror of a drive pair at d_b from T, which the drive flanks reach psi - 0 later:
+    psi p_b / (2 pi) = d_b - T1A (mod p_b), T1A = |A_r - T|."""
+    al = math.radians(alpha_deg)
+    rs, rp, rr = zs * m / 2, zp * m / 2, zr * m / 2
+    a = rs + rp
+    rbp = rp * math.cos(al)
+    rap, rar = rp + ha * m, rr - ha * m
+    pb = math.pi * m * math.cos(al)
+    C = (0.0, a)
+    ur = (-math.cos(al), -math.sin(al))
+    pr = (0.0, rr)
+    Pr = lambda d: (pr[0] + d * ur[0], pr[1] + d * ur[1])
+    d_r = bisect(lambda d: math.hypot(*Pr(d)) - rar, 0.0, rp * math.sin(al))
+    Ar = Pr(d_r)
+    T = (C[0] - rbp * math.sin(al), C[1] + rbp * math.cos(al))
+    T1A = math.dist(Ar, T)
+    x, y = Ar[0] - C[0], Ar[1] - C[1]
+    theta_b = math.pi / (2 * zp) + inv(al)
+    phi0 = math.atan2(-x, -y) - theta_b + inv(math.acos(rbp / math.hypot(x, y)))
+    # the drive path runs from T along -ur (towards the pitch point); the back path from T'
+    # along its mirror v = (-cos a, sin a); n the back line's normal
+    Tb = (C[0] + rbp * math.sin(al), C[1] + rbp * math.cos(al))
+    v = (-math.cos(al), math.sin(al))
+    n = (-v[1], v[0])
+
+    def flank(j, r):   # the backward-facing flank of tooth j at radius r
+        ang = phi0 + 2 * math.pi * j / zp - theta_b + inv(math.acos(rbp / r))
+        return (C[0] - r * math.sin(ang), C[1] - r * math.cos(ang))
+
+    for j in range(zp):
+        f = lambda r: (flank(j, r)[0] - Tb[0]) * n[0] + (flank(j, r)[1] - Tb[1]) * n[1]
+        lo, hi = rbp * (1 + 1e-12), rap
+        if f(lo) * f(hi) < 0:
+            P = flank(j, bisect(f, lo, hi))
+            d_b = (P[0] - Tb[0]) * v[0] + (P[1] - Tb[1]) * v[1]
+            if d_b > 0:   # on the side of the back path
+                g = (d_b - T1A) / pb
+                return g - math.floor(g)
+    raise RuntimeError("no flank crosses the back line")
+
+
 if __name__ == "__main__":
     args = [float(v) for v in sys.argv[1:]]
     if len(args) < 5:
         sys.exit(__doc__)
-    print(f"{ring_sun_phase(int(args[0]), int(args[1]), int(args[2]), args[3], args[4], *(args[5:6])):.12f}")
+    z = (int(args[0]), int(args[1]), int(args[2]))
+    print(f"gamma_rs {ring_sun_phase(*z, args[3], args[4], *(args[5:6])):.12f}")
+    print(f"ring back mirror phase {ring_back_mirror(*z, args[3], args[4], *(args[5:6])):.12f} cycles")

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/fourier.hpp"
 #include "gearhb/gears/rating/iso6336.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
@@ -182,5 +183,35 @@ TEST(PlanetaryStiffness, InternalToothIsTheSimpsonIntegral) {
     EXPECT_NEAR(c.axial / w.axial, 1.0, 1e-8) << "r " << w.r;
     EXPECT_NEAR(c.load_angle, w.load_angle, 1e-11) << "r " << w.r;
     EXPECT_EQ(c.fillet, 0.0);
+  }
+}
+
+// A mirrored back flank (PlanetaryMeshes::sun_back_mirror, ring_back_mirror): the back
+// contact of mesh i takes k(psi - theta_i), theta_i = theta - 2 pi gamma_i its drive flank's
+// own phase, where the drive contact takes k(theta_i) (the first H harmonics of the wave,
+// evaluated here from the series directly).
+TEST(PlanetaryStiffness, MirroredBackFlankIsTheDriveWaveReflected) {
+  const int N = 3, H = 6;
+  PlanetarySet s = lin_parker_1999_set(N);
+  PlanetaryMeshes m;
+  m.sun = {2e9, 1.55, 1.4};
+  m.ring = {2.5e9, 1.7, 1.3};
+  m.phases = mesh_phases(PlanetaryTeeth{27, 33, 93, 0.0032, 1.0}, s.planet_angles, 0.3);
+  m.backlash.assign(2 * N, 1e-4);
+  m.sun_back_mirror = 2.0;
+  m.ring_back_mirror = 4.5;
+  const std::vector<UnilateralContact> c = planetary_mesh_contacts(s, m, H);
+  const std::vector<int> back = back_flank_contacts(m, N);
+  for (int i = 0; i < 2 * N; ++i) {
+    const bool ring = i >= N;
+    const double gamma = (ring ? m.phases.ring : m.phases.sun)[std::size_t(i % N)];
+    const double psi = ring ? m.ring_back_mirror : m.sun_back_mirror;
+    const Eigen::VectorXd series = m.harmonics(ring, H);
+    for (double theta : {0.0, 0.7, 2.9, 5.1}) {
+      const double own = theta - 2.0 * M_PI * gamma;
+      EXPECT_NEAR(c[std::size_t(i)].stiffness_profile(theta), trig_series(series, own), 1e-12);
+      EXPECT_NEAR(c[std::size_t(back[std::size_t(i)])].stiffness_profile(theta), trig_series(series, psi - own), 1e-12)
+          << "mesh " << i << " theta " << theta;
+    }
   }
 }

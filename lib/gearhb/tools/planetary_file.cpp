@@ -171,6 +171,7 @@ void read_tooth_model(PlanetaryFile& f, const json& m, const std::string& file) 
   f.ring_sun_phase = optional_number(m, file, "mesh", "ring_sun_phase", f.ring_sun_phase_from_teeth, 0.0, 1.0,
                                      "[0, 1] mesh cycles");
   f.meshes.phases = mesh_phases(f.teeth, f.set.planet_angles, f.ring_sun_phase);
+  f.back_phase_from_teeth = !m.contains("back_phase");   // else the file's back_phase overrides
   read_backlash(f, m, file);
 }
 
@@ -210,6 +211,7 @@ void compute_tooth_stiffness(PlanetaryFile& f, const std::string& file) {
     fail_key(file, "response.harmonics", "must be at most (mesh.sun_planet_pair.model.phases - 2) / 2 = " +
                                              std::to_string((J - 2) / 2) + " (the pair model's phases resolve no more)");
   PlanetaryMeshes& m = f.meshes;
+  if (f.back_phase_from_teeth) m.sun_back_mirror = f.tooth.sun_back_mirror, m.ring_back_mirror = f.tooth.ring_back_mirror;
   m.sun_computed = f.tooth.sun;
   m.sun.mean = f.set.sun_mesh = f.tooth.sun.mean();
   m.sun.contact_ratio = f.tooth.sun_contact_ratio;
@@ -342,7 +344,8 @@ std::string planetary_file_help() {
          "  mesh.sun_contact_ratio/ring_contact_ratio   of the rectangular wave (1.6, 1.8)\n"
          "  mesh.stiffness_ratio     k_double / k_single of both meshes (1: constant)\n"
          "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0; with\n"
-         "                           mesh.stiffness tooth_model: from the teeth unless given)\n"
+         "                           mesh.stiffness tooth_model: from the teeth unless given; so is the back\n"
+         "                           flanks' wave, the mirror image of the drive flank's, unless back_phase is given)\n"
          "  mesh.stiffness           rectangular (default: the keys above) | tooth_model: the sun-planet mesh's\n"
          "                           k(theta) by gearhb_gear's pair model of mesh.sun_planet_pair (the gear-pair\n"
          "                           file's basic_rack, gears [sun, planet] without z, model), the ring-planet\n"

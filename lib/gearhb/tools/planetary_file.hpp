@@ -29,6 +29,8 @@
 //                                     without z, module, pressure angle, addendum (the set's), x = 0
 //                 "ring_planet_stiffness": "potential_energy",        or "iso6336"
 //                 "ring_sun_phase": optional, default from the teeth (ring_sun_phase_from_teeth)
+//                 "back_phase": optional; absent: each back flank's wave the mirror image of its
+//                               drive flank's (planetary_mesh.hpp sun_back_mirror, ring_back_mirror)
 //                 "ring_sun_phase": 0, ...backlash keys as above}
 //     "response": {"input": "sun", "torque": 100,                      optional: the response over
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
@@ -78,6 +80,7 @@ struct PlanetaryFile {
   RingPlanetModel ring_planet_model = RingPlanetModel::potential_energy;   // mesh.ring_planet_stiffness
   double ring_sun_phase = 0.0;            // tooth_model: gamma_rs used (the file's, or from the teeth)
   double ring_sun_phase_from_teeth = 0.0; // tooth_model: ring_sun_phase_from_teeth
+  bool back_phase_from_teeth = false;     // tooth_model without mesh.back_phase: mirrored back flanks
   PlanetaryToothStiffness tooth;    // what the tooth model gave (tooth_model only)
   PlanetaryResponseInput response;
   double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)

@@ -7,6 +7,7 @@
 
 #include "gearhb/app/cli.hpp"
 #include "gearhb/app/json_file.hpp"
+#include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
 #include "gearhb/tools/gear_file.hpp"
 
@@ -194,6 +195,13 @@ double ring_sun_phase_from_teeth(const PlanetaryTeeth& t, double alpha) {
   return g - std::floor(g);
 }
 
+double ring_back_mirror_phase(const PlanetaryTeeth& t, double alpha) {
+  const InternalPath p = internal_path(t, alpha);
+  const double s_b = p.rbp * (M_PI / t.planet + 2.0 * involute(alpha));
+  const double phi = (s_b + 2.0 * alpha * p.rbp - 2.0 * p.T1A) / p.pb;
+  return 2.0 * M_PI * (phi - std::floor(phi));
+}
+
 PlanetaryToothStiffness planetary_tooth_stiffness(const json& pair, const std::string& file, const std::string& name,
                                                   const PlanetaryTeeth& t, double alpha, int planets, Body input,
                                                   double torque, RingPlanetModel ring_model) {
@@ -201,6 +209,8 @@ PlanetaryToothStiffness planetary_tooth_stiffness(const json& pair, const std::s
   s.tooth_force = nominal_mesh_force(t, alpha, planets, input, torque);
   sun_planet_mesh(s, pair, file, name, t, alpha);
   const GearFile loaded = read_pair(s.sun_planet_pair, file);
+  s.sun_back_mirror = back_flank_phase(loaded.pair);
+  s.ring_back_mirror = ring_back_mirror_phase(t, alpha);
   s.ring_model = ring_model;
   if (ring_model == RingPlanetModel::iso6336) {
     ring_planet_iso(s, loaded, file, t, alpha);

@@ -85,6 +85,15 @@ enum class RingPlanetModel { potential_energy, iso6336 };
 // derivation, checked by the construction of reference/scripts/planetary_ring_sun_phase.py.)
 double ring_sun_phase_from_teeth(const PlanetaryTeeth& t, double pressure_angle);
 
+// The ring-planet mesh's back-flank mirror phase psi [rad, in [0, 2 pi)] (planetary_mesh.hpp
+// ring_back_mirror): gearhb_gear's back_flank_phase (mesh_dynamics.hpp) with the planet as
+// gear 1 of the internal pair: the derivation there uses only gear 1's tooth and the symmetry
+// of the two lines of action about the line of centres, which the internal pair shares, so
+//     psi = 2 pi (s_bp + 2 alpha r_bp - 2 T1A_r) / p_b   (mod 2 pi),
+// s_bp = r_bp (pi / z_p + 2 inv(alpha)) the planet's base tooth thickness, T1A_r internal_path's.
+// (The sun-planet mesh's is back_flank_phase of its pair, the sun gear 1.)
+double ring_back_mirror_phase(const PlanetaryTeeth& t, double pressure_angle);
+
 // What the tooth model gives for a set.
 struct PlanetaryToothStiffness {
   nlohmann::json sun_planet_pair;   // the sun-planet pair as a gear-pair file (torques [T1])
@@ -95,6 +104,7 @@ struct PlanetaryToothStiffness {
   RingPlanetModel ring_model = RingPlanetModel::potential_energy;
   SampledMesh ring_pe;              // potential_energy: k(theta) of the ring-planet pair [N/m]
   double ring_contact_ratio = 0.0;  // of the ring-planet pair's geometry
+  double sun_back_mirror = 0.0, ring_back_mirror = 0.0;   // psi of each mesh kind's back flank [rad]
   Iso6336Stiffness ring_iso;        // iso6336: ISO 6336-1 of the ring-planet pair
   RectangularMesh ring;             // iso6336: its rectangular wave
   // k(theta) of the ring-planet mesh at phase theta [N/m], either model.

@@ -118,7 +118,8 @@ std::vector<UnilateralContact> planetary_mesh_contacts(const PlanetarySet& s, co
       b.normal = -ct.normal;
       b.kc = mesh.mean;
       b.gap = -m.backlash[std::size_t(i)] - ct.gap;
-      b.stiffness_profile = shifted(c, gamma + m.back_phase);
+      const double psi = ring ? m.ring_back_mirror : m.sun_back_mirror;
+      b.stiffness_profile = std::isfinite(psi) ? shifted(reflected_series(c, psi), gamma) : shifted(c, gamma + m.back_phase);
       back.push_back(std::move(b));
     }
     drive.push_back(std::move(ct));
