@@ -215,3 +215,50 @@ TEST(PlanetaryStiffness, MirroredBackFlankIsTheDriveWaveReflected) {
     }
   }
 }
+
+// The ring-planet mesh's k(theta) of the example (programs/gearhb_planetary/examples/
+// gtf_star_five_planets_teeth.json) at phase 0 rebuilt here: the pairs on the internal line of
+// action constructed in the plane (as InternalContactRatioIsTheConstructedPath, the entry A on
+// the ring's tip circle refined by bisection), one at A and one a base pitch on, each the
+// planet's tooth (pe_tooth_compliance, its fillet foundation at the planet's rim radius 35
+// mm), the ring's (pe_internal_tooth_compliance) and the linear Hertz term in series, the two
+// pairs in parallel, with the radii measured from the two centres.
+TEST(PlanetaryStiffness, RingPlanetStiffnessIsThePairsOnTheConstructedPath) {
+  const nlohmann::json pair = {
+      {"basic_rack", {{"dedendum", 1.25}, {"root_radius", 0.38}}},
+      {"gears", {{{"x", 0}, {"b", 0.12}, {"E", 206e9}, {"nu", 0.3}, {"rim_radius", 0.03}},
+                 {{"x", 0}, {"b", 0.12}, {"E", 206e9}, {"nu", 0.3}, {"rim_radius", 0.035}}}},
+      {"model", {{"method", "potential_energy"}, {"phases", 64}, {"hertz", "none"}, {"tooth_force", "base_radius"}}}};
+  const PlanetaryToothStiffness k =
+      planetary_tooth_stiffness(pair, "test", "test", kGtfTeeth, kAlpha, 5, Body::sun, 19100.0, RingPlanetModel::potential_energy);
+  // the construction
+  const PlanetaryTeeth& t = kGtfTeeth;
+  const double m = t.module, a = 0.5 * (t.ring - t.planet) * m;
+  const double rbp = 0.5 * t.planet * m * std::cos(kAlpha), rbr = 0.5 * t.ring * m * std::cos(kAlpha);
+  const double rap = 0.5 * t.planet * m + m, rar = 0.5 * t.ring * m - m, pb = M_PI * m * std::cos(kAlpha);
+  const double nx = (rbp - rbr) / a, ny = std::sqrt(1.0 - nx * nx);
+  auto point = [&](double s) { return std::pair<double, double>{rbp * nx - s * ny, rbp * ny + s * nx}; };
+  auto outside_ring_tip = [&](double s) { const auto [x, y] = point(s); return std::hypot(x - a, y) - rar; };
+  double lo = 0.0, hi = std::sqrt(rap * rap - rbp * rbp);   // inside the ring's tip circle at s = 0
+  ASSERT_LT(outside_ring_tip(lo), 0.0);
+  ASSERT_GT(outside_ring_tip(hi), 0.0);
+  for (int i = 0; i < 200; ++i) (outside_ring_tip(0.5 * (lo + hi)) < 0.0 ? lo : hi) = 0.5 * (lo + hi);
+  PeGear planet;
+  planet.teeth = t.planet;
+  planet.module = m;
+  planet.pressure_angle = kAlpha;
+  planet.face_width = 0.12;
+  planet.youngs_modulus = 206e9;
+  planet.bore_radius = 0.035;
+  PeGear ring = planet;
+  ring.teeth = t.ring;
+  ring.bore_radius = 0.0;
+  double sum = 0.0;
+  for (double s = hi; s <= std::sqrt(rap * rap - rbp * rbp); s += pb) {
+    const auto [x, y] = point(s);
+    sum += 1.0 / (pe_tooth_compliance(planet, std::hypot(x, y)).total() +
+                  pe_internal_tooth_compliance(ring, std::hypot(x - a, y)).total() + pe_hertz_compliance(planet, ring));
+  }
+  ASSERT_EQ(k.ring_pe.samples.size(), 64u);
+  EXPECT_NEAR(k.ring_pe.samples[0] / sum, 1.0, 1e-9);
+}
