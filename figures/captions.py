@@ -264,6 +264,11 @@ GEAR_CAPTIONS = {
                     "switched at the period doublings in colours of their own and the speeds with no stable "
                     "period-1 orbit shaded (where there are any); the rug below the axis is the contact of each "
                     "flank (drive-flank loss, back-flank impact), one row per curve.",
+    "mesh_stiffness.png": "Mesh stiffness from the teeth (mesh.stiffness tooth_model) over one mesh cycle at the "
+                          "static load: the sun-planet mesh by gearhb_gear's pair model of the same pair, the "
+                          "ring-planet mesh by the potential-energy method with an internal tooth (or ISO 6336-1's "
+                          "rectangular wave); dotted, their means. Notice the steps where a pair enters and leaves "
+                          "(contact ratios from the geometry) and how much stiffer the internal mesh is.",
     "campbell.png": "Campbell diagram: mesh orders 1-4 against speed with the natural frequencies of the "
                     "linear, always-closed mesh. An order line crosses one where that linear mesh would resonate; the "
                     "computed peaks (response.png) lie lower wherever the teeth separate, the softening of contact loss.",
@@ -307,6 +312,11 @@ PLANETARY_CAPTIONS = {
                  "grey, the mode in colour. Notice the central members (sun, ring, carrier): in a rotational mode "
                  "they only turn, in a translational mode they only translate, in a planet mode (N > 3) they stay "
                  "still - Lin & Parker's three types, with multiplicities 1, 2 and N - 3.",
+    "mesh_stiffness.png": "Mesh stiffness from the teeth (mesh.stiffness tooth_model) over one mesh cycle at the "
+                          "static load: the sun-planet mesh by gearhb_gear's pair model of the same pair, the "
+                          "ring-planet mesh by the potential-energy method with an internal tooth (or ISO 6336-1's "
+                          "rectangular wave); dotted, their means. Notice the steps where a pair enters and leaves "
+                          "(contact ratios from the geometry) and how much stiffer the internal mesh is.",
     "campbell.png": "Campbell diagram: the natural frequencies in the carrier frame against the carrier speed, with "
                     "the gyroscopic and centripetal terms; each line is the k-th frequency at each speed, not a "
                     "mode followed.",

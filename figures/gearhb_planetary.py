@@ -17,6 +17,8 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
   load_sharing.png  (with `response`) the planet load-sharing factor of every planet over the
                 mesh frequency;
   campbell.png  (with `campbell`) the natural frequencies over carrier speed;
+  mesh_stiffness.png  (with mesh.stiffness tooth_model) k(theta) of the sun-planet and the
+                ring-planet meshes over one mesh cycle, their means dotted;
   phasing.png   (with `response`) the largest amplitude over the curve of each mesh harmonic
                 of the sun's rotation and centre, with the mode family mesh phasing lets the
                 harmonic drive (sun_harmonics.csv's phasing column).
@@ -200,7 +202,7 @@ def meshes_figure(d_dir, params):
     back = params["mesh"].get("sun_planet_backlash", params["mesh"].get("ring_planet_backlash"))
     alike = all(abs(d["dynamic_factor_%s_%d" % (k, n + 1)][i] - d["dynamic_factor_%s_1" % k][i]) < 5e-3
                 for k in ("sun", "ring") for n in range(N) for i in range(len(hz)))
-    fig.suptitle("%s, %g N m on the %s: K_v = largest |drive - back force| / static force\n%s"
+    fig.suptitle("%s, %g N m on the %s:\nK_v = largest |drive - back force| / static force, %s"
                  % (params.get("name", "planetary set"), params["response"]["torque"], params["response"]["input"],
                     ("back flanks at the file's backlash" if back is not None else "drive flanks only (no backlash given)") +
                     ("\nevery planet's mesh alike (to the 1e-3 of the sampled maxima): the lines lie on one another"
@@ -228,6 +230,30 @@ def load_sharing_figure(d_dir, params):
     return save(fig, d_dir / "load_sharing.png")
 
 
+def mesh_stiffness_figure(d_dir, params):
+    """mesh_stiffness.png: k(theta) of both mesh kinds over one mesh cycle, as computed from the teeth."""
+    d = read_csv(d_dir / "mesh_stiffness.csv")
+    mesh = params["mesh"]
+    sun_model = mesh["sun_planet_pair"].get("model", {}).get("method", "fe")
+    ring_model = mesh.get("ring_planet_stiffness", "potential_energy")
+    names = {"potential_energy": "potential energy", "beam": "beam model", "fe": "finite elements",
+             "iso6336": "ISO 6336-1 rectangular wave"}
+    fig, ax = plt.subplots(figsize=(7.0, 4.2))
+    for col, colour, label in (("k_sun_planet_N_per_m", "C0", "sun-planet (%s, gearhb_gear's pair)" % names[sun_model]),
+                               ("k_ring_planet_N_per_m", "C3", "ring-planet (%s, internal)" % names[ring_model])):
+        k = [v / 1e9 for v in d[col]]
+        ax.step(d["phase"] + [1.0], k + [k[-1]], where="post", color=colour, lw=1.2, label=label)
+        mean = sum(k) / len(k)
+        ax.axhline(mean, color=colour, lw=0.8, ls=":")
+    ax.set_xlim(0.0, 1.0)
+    ax.set_xlabel("phase of the mesh cycle (0: a pair enters at A)")
+    ax.set_ylabel("mesh stiffness k [GN/m]")
+    ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=1, fontsize=8)
+    ax.set_title("%s\nmesh stiffness from the teeth at the static load (dotted: the means, the linear model's "
+                 "k_sp and k_rp)" % params.get("name", "planetary set"), fontsize=9)
+    return save(fig, d_dir / "mesh_stiffness.png")
+
+
 def campbell_figure(d_dir, params):
     d = read_csv(d_dir / "campbell.csv")
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
@@ -248,6 +274,8 @@ def main():
     modes_figure(d_dir, params)
     if (d_dir / "campbell.csv").exists():
         campbell_figure(d_dir, params)
+    if (d_dir / "mesh_stiffness.csv").exists():
+        mesh_stiffness_figure(d_dir, params)
     if "response" in params and (d_dir / "response.csv").exists():
         response_figure(d_dir, params)
         meshes_figure(d_dir, params)

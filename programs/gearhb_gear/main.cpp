@@ -323,25 +323,9 @@ void GearPairFromFile::helix_key_numbers(Run& run) const {
 // torsional compliance of each gear body between bore and teeth (inside its STE: a dynamic
 // model with its own shafts and bodies must not count it twice).
 void GearPairFromFile::tooth_model(Run& run) {
-  const PairSteModel& m = file_.pair;
-  if (file_.method == ToothModel::fe && file_.helical.sliced()) {
-    loaded_ = run.timed("fe_model", [&] { return sliced_fe_loaded_pair(m, file_.helical, file_.phases, file_.fe); });
-  } else if (file_.method == ToothModel::fe) {
-    loaded_ = run.timed("fe_model", [&] { return fe_loaded_pair(m, file_.phases, file_.fe); });
-  } else {
-    PairStiffnessFn k;
-    double coupling = 0.0;
-    if (file_.method == ToothModel::potential_energy) {
-      const PeGear g1 = file_.pe[0], g2 = file_.pe[1];
-      k = [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
-      if (file_.pe_coupling) coupling = pe_body_coupling(g1) + pe_body_coupling(g2);
-      run.key_numbers().add("pe_coupling_m_per_N", coupling, "m/N");
-    }
-    if (file_.helical.sliced())
-      loaded_ = run.timed("mesh_phases", [&] { return sliced_loaded_pair(m, file_.helical, file_.phases, k); });
-    else
-      loaded_ = run.timed("mesh_phases", [&] { return phase_loaded_pair(m, file_.phases, k, coupling); });
-  }
+  if (file_.method == ToothModel::potential_energy)
+    run.key_numbers().add("pe_coupling_m_per_N", gear_file_pe_coupling(file_), "m/N");
+  loaded_ = run.timed(file_.method == ToothModel::fe ? "fe_model" : "mesh_phases", [&] { return gear_file_loaded_pair(file_); });
   const FePairModel* fe = loaded_->fe_model();
   if (!fe) return;
   KeyNumbers& key = run.key_numbers();

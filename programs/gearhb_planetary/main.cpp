@@ -21,9 +21,14 @@
 // contact class (drive-flank loss, back-flank impact where the file gives a backlash), per
 // planet its load-sharing factor (unequal with pin position errors, planet.pin_errors).
 //
+// With mesh.stiffness tooth_model the mesh stiffnesses come from the teeth
+// (tools/planetary_stiffness.hpp): the sun-planet mesh's k(theta) by gearhb_gear's pair
+// model at the mesh's static load, the ring-planet mesh's by ISO 6336-1 for internal gears.
+//
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
-// written), natural_frequencies, mode_shapes, campbell, response (loaded_model, response_curve,
-// stability, response_table, response_key_numbers), draw.
+// written; it computes the stiffnesses from the teeth), natural_frequencies, mode_shapes,
+// campbell, mesh_stiffness, response (loaded_model, response_curve, stability, response_table,
+// response_key_numbers), draw.
 //
 // Sample runs:
 //   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --out /tmp/lp
@@ -48,6 +53,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/tools/planetary_file.hpp"
+#include "gearhb/tools/planetary_stiffness.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
 #define GEARHB_FIGURES_DIR ""
@@ -77,6 +83,7 @@ class PlanetarySetFromFile {
   std::vector<PlanetaryMode> natural_frequencies(Run& run) const;
   void mode_shapes(Run& run, const std::vector<PlanetaryMode>& modes) const;
   void campbell(Run& run) const;
+  void mesh_stiffness(Run& run) const;
   void response(Run& run) const;
   HarmonicBalance loaded_model() const;
   FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb) const;
@@ -103,6 +110,7 @@ void PlanetarySetFromFile::run(Run& run) {
   const std::vector<PlanetaryMode> modes = natural_frequencies(run);
   mode_shapes(run, modes);
   if (file_.campbell_points > 0) campbell(run);
+  if (file_.tooth_model) mesh_stiffness(run);
   if (file_.response.present) response(run);
   if (plot_) draw(run);
 }
@@ -182,6 +190,42 @@ void PlanetarySetFromFile::campbell(Run& run) const {
     }
   });
   run.write("campbell.csv", t);
+}
+
+// Step 3c (mesh.stiffness tooth_model; tools/planetary_stiffness.hpp): mesh_stiffness.csv,
+// phase (of the mesh cycle, sun-planet mesh 1's), k_sun_planet_N_per_m (the pair model's
+// F / STE), k_ring_planet_N_per_m (mesh.ring_planet_stiffness: potential energy, or ISO
+// 6336-1's rectangular wave); sun_planet_pair.json, the
+// sun-planet pair as a gear-pair file that gearhb_gear runs (its ste_1.csv k_N_per_m is the
+// same k); the key numbers of both meshes and the ring-sun phase gamma_rs (used, and from the
+// teeth).
+void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
+  const PlanetaryToothStiffness& k = file_.tooth;
+  Table t({"phase", "k_sun_planet_N_per_m", "k_ring_planet_N_per_m"});
+  const std::size_t J = k.sun.samples.size();
+  for (std::size_t j = 0; j < J; ++j)
+    t.add_row({double(j) / double(J), k.sun.samples[j], k.ring_stiffness(int(j), int(J))});
+  run.write("mesh_stiffness.csv", t);
+  run.write_text("sun_planet_pair.json", k.sun_planet_pair.dump(2) + "\n");
+  KeyNumbers& key = run.key_numbers();
+  key.add("tooth_force_N", k.tooth_force, "N");
+  key.add("torque_Nm_sun_planet", k.sun_planet_torque, "N m");
+  key.add("mesh_stiffness_mean_sun_planet_N_per_m", k.sun.mean(), "N/m");
+  key.add("contact_ratio_sun_planet", k.sun_contact_ratio, "-");
+  const bool iso = k.ring_model == RingPlanetModel::iso6336;
+  const double ring_mean = iso ? k.ring.mean : k.ring_pe.mean();
+  key.add("mesh_stiffness_mean_ring_planet_N_per_m", ring_mean, "N/m");
+  key.add("contact_ratio_ring_planet", k.ring_contact_ratio, "-");
+  key.add("ring_sun_phase", file_.ring_sun_phase, "cycles");
+  key.add("ring_sun_phase_from_teeth", file_.ring_sun_phase_from_teeth, "cycles");
+  key.add("back_mirror_phase_sun_planet", k.sun_back_mirror / (2.0 * M_PI), "cycles");
+  key.add("back_mirror_phase_ring_planet", k.ring_back_mirror / (2.0 * M_PI), "cycles");
+  key.add("back_flanks_mirrored", file_.back_phase_from_teeth ? 1.0 : 0.0, "-");
+  char line[240];
+  std::snprintf(line, sizeof line, "mesh stiffness from the teeth at F = %.1f N: sun-planet mean %.4g N/m (eps %.3f), "
+                "ring-planet mean %.4g N/m (%s, eps %.3f)", k.tooth_force, k.sun.mean(), k.sun_contact_ratio,
+                ring_mean, iso ? "ISO 6336-1" : "potential energy", k.ring_contact_ratio);
+  run.say(file_.name + ": " + line);
 }
 
 // Step 4 (with `response`): the set under load over the mesh frequency.

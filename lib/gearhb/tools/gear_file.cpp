@@ -473,10 +473,21 @@ void check_pair(GearFile& f, const json& j, const json& model, const std::string
 
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
-  only_keys(j, path, "", {"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand", "double_helical", "basic_rack",
-                          "centre_distance", "backlash", "torques", "gears", "model", "harris", "speed", "dynamics",
-                          "bifurcation_diagram", "period_doubling"});
+  only_keys(j, path, "", gear_file_keys());
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
+  return read_gear_json(j, path);
+}
+
+const std::vector<std::string>& gear_file_keys() {
+  static const std::vector<std::string> keys{"name", "module", "pressure_angle_deg", "helix_angle_deg", "hand",
+                                             "double_helical", "basic_rack", "centre_distance", "backlash", "torques",
+                                             "gears", "model", "harris", "speed", "dynamics", "bifurcation_diagram",
+                                             "period_doubling"};
+  return keys;
+}
+
+GearFile read_gear_json(const nlohmann::json& j, const std::string& path) {
+  only_keys(j, path, "", gear_file_keys());
   const Reader r{path};
   GearFile f;
   f.resolved = j;
@@ -495,6 +506,24 @@ GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std
   if (j.contains("period_doubling") && !f.dynamics.present)
     fail_key(path, "period_doubling", "needs the speed range of the dynamics (speed)");
   return f;
+}
+
+std::unique_ptr<LoadedPair> gear_file_loaded_pair(const GearFile& f) {
+  const PairSteModel& m = f.pair;
+  if (f.method == ToothModel::fe && f.helical.sliced()) return sliced_fe_loaded_pair(m, f.helical, f.phases, f.fe);
+  if (f.method == ToothModel::fe) return fe_loaded_pair(m, f.phases, f.fe);
+  PairStiffnessFn k;
+  if (f.method == ToothModel::potential_energy) {
+    const PeGear g1 = f.pe[0], g2 = f.pe[1];
+    k = [g1, g2](double r1, double r2, bool) { return pe_pair_stiffness(g1, g2, r1, r2); };
+  }
+  if (f.helical.sliced()) return sliced_loaded_pair(m, f.helical, f.phases, k);
+  return phase_loaded_pair(m, f.phases, k, gear_file_pe_coupling(f));
+}
+
+double gear_file_pe_coupling(const GearFile& f) {
+  return f.method == ToothModel::potential_energy && f.pe_coupling ? pe_body_coupling(f.pe[0]) + pe_body_coupling(f.pe[1])
+                                                                   : 0.0;
 }
 
 std::string gear_file_help() {

@@ -40,6 +40,7 @@
 // the file and the key (unknown keys, wrong types, values out of range, and the
 // geometric checks of gear_pair_problem: pointed tip, clearance, interference,
 // contact ratio < 1, a relief longer than the path).
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
@@ -52,6 +53,7 @@
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/tooth/potential_energy.hpp"
 #include "gearhb/gears/pair/ste_continuous.hpp"
+#include "gearhb/gears/pair/loaded_pair.hpp"
 #include "gearhb/gears/pair/pair_helical.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
@@ -112,6 +114,19 @@ struct GearFile {
 
 // Read, override (`--set path=value`, numbers only) and check a gear-pair file.
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides);
+// The same checks on a gear pair given as JSON (e.g. inside a planetary-set file): every
+// error names `file` and the key as read_gear_file does.
+GearFile read_gear_json(const nlohmann::json& j, const std::string& file);
+// The top-level keys of a gear-pair file.
+const std::vector<std::string>& gear_file_keys();
+
+// The loaded pair of the file's tooth model (model.method; loaded_pair.hpp): beam, the
+// potential-energy pair stiffness (with model.pe_coupling's structural coupling), or the
+// finite elements; sliced for a helical pair (pair_helical.hpp). gearhb_gear's model, built
+// once per file.
+std::unique_ptr<LoadedPair> gear_file_loaded_pair(const GearFile& f);
+// model.pe_coupling body_torsion: pe_body_coupling of both gears [m/N] (0 otherwise).
+double gear_file_pe_coupling(const GearFile& f);
 
 // Text for --help: every key, its unit and meaning.
 std::string gear_file_help();

@@ -1,11 +1,13 @@
 #include "gearhb/tools/planetary_file.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 #include "gearhb/app/json_file.hpp"
 #include "gearhb/hb/contact.hpp"
+#include "gearhb/tools/planetary_stiffness.hpp"
 
 namespace gearhb {
 
@@ -149,9 +151,43 @@ void read_backlash(PlanetaryFile& f, const json& m, const std::string& file) {
   r.back_phase = optional_number(m, file, "mesh", "back_phase", 0.0, 0.0, 1.0, "[0, 1] mesh cycles");
 }
 
+// mesh.stiffness tooth_model: the keys of the rectangular waves are refused, the pair kept
+// for the response's load (compute_tooth_stiffness).
+void read_tooth_model(PlanetaryFile& f, const json& m, const std::string& file) {
+  for (const char* key : {"sun_planet", "ring_planet", "sun_contact_ratio", "ring_contact_ratio", "stiffness_ratio"})
+    if (m.contains(key))
+      fail_key(file, std::string("mesh.") + key, "belongs to the rectangular wave: mesh.stiffness tooth_model computes it");
+  if (!m.contains("sun_planet_pair"))
+    fail_key(file, "mesh.sun_planet_pair", "is missing (the sun-planet pair's teeth for mesh.stiffness tooth_model)");
+  f.sun_planet_pair = m["sun_planet_pair"];
+  if (m.contains("ring_planet_stiffness")) {
+    const json& k = m["ring_planet_stiffness"];
+    if (!k.is_string() || (k != "potential_energy" && k != "iso6336"))
+      fail_key(file, "mesh.ring_planet_stiffness", "must be one of potential_energy | iso6336");
+    f.ring_planet_model = k == "iso6336" ? RingPlanetModel::iso6336 : RingPlanetModel::potential_energy;
+  }
+  // gamma_rs from the teeth unless the file gives it (an override)
+  f.ring_sun_phase_from_teeth = ring_sun_phase_from_teeth(f.teeth, f.set.sun_pressure_angle);
+  f.ring_sun_phase = optional_number(m, file, "mesh", "ring_sun_phase", f.ring_sun_phase_from_teeth, 0.0, 1.0,
+                                     "[0, 1] mesh cycles");
+  f.meshes.phases = mesh_phases(f.teeth, f.set.planet_angles, f.ring_sun_phase);
+  f.back_phase_from_teeth = !m.contains("back_phase");   // else the file's back_phase overrides
+  read_backlash(f, m, file);
+}
+
 void read_meshes(PlanetaryFile& f, const json& m, const std::string& file) {
-  only_keys(m, file, "mesh", {"sun_planet", "ring_planet", "sun_contact_ratio", "ring_contact_ratio", "stiffness_ratio",
-                              "ring_sun_phase", "sun_planet_backlash", "ring_planet_backlash", "back_phase"});
+  only_keys(m, file, "mesh", {"stiffness", "sun_planet_pair", "ring_planet_stiffness", "sun_planet", "ring_planet", "sun_contact_ratio",
+                              "ring_contact_ratio", "stiffness_ratio", "ring_sun_phase", "sun_planet_backlash",
+                              "ring_planet_backlash", "back_phase"});
+  if (m.contains("stiffness")) {
+    const json& k = m["stiffness"];
+    if (!k.is_string() || (k != "rectangular" && k != "tooth_model"))
+      fail_key(file, "mesh.stiffness", "must be one of rectangular | tooth_model");
+    f.tooth_model = k == "tooth_model";
+  }
+  if (f.tooth_model) return read_tooth_model(f, m, file);
+  for (const char* key : {"sun_planet_pair", "ring_planet_stiffness"})
+    if (m.contains(key)) fail_key(file, std::string("mesh.") + key, "needs mesh.stiffness tooth_model");
   PlanetaryMeshes& r = f.meshes;
   r.sun.mean = f.set.sun_mesh = number(m, file, "mesh", "sun_planet", 1e3, 1e13, "[1e3, 1e13] N/m");
   r.ring.mean = f.set.ring_mesh = number(m, file, "mesh", "ring_planet", 1e3, 1e13, "[1e3, 1e13] N/m");
@@ -161,6 +197,32 @@ void read_meshes(PlanetaryFile& f, const json& m, const std::string& file) {
   const double gamma_rs = optional_number(m, file, "mesh", "ring_sun_phase", 0.0, 0.0, 1.0, "[0, 1] mesh cycles");
   r.phases = mesh_phases(f.teeth, f.set.planet_angles, gamma_rs);
   read_backlash(f, m, file);
+}
+
+// mesh.stiffness tooth_model under the response's load (tools/planetary_stiffness.hpp): the
+// sun-planet mesh by the pair model, the ring-planet mesh by ISO 6336-1; their means also
+// the linear model's mesh stiffnesses.
+void compute_tooth_stiffness(PlanetaryFile& f, const std::string& file) {
+  const PlanetaryResponseInput& p = f.response;
+  f.tooth = planetary_tooth_stiffness(f.sun_planet_pair, file, f.name, f.teeth, f.set.sun_pressure_angle,
+                                      f.set.planets(), p.input, p.torque, f.ring_planet_model);
+  const int J = int(f.tooth.sun.samples.size());
+  if (p.harmonics > (J - 2) / 2)
+    fail_key(file, "response.harmonics", "must be at most (mesh.sun_planet_pair.model.phases - 2) / 2 = " +
+                                             std::to_string((J - 2) / 2) + " (the pair model's phases resolve no more)");
+  PlanetaryMeshes& m = f.meshes;
+  if (f.back_phase_from_teeth) m.sun_back_mirror = f.tooth.sun_back_mirror, m.ring_back_mirror = f.tooth.ring_back_mirror;
+  m.sun_computed = f.tooth.sun;
+  m.sun.mean = f.set.sun_mesh = f.tooth.sun.mean();
+  m.sun.contact_ratio = f.tooth.sun_contact_ratio;
+  if (f.ring_planet_model == RingPlanetModel::iso6336) {
+    m.ring = f.tooth.ring;
+  } else {
+    m.ring_computed = f.tooth.ring_pe;
+    m.ring.mean = f.tooth.ring_pe.mean();
+    m.ring.contact_ratio = std::min(2.0, f.tooth.ring_contact_ratio);   // recorded; the samples are the stiffness
+  }
+  f.set.ring_mesh = m.ring.mean;
 }
 
 void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
@@ -192,11 +254,13 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
   p.zeta = optional_number(r, file, "response", "zeta", 0.02, 1e-4, 0.5, "[1e-4, 0.5]");
   p.harmonics = r.contains("harmonics") ? whole(r, file, "response", "harmonics", 1, 32) : 8;
   p.stability_points = r.contains("stability_points") ? whole(r, file, "response", "stability_points", 0, 200) : 24;
-  try {   // the rectangular waves cut to H harmonics must stay stiffnesses (Gibbs undershoot)
+  if (f.tooth_model) compute_tooth_stiffness(f, file);
+  try {   // the stiffness waves cut to H harmonics must stay stiffnesses (Gibbs undershoot)
     (void)planetary_mesh_contacts(f.set, f.meshes, p.harmonics);
   } catch (const std::invalid_argument&) {
-    fail_key(file, "mesh.stiffness_ratio", "cut to response.harmonics = " + std::to_string(p.harmonics) +
-                                               " harmonics makes a mesh stiffness negative somewhere in the cycle");
+    fail_key(file, f.tooth_model ? "response.harmonics" : "mesh.stiffness_ratio",
+             "cut to response.harmonics = " + std::to_string(p.harmonics) +
+                 " harmonics makes a mesh stiffness negative somewhere in the cycle");
   }
   // The held output must leave no free rotation: the loaded set needs a static equilibrium.
   PlanetarySet held = f.set;
@@ -240,6 +304,8 @@ PlanetaryFile read_planetary_file(const std::string& path,
   if (p.contains("pin_errors"))
     f.meshes.pin_errors = per_planet(p, path, "planet", "pin_errors", s.planets(), false, -1e-3, 1e-3, "[-1e-3, 1e-3] m");
   read_response(f, j, path);
+  if (f.tooth_model && !f.response.present)
+    fail_key(path, "mesh.stiffness", "tooth_model needs a response section (its torque is the meshes' static load)");
   if (j.contains("campbell")) {
     const json& c = member(j, path, "campbell");
     only_keys(c, path, "campbell", {"carrier_rpm_to", "points"});
@@ -254,7 +320,11 @@ HarmonicBalance planetary_response_model(const PlanetaryFile& f) {
   PlanetarySet s = f.set;
   (r.output == Body::sun ? s.sun : r.output == Body::ring ? s.ring : s.carrier).torsional += r.output_shaft;
   Eigen::VectorXd f0 = Eigen::VectorXd::Zero(s.dofs());
-  f0(coordinate(r.input, 2)) = r.torque / member_radius(f.teeth, s.sun_pressure_angle, r.input);
+  // The torque that loads the drive flanks (defined by the sun driving): the sun's and the
+  // ring's turn the same way in Lin & Parker's coordinates (each takes N F r_b), the carrier's
+  // is their reaction, -N F (r_bs + r_br) (planetary_stiffness.hpp nominal_mesh_force).
+  const double sign = r.input == Body::carrier ? -1.0 : 1.0;
+  f0(coordinate(r.input, 2)) = sign * r.torque / member_radius(f.teeth, s.sun_pressure_angle, r.input);
   return planetary_harmonic_balance(s, f.meshes, r.zeta, f0, r.harmonics);
 }
 
@@ -273,7 +343,15 @@ std::string planetary_file_help() {
          "  mesh.sun_planet/ring_planet   mean mesh stiffness [N/m]\n"
          "  mesh.sun_contact_ratio/ring_contact_ratio   of the rectangular wave (1.6, 1.8)\n"
          "  mesh.stiffness_ratio     k_double / k_single of both meshes (1: constant)\n"
-         "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0)\n"
+         "  mesh.ring_sun_phase      gamma_rs [mesh cycles] between the ring and sun meshes (0; with\n"
+         "                           mesh.stiffness tooth_model: from the teeth unless given; so is the back\n"
+         "                           flanks' wave, the mirror image of the drive flank's, unless back_phase is given)\n"
+         "  mesh.stiffness           rectangular (default: the keys above) | tooth_model: the sun-planet mesh's\n"
+         "                           k(theta) by gearhb_gear's pair model of mesh.sun_planet_pair (the gear-pair\n"
+         "                           file's basic_rack, gears [sun, planet] without z, model), the ring-planet\n"
+         "                           mesh by mesh.ring_planet_stiffness: potential_energy (default; the ring's\n"
+         "                           tooth an internal involute cantilever) | iso6336 (ISO 6336-1, internal gear);\n"
+         "                           both meshes at the response's static load\n"
          "  mesh.sun_planet_backlash/ring_planet_backlash   optional: normal backlash [m] of every\n"
          "                           mesh of that kind, or a list of N (one per planet): a back flank\n"
          "                           on each (none without); mesh.back_phase: its wave's lag [cycles] (0)\n"

@@ -22,6 +22,16 @@
 //                 "sun_contact_ratio": 1.6, "ring_contact_ratio": 1.8, optional (default 1.6, 1.8)
 //                 "stiffness_ratio": 1.5,                              optional k_double / k_single (1)
 //                 "ring_sun_phase": 0},                                optional gamma_rs [mesh cycles] (0)
+//   or, the stiffnesses computed from the teeth (tools/planetary_stiffness.hpp; needs `response`):
+//     "mesh":    {"stiffness": "tooth_model",                          (default "rectangular")
+//                 "sun_planet_pair": {"basic_rack": {...}, "gears": [{sun}, {planet}], "model": {...}},
+//                                     the sun-planet pair in the gear-pair file's keys (gear_file.hpp)
+//                                     without z, module, pressure angle, addendum (the set's), x = 0
+//                 "ring_planet_stiffness": "potential_energy",        or "iso6336"
+//                 "ring_sun_phase": optional, default from the teeth (ring_sun_phase_from_teeth)
+//                 "back_phase": optional; absent: each back flank's wave the mirror image of its
+//                               drive flank's (planetary_mesh.hpp sun_back_mirror, ring_back_mirror)
+//                 "ring_sun_phase": 0, ...backlash keys as above}
 //     "response": {"input": "sun", "torque": 100,                      optional: the response over
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
 //                  "f_mesh_hz": {"from": 300, "to": 3000},             input, the output member held by a
@@ -43,6 +53,7 @@
 
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
+#include "gearhb/tools/planetary_stiffness.hpp"
 
 namespace gearhb {
 
@@ -63,7 +74,14 @@ struct PlanetaryFile {
   PlanetaryTeeth teeth;
   PlanetarySet set;
   bool equally_spaced = true;   // no planet_angles_deg in the file
-  PlanetaryMeshes meshes;       // the rectangular waves and mesh phases (planetary_mesh.hpp)
+  PlanetaryMeshes meshes;       // the stiffness waves and mesh phases (planetary_mesh.hpp)
+  bool tooth_model = false;     // mesh.stiffness tooth_model (tools/planetary_stiffness.hpp)
+  nlohmann::json sun_planet_pair;   // mesh.sun_planet_pair as the file gives it
+  RingPlanetModel ring_planet_model = RingPlanetModel::potential_energy;   // mesh.ring_planet_stiffness
+  double ring_sun_phase = 0.0;            // tooth_model: gamma_rs used (the file's, or from the teeth)
+  double ring_sun_phase_from_teeth = 0.0; // tooth_model: ring_sun_phase_from_teeth
+  bool back_phase_from_teeth = false;     // tooth_model without mesh.back_phase: mirrored back flanks
+  PlanetaryToothStiffness tooth;    // what the tooth model gave (tooth_model only)
   PlanetaryResponseInput response;
   double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)
   int campbell_points = 0;
@@ -79,7 +97,8 @@ double member_radius(const PlanetaryTeeth& t, double pressure_angle, Body b);
 
 // The loaded set of the file's `response` as a harmonic-balance model: the output's shaft
 // added to its torsional stiffness, the input torque T / r on the input's u (r:
-// member_radius), the meshes as contacts (planetary_harmonic_balance).
+// member_radius; on the carrier -T / r: the direction that loads the drive flanks), the
+// meshes as contacts (planetary_harmonic_balance).
 HarmonicBalance planetary_response_model(const PlanetaryFile& f);
 
 // Text for --help: every key, its unit and meaning.

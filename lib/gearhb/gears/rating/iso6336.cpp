@@ -36,7 +36,7 @@ double iso6336_virtual_teeth(int z, double alpha_n, double beta) {
 }
 
 Iso6336Stiffness iso6336_mesh_stiffness(const Iso6336Input& in) {
-  if (in.z1 <= 0 || in.z2 <= 0 || !(in.face_width_m > 0) || !(in.eps_alpha > 0) ||
+  if (in.z1 <= 0 || (in.z2 <= 0 && !in.internal2) || !(in.face_width_m > 0) || !(in.eps_alpha > 0) ||
       !(std::fabs(in.helix_angle_deg) < 90.0))
     throw std::invalid_argument("iso6336_mesh_stiffness: invalid gear data");
   const double C[9] = {0.04723, 0.15551, 0.25791, -0.00635, -0.11654,
@@ -44,7 +44,7 @@ Iso6336Stiffness iso6336_mesh_stiffness(const Iso6336Input& in) {
   const double alpha_n = in.normal_pressure_angle_deg * M_PI / 180.0, beta = in.helix_angle_deg * M_PI / 180.0;
   Iso6336Stiffness s;
   s.zn1 = iso6336_virtual_teeth(in.z1, alpha_n, beta);
-  s.zn2 = iso6336_virtual_teeth(in.z2, alpha_n, beta);
+  s.zn2 = in.internal2 ? INFINITY : iso6336_virtual_teeth(in.z2, alpha_n, beta);
   const double x1 = in.x1, x2 = in.x2;
   s.q_prime = C[0] + C[1] / s.zn1 + C[2] / s.zn2 + C[3] * x1 + C[4] * x1 / s.zn1 + C[5] * x2 +
               C[6] * x2 / s.zn2 + C[7] * x1 * x1 + C[8] * x2 * x2;

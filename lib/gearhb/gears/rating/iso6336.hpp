@@ -57,6 +57,10 @@ Iso6336Stiffness iso6336_mesh_stiffness(int z1, int z2, double x1, double x2, do
 // Spur or helical pair: everything ISO 6336-1 method B needs.
 struct Iso6336Input {
   int z1 = 0, z2 = 0;                  // teeth (external gears)
+  // Gear 2 an internal gear (a ring meshing the external gear 1): its virtual number of
+  // teeth is infinite, so the terms C3 / zn2 and C7 x2 / zn2 of q' vanish (z2 is not used;
+  // ISO 6336-1:2006 9.3.2, as DIN 3990-1); x2 its profile shift.
+  bool internal2 = false;
   double x1 = 0, x2 = 0;               // profile shift coefficients
   double normal_pressure_angle_deg = 20;   // alpha_n [deg]
   double helix_angle_deg = 0;          // beta [deg] (0: spur)

@@ -35,6 +35,24 @@ Eigen::VectorXd RectangularMesh::harmonics(int H) const {
   return c;
 }
 
+double SampledMesh::mean() const {
+  double sum = 0.0;
+  for (double k : samples) sum += k;
+  return samples.empty() ? 0.0 : sum / double(samples.size());
+}
+
+Eigen::VectorXd SampledMesh::harmonics(int H) const {
+  if (int(samples.size()) < 4 || H > (int(samples.size()) - 2) / 2)
+    throw std::invalid_argument("SampledMesh: J samples resolve at most (J - 2) / 2 harmonics");
+  return periodic_fourier(samples, H) / mean();
+}
+
+Eigen::VectorXd PlanetaryMeshes::harmonics(bool ring_mesh, int H) const {
+  const SampledMesh& computed = ring_mesh ? ring_computed : sun_computed;
+  if (!computed.samples.empty()) return computed.harmonics(H);
+  return (ring_mesh ? ring : sun).harmonics(H);
+}
+
 MeshPhases mesh_phases(const PlanetaryTeeth& t, const std::vector<double>& planet_angles, double ring_sun_phase) {
   MeshPhases p;
   for (double psi : planet_angles) {
@@ -84,7 +102,7 @@ std::vector<UnilateralContact> planetary_mesh_contacts(const PlanetarySet& s, co
     const bool ring = i >= N;
     const int n = i % N;
     const RectangularMesh& mesh = ring ? m.ring : m.sun;
-    const Eigen::VectorXd c = mesh.harmonics(H);
+    const Eigen::VectorXd c = m.harmonics(ring, H);
     for (int j = 0; j < 64 * (H + 1); ++j)   // the truncated wave (Gibbs) must stay a stiffness
       if (trig_series(c, 2.0 * M_PI * j / (64.0 * (H + 1))) <= 0.0)
         throw std::invalid_argument("planetary_mesh_contacts: the stiffness series is not positive");
@@ -100,7 +118,8 @@ std::vector<UnilateralContact> planetary_mesh_contacts(const PlanetarySet& s, co
       b.normal = -ct.normal;
       b.kc = mesh.mean;
       b.gap = -m.backlash[std::size_t(i)] - ct.gap;
-      b.stiffness_profile = shifted(c, gamma + m.back_phase);
+      const double psi = ring ? m.ring_back_mirror : m.sun_back_mirror;
+      b.stiffness_profile = std::isfinite(psi) ? shifted(reflected_series(c, psi), gamma) : shifted(c, gamma + m.back_phase);
       back.push_back(std::move(b));
     }
     drive.push_back(std::move(ct));

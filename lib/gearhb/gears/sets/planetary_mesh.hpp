@@ -6,6 +6,7 @@
 // wave over the mesh cycle shifted by its mesh phase (Parker & Lin 2004, "Mesh phasing relationships in
 // planetary and epicyclic gears", J. Mech. Des. 126:365), the whole set as one
 // HarmonicBalance at the mesh frequency (theta = mesh phase of sun-planet mesh 1).
+#include <cmath>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -39,10 +40,26 @@ struct MeshPhases {
 };
 MeshPhases mesh_phases(const PlanetaryTeeth& t, const std::vector<double>& planet_angles, double ring_sun_phase);
 
+// A mesh kind's stiffness computed by a tooth model: k(theta) sampled at J >= 4 equal phases
+// theta_j = 2 pi j / J of the mesh cycle [N/m] (the pair model's STE at the mesh's static
+// force F: k_j = F / STE_j, as gearhb_gear's ste_<i>.csv). Its first H harmonics / k_mean,
+// [1, a_1, b_1, ..., a_H, b_H] (H <= (J - 2) / 2; core/fourier.hpp periodic_fourier), k_mean
+// the samples' mean.
+struct SampledMesh {
+  std::vector<double> samples;
+  double mean() const;
+  Eigen::VectorXd harmonics(int H) const;
+};
+
 // The meshes of the set. Mesh i = 0..2N-1: sun-planet meshes 1..N, then ring-planet meshes
 // 1..N (the order of every per-mesh list and table).
 struct PlanetaryMeshes {
   RectangularMesh sun, ring;
+  // A mesh kind's computed stiffness replaces its rectangular wave where it has samples
+  // (its mean is then also sun.mean / ring.mean).
+  SampledMesh sun_computed, ring_computed;
+  // The first H harmonics / k_mean of the stiffness of the sun (ring = false) or ring meshes.
+  Eigen::VectorXd harmonics(bool ring, int H) const;
   MeshPhases phases;
   // Normal backlash b of each mesh along its line of action [m], 2N entries in mesh order;
   // infinite: no back flank (empty: none anywhere, the drive flanks only).
@@ -50,6 +67,11 @@ struct PlanetaryMeshes {
   // The back flank's stiffness is the drive flank's wave lagging by back_phase mesh cycles
   // (it depends on the tooth thicknesses, as gamma_rs; an input).
   double back_phase = 0.0;
+  // Or, from the teeth, per mesh kind: the back flank's wave is the mirror image of the drive
+  // flank's, k_back(theta_i) = k(psi - theta_i) in the mesh's own phase theta_i = theta - 2 pi
+  // gamma_i (the back pairs sit on the line of action mirrored about the line of centres,
+  // met in the opposite order; mesh_dynamics.hpp back_flank_phase). psi [rad]; NaN: back_phase.
+  double sun_back_mirror = NAN, ring_back_mirror = NAN;
   // Tangential position error e_n of planet n's pin on the carrier [m] (N entries, or empty:
   // none): the planet's centre sits displaced by e_n along eta_n, which opens both of its
   // meshes by e_n cos(alpha) (the eta_n terms of delta_sn and delta_rn): a constant gap
@@ -63,7 +85,7 @@ struct PlanetaryMeshes {
 // k_mean s(theta - 2 pi gamma_i), s the first H harmonics of the rectangular wave / k_mean
 // (the harmonic-balance basis resolves no more). Back flank: normal -d_i, gap -b_i - g_i
 // (it touches where the deflection d_i'q + g_i < -b_i), stiffness k_mean s(theta - 2 pi
-// (gamma_i + back_phase)). Throws std::invalid_argument on more than kMaxContacts contacts.
+// (gamma_i + back_phase)), or k_mean s(psi - theta + 2 pi gamma_i) with a mirror phase psi. Throws std::invalid_argument on more than kMaxContacts contacts.
 std::vector<UnilateralContact> planetary_mesh_contacts(const PlanetarySet& s, const PlanetaryMeshes& m, int H);
 
 // The contact index of each mesh's back flank (2N entries, -1: none), as planetary_mesh_contacts orders them.

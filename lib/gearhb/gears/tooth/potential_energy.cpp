@@ -186,6 +186,41 @@ PeToothCompliance pe_tooth_compliance(const PeGear& g, double contact_radius, co
   return out;
 }
 
+PeToothCompliance pe_internal_tooth_compliance(const PeGear& g, double contact_radius, const PeOptions& o) {
+  check_gear(g);
+  if (g.profile_shift != 0.0) throw std::invalid_argument("pe_internal_tooth_compliance: no profile shift");
+  const double a0 = g.pressure_angle, m = g.module, z = g.teeth;
+  const double r0 = 0.5 * m * z, rb = r0 * std::cos(a0), ra = r0 - m * g.addendum_coefficient,
+               rf = r0 + m * g.dedendum_coefficient;
+  if (!(ra > rb)) throw std::invalid_argument("pe_internal_tooth_compliance: tip circle inside the base circle");
+  const double slack = 1e-12 * rf;
+  if (!(contact_radius >= ra - slack && contact_radius <= rf + slack))
+    throw std::domain_error("pe_internal_tooth_compliance: contact radius " + std::to_string(contact_radius) +
+                            " m outside [ra, rf] = [" + std::to_string(ra) + ", " + std::to_string(rf) + "] m");
+  const double r = std::min(std::max(contact_radius, ra), rf);
+  const double E = g.youngs_modulus, nu = g.poisson_ratio, b = g.face_width;
+  const double E_prime = o.elasticity == PeElasticity::plane_strain ? E / (1.0 - nu * nu) : E;
+  const double G = E / (2.0 * (1.0 + nu));
+  const double psi0 = 0.5 * M_PI / z - involute(a0);
+  const auto psi = [psi0](double a) { return psi0 + involute(a); };
+  // The section at pressure angle a: x = -r cos(psi), y = r sin(psi), dx/da = -d(r cos psi)/da
+  // with dr/da = rb sin(a) / cos^2(a), dpsi/da = tan^2(a).
+  const auto section = [rb, &psi](double a) {
+    const double ca = std::cos(a), sa = std::sin(a), ra_ = rb / ca, p = psi(a);
+    const double dr = rb * sa / (ca * ca), dp = std::tan(a) * std::tan(a);
+    return PeSection{-ra_ * std::cos(p), ra_ * std::sin(p), -(dr * std::cos(p) - ra_ * std::sin(p) * dp)};
+  };
+  const double a_c = std::acos(rb / r), a_f = std::acos(rb / rf), psi_c = psi(a_c);
+  PeToothCompliance out;
+  out.load_angle = a_c + psi_c;
+  const PeBeamIntegrals p = pe_beam_integrals(section, a_f, a_c, -r * std::cos(psi_c), r * std::sin(psi_c),
+                                              out.load_angle, b, E_prime, G, o.quadrature_points);
+  out.bending = p.bending;
+  out.shear = p.shear;
+  out.axial = p.axial;
+  return out;
+}
+
 double pe_hertz_compliance(const PeGear& g1, const PeGear& g2) {
   check_gear(g1);
   check_gear(g2);

@@ -128,6 +128,28 @@ struct PeToothCompliance {
 // r in [max(rb, rf), ra] (std::domain_error otherwise).
 PeToothCompliance pe_tooth_compliance(const PeGear& g, double contact_radius, const PeOptions& o = {});
 
+// One tooth of an INTERNAL gear (a ring; z teeth, module m, alpha0, no profile shift, ha*,
+// hf*): its flanks are involutes of the base circle rb = r0 cos(alpha0) with the material on
+// the other side, the tooth reaching inwards from the root circle rf = r0 + hf* m to the tip
+// circle ra = r0 - ha* m (> rb). Its half angle at radius r (a = acos(rb / r)):
+//     psi(a) = pi / (2 z) - inv(alpha0) + inv(a)      (half the pitch angle less the space's,
+//                                                      the space being an external tooth's)
+// so that the tooth widens towards its root (half thickness pi m / 4 on the pitch circle).
+// Along the centre line, x = -r cos(psi) (the distance from the gear centre, negated so that
+// x grows from the root to the tip as on an external tooth), y = r sin(psi). A force along the
+// line of action at the contact radius r_c (a_c, psi_c) points into the tooth and towards the
+// root: its angle with the normal to the centre line is
+//     alpha_m = a_c + psi_c          (external: a_c - theta_c)
+// (the line of action meets the radius at the contact point at 90 deg - a_c, on the side of
+// the tooth's centre line), and the moment at a section is M(x) = F_b (x_c - x) - F_a y_c as
+// for the external tooth: the same integrals (pe_beam_integrals) from the root circle to r_c,
+// all on the involute. The ring's body under the tooth (Sainsot's foundation is fitted on
+// external gears) is not modelled: fillet = 0 (a stiff rim; Liang, Zuo & Pandey, Mech. Mach.
+// Theory 76 (2014) 20-38 treat the ring tooth the same way, as a cantilever on a rigid base).
+// r_c in [ra, rf] (std::domain_error otherwise); std::invalid_argument for a shifted gear or a
+// tip circle inside the base circle.
+PeToothCompliance pe_internal_tooth_compliance(const PeGear& g, double contact_radius, const PeOptions& o = {});
+
 // Linear Hertz compliance 1/k_h of two teeth [m/N] (formula above).
 double pe_hertz_compliance(const PeGear& g1, const PeGear& g2);
 
