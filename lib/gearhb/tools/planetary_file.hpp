@@ -55,7 +55,7 @@ struct PlanetaryResponseInput {
   double f_mesh_hz_from = 0.0, f_mesh_hz_to = 0.0;   // [Hz]
   double zeta = 0.02;            // modal damping ratio of the mean system
   int harmonics = 8;             // H
-  int stability_points = 24;     // points of the curve whose Floquet multipliers are computed
+  int stability_points = 24;     // 0: no stability; else every point's (tools/planetary_sweep.hpp)
 };
 
 struct PlanetaryFile {
