@@ -352,10 +352,12 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
   char line[320];
   std::snprintf(line, sizeof line,
                 "largest K_v %.3f at %.1f Hz, largest load sharing %.3f at %.1f Hz; a drive flank loses contact at %d points%s; "
-                "a back flank hits at %d points%s; Floquet at %d points, %d unstable",
+                "a back flank hits at %d points%s; ",
                 kv_max, kv_hz, ls_max, ls_hz, loss_points, lowest(first_loss).c_str(), impact_points,
-                lowest(first_impact).c_str(), checked, unstable);
-  run.say(file_.name + ": " + line);
+                lowest(first_impact).c_str());
+  run.say(file_.name + ": " + line +
+          (checked == 0 ? std::string("no stability (stability_points 0)")
+                        : "Floquet at " + std::to_string(checked) + " points, " + std::to_string(unstable) + " unstable"));
 }
 
 // Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
