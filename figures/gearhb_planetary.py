@@ -118,7 +118,8 @@ def response_figure(d_dir, params):
         loss = [hz[i] for i in range(len(hz))
                 if any("drive_loss" in d["contact_%s_%d" % (kind, n + 1)][i] for n in range(N))]
         bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
-                    transform=bottom.get_xaxis_transform(), label="%s-planet drive flank loses contact" % kind)
+                    transform=bottom.get_xaxis_transform(),
+                    label="%s-planet drive flank loses contact" % kind if loss else None)
     rug_room(bottom, rows=2)
     bottom.set_ylabel("K_v: largest force / static force")
     bottom.set_xlabel("mesh frequency [Hz]")
@@ -197,8 +198,9 @@ def stability_handles(d, bif):
     from matplotlib.lines import Line2D
     if not evaluated(d):
         return [Line2D([], [], ls="none", label="(no stability computed)")]
-    return ([Line2D([], [], color="0.3", ls="-", label="stable (Floquet)"),
-             Line2D([], [], color="0.3", ls="--", label="unstable (Floquet)")] +
+    unstable = any(x == 0 for x in d["stable"])
+    return ([Line2D([], [], color="0.3", ls="-", label="stable (Floquet)" if unstable else "stable (Floquet) everywhere")] +
+            ([Line2D([], [], color="0.3", ls="--", label="unstable (Floquet)")] if unstable else []) +
             [h for h in bifurcation_handles([k for k in BIFURCATION_MARKERS if k in bif["type"]])
              if not h.set_label(h.get_label() + " (above the axes)")])
 
@@ -232,13 +234,15 @@ def meshes_figure(d_dir, params):
         ax.set_ylabel("%s-planet meshes: K_v" % kind)
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, title="mesh of", title_fontsize=8)
     from matplotlib.patches import Patch
+    seen = {c for k in ("sun", "ring") for n in range(N) for c in d["contact_%s_%d" % (k, n + 1)]}
+    classes = [(c, text) for c, text in (("drive_loss", "drive flank loses contact"), ("back_impact", "back flank hits"),
+                                         ("drive_loss+back_impact", "both")) if c in seen]
     axes[1].legend(handles=stability_handles(d, bif) +
-                   [Patch(color=CONTACT_COLOURS["intermittent"], alpha=0.55, label="drive flank loses contact"),
-                    Patch(color=CONTACT_COLOURS["back_impact"], alpha=0.55, label="back flank hits"),
-                    Patch(color=CONTACT_COLOURS["drive_loss+back_impact"], alpha=0.55, label="both"),
-                    Patch(color="white", ec="0.6", label="no stroke: full contact")],
+                   [Patch(color=CONTACT_COLOURS[RUG_STATE[c]], alpha=0.55, label=text) for c, text in classes] +
+                   [Patch(color="white", ec="0.6", label="no stroke: full contact" if classes
+                          else "full contact everywhere (no stroke)")],
                    loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
-                   title="contact class: a broad stroke\nunder the mesh's own curve", title_fontsize=8)
+                   title="stability; contact class:\na broad stroke under\nthe mesh's own curve", title_fontsize=8)
     axes[1].set_xlabel("mesh frequency [Hz] (sun speed relative to the carrier: 60 f / z_s rpm)")
     back = params["mesh"].get("sun_planet_backlash", params["mesh"].get("ring_planet_backlash"))
     alike = all(abs(d["dynamic_factor_%s_%d" % (k, n + 1)][i] - d["dynamic_factor_%s_1" % k][i]) < 5e-3
