@@ -268,8 +268,10 @@ def load_sharing_figure(d_dir, params):
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("planet load-sharing factor L_n")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    stability = ("no stability computed" if not evaluated(d) else
+                 "dashed where unstable" if any(x == 0 for x in d["stable"]) else "stable everywhere (Floquet)")
     ax.set_title("%s: L_n = N max F_sn / sum_m max F_sm\n(F_sn the drive-flank force of sun-planet mesh n over the period;"
-                 " dashed where unstable)" % params.get("name", "planetary set"), fontsize=9)
+                 " %s)" % (params.get("name", "planetary set"), stability), fontsize=9)
     return save(fig, d_dir / "load_sharing.png")
 
 
