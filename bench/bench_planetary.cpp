@@ -4,15 +4,18 @@
 // variational equation at one point of it, as gearhb_planetary runs them
 // (programs/gearhb_planetary/examples/lin_parker_1999_loaded.json); and the five-planet star
 // set of geared-turbofan proportions (examples/gtf_star_five_planets.json: both flanks on
-// every mesh, 20 contacts) over its speed range with the Floquet multipliers at the points
-// the program computes them (stability_points of the file). Times go to the report.
+// every mesh, 20 contacts) over its speed range with the stability of every point and the
+// bifurcations, as the program computes them. Times go to the report.
 //   build/bin/gearhb_bench --benchmark_filter=planetary
+#include <algorithm>
+
 #include <benchmark/benchmark.h>
 
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/tools/planetary_file.hpp"
+#include "gearhb/tools/planetary_sweep.hpp"
 
 using namespace gearhb;
 
@@ -67,26 +70,21 @@ static void BM_planetary_floquet_point(benchmark::State& state) {
 BENCHMARK(BM_planetary_floquet_point)->Arg(3)->Arg(5)->Unit(benchmark::kMillisecond);
 
 // The star set from its example file, as gearhb_planetary loads it (the ring held by the
-// output shaft, the torque on the sun): the sweep, then Floquet at every k-th point.
+// output shaft, the torque on the sun): the sweep, then the stability of every point and the
+// bifurcations between them (tools/planetary_sweep.hpp, as the program runs them).
 static void BM_planetary_star_response_with_stability(benchmark::State& state) {
   const PlanetaryFile f =
       read_planetary_file(std::string(GEARHB_SOURCE_DIR) + "/programs/gearhb_planetary/examples/gtf_star_five_planets.json", {});
-  const PlanetaryResponseInput& r = f.response;
   const HarmonicBalance hb = planetary_response_model(f);
-  SweepOptions o;
-  o.omega_min = 2.0 * M_PI * r.f_mesh_hz_from;
-  o.omega_max = 2.0 * M_PI * r.f_mesh_hz_to;
-  o.stability = StabilityMethod::none;
+  const SweepOptions o = planetary_sweep_options(f);
   for (auto _ : state) {
-    const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
-    const std::size_t P = c.branch.points.size(), want = std::size_t(r.stability_points),
-                      every = std::max<std::size_t>(1, (P + want - 1) / want);
-    int unstable = 0;
-    for (std::size_t i = 0; i < P; ++i)
-      if (i % every == 0 || i + 1 == P)
-        unstable += floquet_of_hb_variational(hb, c.branch.points[i].X, c.branch.points[i].omega).stable ? 0 : 1;
-    state.counters["points"] = double(P);
-    state.counters["unstable"] = double(unstable);
+    FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+    c.stable.clear();
+    c.floquet.clear();
+    analyse_stability(hb, planetary_stability_options(o), c);
+    state.counters["points"] = double(c.branch.points.size());
+    state.counters["unstable"] = double(std::count(c.stable.begin(), c.stable.end(), false));
+    state.counters["bifurcations"] = double(c.bifurcations.size());
   }
 }
 BENCHMARK(BM_planetary_star_response_with_stability)->Unit(benchmark::kSecond)->Iterations(1);

@@ -31,7 +31,8 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import CONTACT_COLOURS, RUG_HEIGHT, contact_rug, read_csv, rug_room, save  # noqa: E402
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, bifurcation_handles, plot_branch,  # noqa: E402
+                   read_csv, rug_room, runs, save)
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
 
@@ -104,24 +105,23 @@ def response_figure(d_dir, params):
     d = read_csv(d_dir / "response.csv")
     hz, N = d["f_mesh_hz"], params["planets"]
     fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True)
-    top.plot(hz, d["sun_u_rms_um"], color="C0", label="sun rotation u_s (AC RMS)")
-    top.plot(hz, d["sun_xy_rms_um"], color="C1", label="sun centre x, y (AC RMS)")
-    for y, colour in (("sun_u_rms_um", "C0"), ("sun_xy_rms_um", "C1")):
-        for i, s in enumerate(d["stable"]):
-            if s == s:   # evaluated
-                top.plot(hz[i], d[y][i], "o" if s > 0.5 else "x", ms=4, color=colour if s > 0.5 else "red")
+    bif = read_bifurcations(d_dir)
+    for y, colour, label in (("sun_u_rms_um", "C0", "sun rotation u_s (AC RMS)"),
+                             ("sun_xy_rms_um", "C1", "sun centre x, y (AC RMS)")):
+        curve(top, d, y, colour, label)
+    bifurcation_marks(top, bif)
     top.set_ylabel("um")
     top.set_yscale("log")
-    top.plot([], [], "o", color="0.4", ms=4, label="Floquet: stable")
-    top.plot([], [], "x", color="red", ms=4, label="Floquet: unstable")
-    top.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    top.legend(handles=top.get_legend_handles_labels()[0] + stability_handles(d, bif),
+               loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     for kind, colour in (("sun", "C2"), ("ring", "C3")):
         kv = [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
         bottom.plot(hz, kv, color=colour, label="%s-planet meshes: largest K_v" % kind)
         loss = [hz[i] for i in range(len(hz))
                 if any("drive_loss" in d["contact_%s_%d" % (kind, n + 1)][i] for n in range(N))]
         bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
-                    transform=bottom.get_xaxis_transform(), label="%s-planet drive flank loses contact" % kind)
+                    transform=bottom.get_xaxis_transform(),
+                    label="%s-planet drive flank loses contact" % kind if loss else None)
     rug_room(bottom, rows=2)
     bottom.set_ylabel("K_v: largest force / static force")
     bottom.set_xlabel("mesh frequency [Hz]")
@@ -167,37 +167,84 @@ def phasing_figure(d_dir, params):
 RUG_STATE = {"drive_loss": "intermittent", "back_impact": "back_impact", "drive_loss+back_impact": "drive_loss+back_impact"}
 
 
-def stability_marks(ax, hz, y, stable, colour):
-    for i, s in enumerate(stable):
-        if s == s:   # evaluated
-            ax.plot(hz[i], y[i], "o" if s > 0.5 else "x", ms=4, color=colour if s > 0.5 else "red", zorder=3)
+def evaluated(d):
+    return any(s == s for s in d["stable"])
+
+
+def curve(ax, d, y, colour, label=None, lw=1.1):
+    """Column y over the mesh frequency: solid where stable, dashed where unstable (Floquet at
+    every point); one solid line where the run computed no stability."""
+    if evaluated(d):
+        plot_branch(ax, d, y=y, color=colour, label=label, x="f_mesh_hz", lw=lw)
+    else:
+        ax.plot(d["f_mesh_hz"], d[y], color=colour, lw=lw, label=label)
+
+
+def read_bifurcations(d_dir):
+    path = d_dir / "bifurcations.csv"
+    return read_csv(path) if path.exists() else {"type": [], "omega": []}
+
+
+def bifurcation_marks(ax, bif):
+    """The located bifurcations as marks just above the axes at their frequencies.
+    Not on the curves: bifurcations.csv does not say on which step of the curve each lies,
+    and on a folded curve several steps share a frequency (the dashed stretches show where
+    the curve is unstable)."""
+    for t, w in zip(bif["type"], bif["omega"]):
+        ax.plot(w / (2.0 * math.pi), 1.025, ls="none", marker=BIFURCATION_MARKERS[t], color=BIFURCATION_COLOURS[t],
+                mfc="none", ms=6, transform=ax.get_xaxis_transform(), clip_on=False, zorder=4)
+
+
+def stability_handles(d, bif):
+    """Legend entries: the line styles (if stability was computed) and the bifurcation kinds drawn."""
+    from matplotlib.lines import Line2D
+    if not evaluated(d):
+        return [Line2D([], [], ls="none", label="(no stability computed)")]
+    unstable = any(x == 0 for x in d["stable"])
+    return ([Line2D([], [], color="0.3", ls="-", label="stable (Floquet)" if unstable else "stable (Floquet) everywhere")] +
+            ([Line2D([], [], color="0.3", ls="--", label="unstable (Floquet)")] if unstable else []) +
+            [h for h in bifurcation_handles([k for k in BIFURCATION_MARKERS if k in bif["type"]])
+             if not h.set_label(h.get_label() + " (above the axes)")])
+
+
+def contact_on_curve(ax, d, y, column, colour):
+    """A mesh's contact class drawn on its own curve (y over the mesh frequency), point by point
+    along the branch: a broad translucent stroke under the line where the class is not full
+    contact. It follows the branch through a fold, so the stretches of a folded curve never lie
+    on one another as bands over the frequency axis would."""
+    xs, ys, states = d["f_mesh_hz"], d[y], d[column]
+    for state, i0, i1 in runs(list(states)):
+        if state in RUG_STATE:
+            j0, j1 = max(i0 - 1, 0), min(i1 + 1, len(xs) - 1)   # half a step on either side
+            px = [0.5 * (xs[j0] + xs[i0])] + list(xs[i0:i1 + 1]) + [0.5 * (xs[i1] + xs[j1])]
+            py = [0.5 * (ys[j0] + ys[i0])] + list(ys[i0:i1 + 1]) + [0.5 * (ys[i1] + ys[j1])]
+            ax.plot(px, py, color=CONTACT_COLOURS[RUG_STATE[state]], lw=7, alpha=0.55, solid_capstyle="butt",
+                    zorder=1)
 
 
 def meshes_figure(d_dir, params):
     d = read_csv(d_dir / "response.csv")
     hz, N = d["f_mesh_hz"], params["planets"]
     fig, axes = plt.subplots(2, 1, figsize=(7.6, 7.0), sharex=True)
+    bif = read_bifurcations(d_dir)
     for ax, kind in zip(axes, ("sun", "ring")):
         for n in range(N):
-            kv = d["dynamic_factor_%s_%d" % (kind, n + 1)]
-            ax.plot(hz, kv, color="C%d" % n, lw=1.1, label="planet %d" % (n + 1))
-            stability_marks(ax, hz, kv, d["stable"], "C%d" % n)
+            y = "dynamic_factor_%s_%d" % (kind, n + 1)
+            contact_on_curve(ax, d, y, "contact_%s_%d" % (kind, n + 1), "C%d" % n)
+            curve(ax, d, y, "C%d" % n, "planet %d" % (n + 1))
+        bifurcation_marks(ax, bif)
         ax.set_ylabel("%s-planet meshes: K_v" % kind)
-        rug_room(ax, rows=N)
-        for n in range(N):
-            states = [RUG_STATE.get(c, "none") for c in d["contact_%s_%d" % (kind, n + 1)]]
-            contact_rug(ax, {"f_mesh_hz": hz, "contact": states}, x="f_mesh_hz", row=n, colour="C%d" % n)
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, title="mesh of", title_fontsize=8)
-    from matplotlib.lines import Line2D
     from matplotlib.patches import Patch
-    axes[1].legend(handles=[Line2D([], [], ls="none", marker="o", color="0.4", ms=4, label="Floquet: stable"),
-                            Line2D([], [], ls="none", marker="x", color="red", ms=4, label="Floquet: unstable"),
-                            Patch(color=CONTACT_COLOURS["intermittent"], label="drive flank loses contact"),
-                            Patch(color=CONTACT_COLOURS["back_impact"], label="back flank hits"),
-                            Patch(color=CONTACT_COLOURS["drive_loss+back_impact"], label="both"),
-                            Patch(color="white", ec="0.6", label="no band: full contact")],
+    seen = {c for k in ("sun", "ring") for n in range(N) for c in d["contact_%s_%d" % (k, n + 1)]}
+    classes = [(c, text) for c, text in (("drive_loss", "drive flank loses contact"), ("back_impact", "back flank hits"),
+                                         ("drive_loss+back_impact", "both")) if c in seen]
+    axes[1].legend(handles=stability_handles(d, bif) +
+                   [Patch(color=CONTACT_COLOURS[RUG_STATE[c]], alpha=0.55, label=text) for c, text in classes] +
+                   [Patch(color="white", ec="0.6", label="no stroke: full contact" if classes
+                          else "full contact everywhere (no stroke)")],
                    loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
-                   title="bands: one per mesh,\ncoloured as its planet", title_fontsize=8)
+                   title="stability; contact class:\na broad stroke under\nthe mesh's own curve", title_fontsize=8)
     axes[1].set_xlabel("mesh frequency [Hz] (sun speed relative to the carrier: 60 f / z_s rpm)")
     back = params["mesh"].get("sun_planet_backlash", params["mesh"].get("ring_planet_backlash"))
     alike = all(abs(d["dynamic_factor_%s_%d" % (k, n + 1)][i] - d["dynamic_factor_%s_1" % k][i]) < 5e-3
@@ -213,20 +260,20 @@ def meshes_figure(d_dir, params):
 
 def load_sharing_figure(d_dir, params):
     d = read_csv(d_dir / "response.csv")
-    hz, N = d["f_mesh_hz"], params["planets"]
+    N = params["planets"]
     errors = params.get("planet", {}).get("pin_errors")
     fig, ax = plt.subplots(figsize=(7.0, 4.2))
     for n in range(N):
-        L = d["load_sharing_planet_%d" % (n + 1)]
         label = "planet %d" % (n + 1) + ("" if errors is None else ", pin error %g um" % (1e6 * errors[n]))
-        ax.plot(hz, L, color="C%d" % n, lw=1.1, label=label)
-        stability_marks(ax, hz, L, d["stable"], "C%d" % n)
+        curve(ax, d, "load_sharing_planet_%d" % (n + 1), "C%d" % n, label)
     ax.axhline(1.0, color="0.6", lw=0.8, ls=":")
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("planet load-sharing factor L_n")
     ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    stability = ("no stability computed" if not evaluated(d) else
+                 "dashed where unstable" if any(x == 0 for x in d["stable"]) else "stable everywhere (Floquet)")
     ax.set_title("%s: L_n = N max F_sn / sum_m max F_sm\n(F_sn the drive-flank force of sun-planet mesh n over the period;"
-                 " o stable, x unstable)" % params.get("name", "planetary set"), fontsize=9)
+                 " %s)" % (params.get("name", "planetary set"), stability), fontsize=9)
     return save(fig, d_dir / "load_sharing.png")
 
 

@@ -36,7 +36,7 @@ def main():
     os.makedirs(work)
     planetary, gear = os.path.join(work, "planetary"), os.path.join(work, "gear")
     run([os.path.join(bin_dir, "gearhb_planetary"), set_file, "--set", "plot=0", "--set", "response.f_mesh_hz.to=1320",
-         "--set", "response.stability_points=0", "--quiet", "--out", planetary])
+         "--set", "response.stability=0", "--quiet", "--out", planetary])
     run([os.path.join(bin_dir, "gearhb_gear"), pair_file, "--set", "plot=0", "--quiet", "--out", gear])
     ours = column(os.path.join(planetary, "mesh_stiffness.csv"), "k_sun_planet_N_per_m")
     theirs = column(os.path.join(gear, "ste_1.csv"), "k_N_per_m")

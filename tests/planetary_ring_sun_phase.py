@@ -33,7 +33,7 @@ def main():
     for i, (sets, (zs, zp, zr, alpha)) in enumerate(cases):
         out = os.path.join(work, str(i))
         cmd = [os.path.join(bin_dir, "gearhb_planetary"), set_file, "--set", "plot=0", "--set",
-               "response.f_mesh_hz.to=1320", "--set", "response.stability_points=0", "--quiet", "--out", out]
+               "response.f_mesh_hz.to=1320", "--set", "response.stability=0", "--quiet", "--out", out]
         for k, v in sets.items():
             cmd += ["--set", f"{k}={v}"]
         r = subprocess.run(cmd, capture_output=True, text=True)

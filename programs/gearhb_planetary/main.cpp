@@ -15,20 +15,20 @@
 // every mesh a unilateral contact (drive flank) whose stiffness is a rectangular wave over
 // the mesh cycle, shifted by its mesh phase (Parker & Lin 2004), under the input torque,
 // the output held by its shaft; harmonic balance with exact contact and arc-length
-// continuation over the mesh frequency, the Floquet multipliers of the variational
-// equation about the HB orbit at every k-th point (k = ceil(points / stability_points)) and the
-// last one, per mesh its dynamic factor K_v (largest force over the static one) and its
+// continuation over the mesh frequency, the stability of every point and the bifurcations
+// between them by the pair programs' sweep (tools/planetary_sweep.hpp), per mesh its dynamic factor K_v (largest force over the static one) and its
 // contact class (drive-flank loss, back-flank impact where the file gives a backlash), per
 // planet its load-sharing factor (unequal with pin position errors, planet.pin_errors).
 //
 // With mesh.stiffness tooth_model the mesh stiffnesses come from the teeth
 // (tools/planetary_stiffness.hpp): the sun-planet mesh's k(theta) by gearhb_gear's pair
-// model at the mesh's static load, the ring-planet mesh's by ISO 6336-1 for internal gears.
+// model at the mesh's static load, the ring-planet mesh's by the potential energy of an
+// internal tooth (or ISO 6336-1 for internal gears: mesh.ring_planet_stiffness).
 //
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
 // written; it computes the stiffnesses from the teeth), natural_frequencies, mode_shapes,
-// campbell, mesh_stiffness, response (loaded_model, response_curve, stability, response_table,
-// response_key_numbers), draw.
+// campbell, mesh_stiffness, response (loaded_model, response_curve, stability with
+// bifurcations.csv, response_table, response_key_numbers), draw.
 //
 // Sample runs:
 //   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --out /tmp/lp
@@ -54,6 +54,7 @@
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/tools/planetary_file.hpp"
 #include "gearhb/tools/planetary_stiffness.hpp"
+#include "gearhb/tools/planetary_sweep.hpp"
 
 #ifndef GEARHB_FIGURES_DIR
 #define GEARHB_FIGURES_DIR ""
@@ -86,8 +87,8 @@ class PlanetarySetFromFile {
   void mesh_stiffness(Run& run) const;
   void response(Run& run) const;
   HarmonicBalance loaded_model() const;
-  FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb) const;
-  void stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c, std::vector<bool>& evaluated) const;
+  FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb, SweepOptions& o) const;
+  void stability(Run& run, const HarmonicBalance& hb, const SweepOptions& o, FrequencyCurve& c) const;
   std::vector<PointMeasures> measures(const HarmonicBalance& hb, const FrequencyCurve& c) const;
   Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated,
                        const std::vector<PointMeasures>& m) const;
@@ -231,9 +232,10 @@ void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
 // Step 4 (with `response`): the set under load over the mesh frequency.
 void PlanetarySetFromFile::response(Run& run) const {
   const HarmonicBalance hb = loaded_model();
-  FrequencyCurve c = response_curve(run, hb);
-  std::vector<bool> evaluated;
-  stability(run, hb, c, evaluated);
+  SweepOptions o;
+  FrequencyCurve c = response_curve(run, hb, o);
+  stability(run, hb, o, c);
+  const std::vector<bool> evaluated(c.branch.points.size(), file_.response.stability);
   const std::vector<PointMeasures> m = measures(hb, c);
   run.write("response.csv", response_table(hb, c, evaluated, m));
   run.write("sun_harmonics.csv", sun_harmonics_table(hb, c));
@@ -244,40 +246,43 @@ void PlanetarySetFromFile::response(Run& run) const {
 // shaft, the input torque, the meshes as contacts.
 HarmonicBalance PlanetarySetFromFile::loaded_model() const { return planetary_response_model(file_); }
 
-// Arc-length continuation over the mesh frequency, no stability yet (the next step).
-FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBalance& hb) const {
-  SweepOptions o;
-  o.omega_min = 2.0 * M_PI * file_.response.f_mesh_hz_from;
-  o.omega_max = 2.0 * M_PI * file_.response.f_mesh_hz_to;
-  o.stability = StabilityMethod::none;
+// Arc-length continuation over the mesh frequency (the sweep of the pair programs,
+// hb/frequency_sweep.hpp), its stability the next step.
+FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBalance& hb, SweepOptions& o) const {
+  o = planetary_sweep_options(file_);
   report_sweep_progress(run, o, file_.name);
-  const FrequencyCurve c = run.timed("response", [&] { return sweep_frequency(hb, o, file_.name); });
+  FrequencyCurve c = run.timed("response", [&] { return sweep_frequency(hb, o, file_.name); });
   run.say(file_.name + ": " + c.branch.summary());
   if (!c.complete) throw std::runtime_error("the response did not reach response.f_mesh_hz.to: " + c.failure);
   return c;
 }
 
-// The Floquet multipliers of the variational equation about the HB orbit (floquet.hpp
-// floquet_of_hb_variational; about 0.15 s a point for N = 3 and 0.4 s for N = 5, H = 8:
-// gearhb_bench planetary_floquet_point; so not at every point)
-// at every k-th point of the curve, k = ceil(points / stability_points), and at its last point.
-void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, FrequencyCurve& c,
-                                     std::vector<bool>& evaluated) const {
-  const std::size_t P = c.branch.points.size(), want = std::size_t(file_.response.stability_points);
-  evaluated.assign(P, false);
-  c.stable.assign(P, true);
-  c.floquet.assign(P, PointFloquet{});
-  if (want == 0) return;
-  const std::size_t every = std::max<std::size_t>(1, (P + want - 1) / want);
-  run.timed("stability", [&] {
-    for (std::size_t i = 0; i < P; ++i) {
-      if (i % every != 0 && i + 1 != P) continue;
-      const FloquetResult f = floquet_of_hb_variational(hb, c.branch.points[i].X, c.branch.points[i].omega);
-      evaluated[i] = true;
-      c.stable[i] = f.stable;
-      c.floquet[i].modulus = f.modulus;
-    }
-  });
+// The Floquet multipliers of every point and the bifurcations between them, as the pair
+// programs' sweep (tools/planetary_sweep.hpp: the variational multipliers about the HB
+// orbit, no narrow-band search; why, and the cost). response.stability = 0 skips it.
+void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, const SweepOptions& o, FrequencyCurve& c) const {
+  c.stable.assign(c.branch.points.size(), true);
+  c.floquet.assign(c.branch.points.size(), PointFloquet{});
+  if (!file_.response.stability) return;
+  c.stable.clear();
+  c.floquet.clear();
+  c.stability = StabilityMethod::floquet;
+  run.timed("stability", [&] { analyse_stability(hb, planetary_stability_options(o), c); });
+  run.write("bifurcations.csv", bifurcation_table(c));
+  std::map<BifurcationType, int> count;
+  std::string where;
+  for (const Bifurcation& b : c.bifurcations) {
+    ++count[b.type];
+    where += std::string(where.empty() ? ": " : ", ") + to_string(b.type) + " at " +
+             std::to_string(int(std::lround(b.omega / (2.0 * M_PI)))) + " Hz";
+  }
+  KeyNumbers& key = run.key_numbers();
+  key.add("bifurcations", double(c.bifurcations.size()), "-");
+  for (BifurcationType t : {BifurcationType::fold, BifurcationType::branch_point, BifurcationType::period_doubling,
+                            BifurcationType::neimark_sacker})
+    key.add(std::string("bifurcations_") + to_string(t), double(count[t]), "-");
+  add_unstable_period1_ranges(key, c, o.omega_min, o.omega_max);
+  run.say(file_.name + ": " + std::to_string(c.bifurcations.size()) + " bifurcations" + where);
 }
 
 // Every point's meshes over the period (planetary_mesh.hpp): K_v against each mesh's static
@@ -392,10 +397,12 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
   char line[320];
   std::snprintf(line, sizeof line,
                 "largest K_v %.3f at %.1f Hz, largest load sharing %.3f at %.1f Hz; a drive flank loses contact at %d points%s; "
-                "a back flank hits at %d points%s; Floquet at %d points, %d unstable",
+                "a back flank hits at %d points%s; ",
                 kv_max, kv_hz, ls_max, ls_hz, loss_points, lowest(first_loss).c_str(), impact_points,
-                lowest(first_impact).c_str(), checked, unstable);
-  run.say(file_.name + ": " + line);
+                lowest(first_impact).c_str());
+  run.say(file_.name + ": " + line +
+          (checked == 0 ? std::string("no stability (response.stability 0)")
+                        : "Floquet at " + std::to_string(checked) + " points, " + std::to_string(unstable) + " unstable"));
 }
 
 // Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
@@ -411,7 +418,8 @@ int main(int argc, char** argv) {
               "gearhb_planetary: a planetary or star gear set from its drawing (Lin & Parker 1999)\n"
               "  M q'' + (K_b + K_m) q = 0, three DOFs per body in the carrier frame\n"
               "Writes DIR/modes.csv (frequency_hz, mode_type, multiplicity), mode_shapes.csv,\n"
-              "key_numbers.json, params.json (the resolved file), timings.csv and modes.png.\n\n" +
+              "key_numbers.json, params.json (the resolved file), timings.csv and modes.png; with `response`\n"
+              "response.csv, sun_harmonics.csv, bifurcations.csv (response.stability 1: every point's stability).\n\n" +
                   planetary_file_help());
   PlanetarySetFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -43,6 +44,7 @@ const char* to_string(FirstPointMethod m) {
     case FirstPointMethod::linear_guess: return "linear_guess";
     case FirstPointMethod::contact_set: return "contact_set";
     case FirstPointMethod::amplitude_continuation: return "amplitude_continuation";
+    case FirstPointMethod::stiffness_continuation: return "stiffness_continuation";
   }
   return "?";
 }
@@ -74,6 +76,43 @@ class AmplitudeHomotopy : public ParametricProblem {
   const HarmonicBalance& hb_;
   double w_;
   Eigen::VectorXd fper_;
+};
+
+// Step 4: continuation in the depth of the contacts' stiffness variation. The contact force
+// kc s(theta) max(u, 0) is linear in the profile s, so the balance of the profile
+// s_lambda = 1 + lambda (s - 1) is R_lambda = (1 - lambda) R_0 + lambda R_1, R_0 that of the
+// model with constant stiffnesses kc (lambda = 0: no parametric excitation) and R_1 the
+// model's own: exactly, not a linearisation. Only the contacts with a profile change.
+class StiffnessHomotopy : public ParametricProblem {
+ public:
+  StiffnessHomotopy(const HarmonicBalance& hb, double omega) : hb_(hb), w_(omega) {
+    std::vector<UnilateralContact> flat = hb.contacts();
+    for (auto& c : flat) c.stiffness_profile = {};
+    flat_ = std::make_unique<HarmonicBalance>(hb.system(), flat, hb.excitation(), hb.harmonics(), hb.samples(),
+                                              hb.quadrature());
+  }
+  int size() const override { return hb_.size(); }
+  void evaluate(const Eigen::VectorXd& X, double lambda, Eigen::VectorXd& R, Eigen::MatrixXd* dRdX,
+                Eigen::VectorXd* dRdlambda) const override {
+    Eigen::VectorXd R0, unused;
+    Eigen::MatrixXd J0;
+    flat_->evaluate(X, w_, R0, dRdX ? &J0 : nullptr, nullptr);
+    hb_.evaluate(X, w_, R, dRdX, nullptr);
+    if (dRdlambda) *dRdlambda = R - R0;
+    R = (1.0 - lambda) * R0 + lambda * R;
+    if (dRdX) *dRdX = (1.0 - lambda) * J0 + lambda * *dRdX;
+  }
+  bool parametric() const {
+    for (const auto& c : hb_.contacts())
+      if (c.stiffness_profile) return true;
+    return false;
+  }
+  const HarmonicBalance& flat() const { return *flat_; }
+
+ private:
+  const HarmonicBalance& hb_;
+  double w_;
+  std::unique_ptr<HarmonicBalance> flat_;
 };
 
 struct Candidate {
@@ -162,38 +201,82 @@ bool from_linear_guess(const HarmonicBalance& hb, double omega, const Scaling& s
   return false;
 }
 
-// 3. Continuation in the forcing amplitude lambda from the static problem (lambda = 0) to the
-// problem itself (lambda = 1), confirmed there by a last Newton solve; on failure, why.
-bool from_amplitude_continuation(const HarmonicBalance& hb, double omega, const Scaling& s,
-                                 const FirstPointOptions& opt, FirstPoint& fp, std::ostringstream& why) {
-  const AmplitudeHomotopy homotopy(hb, omega);
-  if (!opt.amplitude_continuation || !homotopy.forced()) return false;
-  if (!first_converged(homotopy, contact_set_candidates(hb, homotopy, omega, 0.0, opt, true, {}), 0.0, s, opt, fp)) {
-    why << "; the forcing-amplitude continuation has no start: no static equilibrium under the static load alone"
-           " (no contact set holds it; with K singular a static load must press a contact)";
-    return false;
-  }
+// What a homotopy is called in the failure reports: "the <name> continuation from <start>
+// stopped (did not reach the full <full>)".
+struct HomotopyWords {
+  const char *name, *start, *full;
+};
+
+// Steps 3 and 4 from their start X (at lambda = 0): arc-length continuation of the homotopy
+// to lambda = 1, confirmed there by a last Newton solve on the model; on failure, why.
+bool continue_to_one(const ParametricProblem& homotopy, const HarmonicBalance& hb, double omega, const Scaling& s,
+                     const FirstPointOptions& opt, const Eigen::VectorXd& X0, const HomotopyWords& w, FirstPoint& fp,
+                     std::ostringstream& why) {
   ContinuationOptions co = opt.continuation;
   co.omega_start = 0.0;
   co.omega_end = 1.0;
   Scaling sl = s;
   sl.omega = 1.0;
-  const Branch b = arc_length_continuation(homotopy, fp.X, sl, co);
+  const Branch b = arc_length_continuation(homotopy, X0, sl, co);
   fp.homotopy_points = int(b.points.size());
   if (!b.complete || b.points.empty() || b.points.back().omega != 1.0) {
-    why << "; the forcing-amplitude continuation from the static equilibrium stopped ("
-        << (b.failures.empty() ? std::string("did not reach the full amplitude") : b.summary()) << ")";
+    why << "; the " << w.name << " continuation from " << w.start << " stopped ("
+        << (b.failures.empty() ? std::string("did not reach the full ") + w.full : b.summary()) << ")";
     return false;
   }
   Eigen::VectorXd X = b.points.back().X;
   ++fp.newton_solves;
   const NewtonReport r = newton_solve(hb, X, omega, s, opt.newton);
   if (!r.converged) {
-    why << "; the forcing-amplitude continuation reached lambda = 1 but Newton there failed: " << r.message;
+    why << "; the " << w.name << " continuation reached lambda = 1 but Newton there failed: " << r.message;
     return false;
   }
   fp.X = std::move(X);
   return true;
+}
+
+// 3. Continuation in the forcing amplitude lambda from the static problem (lambda = 0) to the
+// problem itself (lambda = 1), confirmed there by a last Newton solve; on failure, why.
+bool from_amplitude_continuation(const HarmonicBalance& hb, double omega, const Scaling& s,
+                                 const FirstPointOptions& opt, FirstPoint& fp, std::ostringstream& why) {
+  const AmplitudeHomotopy homotopy(hb, omega);
+  if (!opt.amplitude_continuation) return false;
+  if (!homotopy.forced()) {   // say so: a set driven by its mesh stiffness alone ends here (first_point.hpp "Limits")
+    why << "; no forcing-amplitude continuation: the model has no periodic external forcing to scale (its excitation"
+           " is its contacts' time-varying stiffness or gap, which the continuation does not scale)";
+    return false;
+  }
+  if (!first_converged(homotopy, contact_set_candidates(hb, homotopy, omega, 0.0, opt, true, {}), 0.0, s, opt, fp)) {
+    why << "; the forcing-amplitude continuation has no start: no static equilibrium under the static load alone"
+           " (no contact set holds it; with K singular a static load must press a contact)";
+    return false;
+  }
+  return continue_to_one(homotopy, hb, omega, s, opt, fp.X, {"forcing-amplitude", "the static equilibrium", "amplitude"},
+                         fp, why);
+}
+
+// 4. Continuation in the depth of the stiffness variation (StiffnessHomotopy) from the
+// model with constant contact stiffnesses, whose first point steps 1-2 find (its orbit is
+// static where nothing else forces it), to the model itself; on failure, why.
+bool from_stiffness_continuation(const HarmonicBalance& hb, double omega, const Scaling& s,
+                                 const FirstPointOptions& opt, FirstPoint& fp, std::ostringstream& why) {
+  const StiffnessHomotopy homotopy(hb, omega);
+  if (!opt.amplitude_continuation || !homotopy.parametric()) return false;
+  const HarmonicBalance& flat = homotopy.flat();
+  Eigen::VectorXd X = linear_first_guess(flat, omega);
+  ++fp.newton_solves;
+  if (!newton_solve(flat, X, omega, s, opt.newton).converged) {
+    const int P = int(flat.contacts().size());
+    const unsigned long long all = P >= 64 ? ~0ull : (1ull << P) - 1ull;
+    if (!first_converged(flat, contact_set_candidates(flat, flat, omega, omega, opt, false, {0ull, all}), omega, s, opt,
+                         fp)) {
+      why << "; the stiffness-variation continuation has no start: no solution with constant contact stiffnesses";
+      return false;
+    }
+    X = fp.X;
+  }
+  return continue_to_one(homotopy, hb, omega, s, opt, X, {"stiffness-variation", "constant stiffnesses", "variation"}, fp,
+                         why);
 }
 
 }  // namespace
@@ -215,6 +298,7 @@ FirstPoint find_first_point(const HarmonicBalance& hb, double omega, const Scali
     if (first_converged(hb, cands, omega, s, opt, fp)) return found(FirstPointMethod::contact_set);
     why << "; Newton from the linear solution of each of the " << cands.size() << " other contact sets failed";
     if (from_amplitude_continuation(hb, omega, s, opt, fp, why)) return found(FirstPointMethod::amplitude_continuation);
+    if (from_stiffness_continuation(hb, omega, s, opt, fp, why)) return found(FirstPointMethod::stiffness_continuation);
   }
   fp.failure = why.str();
   return fp;

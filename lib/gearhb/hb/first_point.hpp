@@ -36,6 +36,14 @@
 //     hysteresis of an impacting oscillator near its resonance). Where the multi-
 //     impact response of a large forcing is far from any linear solution (the
 //     oscillator at Omega = 0.3, F_a >= 0.1), this is what starts the sweep.
+//  4. Where a contact's stiffness varies over the period (stiffness_profile: a gear mesh, a
+//     planetary set driven by its meshes alone, which step 3 cannot scale): continuation
+//     in the depth lambda of the variation, profile 1 + lambda (s - 1), from the model with
+//     constant stiffnesses (started by steps 1-2: its orbit is static where nothing else
+//     forces it) to lambda = 1. Exact at every lambda: the contact force is linear in s, so
+//     the residual is (1 - lambda) R_constant + lambda R. (The loaded planetary example of
+//     gearhb_planetary from 1500 Hz, inside its range of contact loss, starts here.)
+//     Switched with step 3 (amplitude_continuation).
 // Limits: the homotopy scales the external forcing only (a model forced only by the
 // periodic part of its gaps, a transmission error, gains nothing from it); a
 // static problem with no equilibrium (K = 0 and no static load pressing a contact)
@@ -53,7 +61,7 @@ namespace gearhb {
 struct FirstPointOptions {
   NewtonOptions newton{1e-10, 50};   // each Newton solve of steps 1-2
   int max_set_contacts = 6;          // step 2 tries all 2^P sets up to this many contacts
-  bool amplitude_continuation = true;   // step 3
+  bool amplitude_continuation = true;   // steps 3 and 4
   // Step 3's continuation (omega_start / omega_end are set to 0 and 1; its scaled
   // arc length measures lambda in units of 1). `regime` and the step sizes are used.
   ContinuationOptions continuation;
@@ -62,7 +70,7 @@ struct FirstPointOptions {
   Eigen::VectorXd linear_guess;
 };
 
-enum class FirstPointMethod { none, linear_guess, contact_set, amplitude_continuation };
+enum class FirstPointMethod { none, linear_guess, contact_set, amplitude_continuation, stiffness_continuation };
 const char* to_string(FirstPointMethod m);
 
 struct FirstPoint {

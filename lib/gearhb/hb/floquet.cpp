@@ -542,6 +542,7 @@ std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::Vecto
 
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega, double x_scale,
                                   const FloquetOptions& opt) {
+  if (!opt.correct_orbit) return floquet_of_hb_variational(hb, X, omega, opt);
   if (has_stiffness_profile(hb)) return floquet_of_hb_shooting_gsl(hb, X, omega, x_scale, opt);
   const int n = hb.dofs(), H = hb.harmonics();
   const double T = 2.0 * M_PI / omega;

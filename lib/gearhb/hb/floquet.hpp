@@ -44,6 +44,11 @@ struct FloquetOptions {
   double tolerance = 1e-10;    // on |P(y) - y|: displacements / x_scale, velocities / (omega x_scale)
   int steps = 0;               // uniform grid steps per period (0: max(64, 2 (2H+1)))
   double stability_margin = 0.0;   // stable iff max |multiplier| < 1 - margin
+  // false: floquet_of_hb_orbit takes the multipliers of the variational equation about the
+  // HB orbit itself (floquet_of_hb_variational, not corrected), where a corrected orbit costs
+  // too much at every point of a sweep (a planetary set's 24 DOFs on GSL's period map: about
+  // 3 s a point against 0.08 s; programs/gearhb_planetary).
+  bool correct_orbit = true;
 };
 
 struct FloquetResult {
@@ -156,6 +161,7 @@ std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::Vecto
 // x_scale: characteristic displacement (HarmonicBalance::scaling).
 // A model with a time-varying contact stiffness (contact.hpp stiffness_profile)
 // has no piecewise-constant generator: it goes to floquet_of_hb_shooting_gsl.
+// opt.correct_orbit = false: floquet_of_hb_variational instead (no correction).
 FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                   double x_scale, const FloquetOptions& opt = {});
 

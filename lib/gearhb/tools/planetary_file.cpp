@@ -229,7 +229,7 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
   if (!j.contains("response")) return;
   const json& r = member(j, file, "response");
   only_keys(r, file, "response", {"input", "torque", "output", "output_shaft", "f_mesh_hz", "zeta", "harmonics",
-                                  "stability_points"});
+                                  "stability"});
   PlanetaryResponseInput& p = f.response;
   p.present = true;
   int contacts = 2 * f.set.planets();   // the drive flanks, and a back flank where a backlash is given
@@ -253,7 +253,7 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
     fail_key(file, "response.f_mesh_hz.to", "must be above response.f_mesh_hz.from");
   p.zeta = optional_number(r, file, "response", "zeta", 0.02, 1e-4, 0.5, "[1e-4, 0.5]");
   p.harmonics = r.contains("harmonics") ? whole(r, file, "response", "harmonics", 1, 32) : 8;
-  p.stability_points = r.contains("stability_points") ? whole(r, file, "response", "stability_points", 0, 200) : 24;
+  p.stability = r.contains("stability") ? json_flag(r["stability"], file, "response.stability") : true;
   if (f.tooth_model) compute_tooth_stiffness(f, file);
   try {   // the stiffness waves cut to H harmonics must stay stiffnesses (Gibbs undershoot)
     (void)planetary_mesh_contacts(f.set, f.meshes, p.harmonics);
@@ -357,7 +357,7 @@ std::string planetary_file_help() {
          "                           on each (none without); mesh.back_phase: its wave's lag [cycles] (0)\n"
          "  response                 optional: input (sun | ring | carrier), torque [N m] > 0, output,\n"
          "                           output_shaft [N/m] added to its torsional stiffness, f_mesh_hz.from/to,\n"
-         "                           zeta (0.02), harmonics (8), stability_points (24)\n"
+         "                           zeta (0.02), harmonics (8), stability (1: every point's)\n"
          "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n"
          "Checks (exit 2 naming the key): z_r = z_s + 2 z_p, (z_s + z_r) / N whole (equal spacing) or\n"
          "(z_s + z_r) psi_n / 360 whole (given angles), tip circles of neighbouring planets apart.\n";

@@ -35,7 +35,7 @@
 //     "response": {"input": "sun", "torque": 100,                      optional: the response over
 //                  "output": "carrier", "output_shaft": 1e8,           mesh frequency; torque [N m] on the
 //                  "f_mesh_hz": {"from": 300, "to": 3000},             input, the output member held by a
-//                  "zeta": 0.02, "harmonics": 8, "stability_points": 24}   shaft of k_theta / r^2 [N/m]
+//                  "zeta": 0.02, "harmonics": 8, "stability": 1}        shaft of k_theta / r^2 [N/m]
 //     "campbell": {"carrier_rpm_to": 6000, "points": 31}   optional: the natural frequencies over
 //                                                  carrier speed 0..carrier_rpm_to (gyroscopic)
 //   }
@@ -66,7 +66,7 @@ struct PlanetaryResponseInput {
   double f_mesh_hz_from = 0.0, f_mesh_hz_to = 0.0;   // [Hz]
   double zeta = 0.02;            // modal damping ratio of the mean system
   int harmonics = 8;             // H
-  int stability_points = 24;     // points of the curve whose Floquet multipliers are computed
+  bool stability = true;          // every point's Floquet multipliers and the bifurcations (tools/planetary_sweep.hpp)
 };
 
 struct PlanetaryFile {

@@ -1,0 +1,46 @@
+#pragma once
+// The sweep of a planetary-set file's `response` (programs/gearhb_planetary), shared by the
+// program and its benchmark so that both time the same computation.
+//
+// The stability of every point as the pair programs' sweep computes it (hb/frequency_sweep.hpp
+// analyse_stability: Floquet multipliers at every point, each change of the count outside the
+// unit circle located on the chord and classified as fold, period doubling or Neimark-Sacker),
+// with two choices made for the set's size (24 DOFs for five planets), both measured on the
+// five-planet star set (examples/gtf_star_five_planets.json, 134 points; gearhb_bench
+// --benchmark_filter=planetary):
+//  - the multipliers of the variational equation about the HB orbit (FloquetOptions::
+//    correct_orbit = false; floquet.hpp floquet_of_hb_variational), not those of the orbit
+//    corrected by shooting: the meshes' stiffness varies with the mesh phase, so the
+//    corrected orbit needs GSL's period map with 2n + 4n^2 = 2352 equations, about 3 s a point
+//    (446 s for the curve) against 0.065 s (8.7 s);
+//  - no search for instability bands narrower than a step between two stable points
+//    (BandSearch::never; frequency_sweep.hpp add_narrow_bands): it cost 58 s more on the star
+//    set (12-40 Floquet points for each interval whose critical multiplier lies near the real
+//    axis beyond 0.75, which a lightly damped set has everywhere) and found none there.
+#include <cmath>
+
+#include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/tools/planetary_file.hpp"
+
+namespace gearhb {
+
+// The continuation over the file's mesh-frequency range (no stability: the program times it
+// as its own step, planetary_stability_options).
+inline SweepOptions planetary_sweep_options(const PlanetaryFile& f) {
+  SweepOptions o;
+  o.omega_min = 2.0 * M_PI * f.response.f_mesh_hz_from;
+  o.omega_max = 2.0 * M_PI * f.response.f_mesh_hz_to;
+  o.stability = StabilityMethod::none;
+  return o;
+}
+
+// The same options for analyse_stability (see above).
+inline SweepOptions planetary_stability_options(SweepOptions o) {
+  o.stability = StabilityMethod::floquet;
+  o.locate_bifurcations = true;
+  o.floquet.correct_orbit = false;
+  o.narrow_bands = BandSearch::never;
+  return o;
+}
+
+}  // namespace gearhb
