@@ -419,7 +419,7 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
     }
   };
   FloquetResult r;
-  r.monodromy = monodromy_second_order(B, MinvC, T, breakpoints, 1e-11);
+  r.monodromy = monodromy_second_order(B, MinvC, T, breakpoints, opt.variational_tolerance);
   r.orbit_error = NAN;   // the HB orbit is not corrected on this path
   hb_initial_state(hb, X, omega, r.x0, r.v0);
   set_multipliers(r, r.monodromy, opt, omega);
