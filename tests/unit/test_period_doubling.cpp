@@ -69,9 +69,9 @@ TEST(PeriodDoubling, Ex03BranchJoinsTheTwoDoublings) {
 
 // Near the merge the period-2 branch runs close to the period-1 branch, which solves the
 // period-2 model too: a full step's corrector may converge onto it (the odd part falls from 7 %
-// of the orbit to round-off in one step) and the round-off sign of the odd part then reads as a
-// merge where there is no PD. Whatever the step length, the branch must stay off the period-1
-// branch until it merges at the lower PD.
+// of the orbit to round-off in one step; seen at the default step from a branch point located
+// 1e-12 away, where the round-off sign of the odd part read as a merge with no PD). At other
+// step lengths the branch must still merge at the lower PD with no point on the period-1 branch.
 TEST(PeriodDoubling, Ex03BranchNeverStepsOntoThePeriodOneBranch) {
   const auto& e = ex03();
   for (const double ds_max : {0.01, 0.03}) {

@@ -2,8 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
-#include <functional>
 #include <sstream>
 #include <stdexcept>
 
@@ -272,25 +270,6 @@ void end_before_jump(Branch& b, const Scaling& s, double factor, double omega_mi
 
 namespace {
 
-// The regime of a period-2 point for the continuation (ContinuationOptions::regime): its
-// contact regime, and bit 63 set where its odd harmonics vanish (below 1e-9 of the scale xs: it
-// is a period-1 orbit, a solution of the period-2 model too). A step that lands on the period-1
-// branch is then a regime change, retried with shorter steps (to ds_regime_change): near the
-// merge the two branches are close, and a full step's corrector may converge onto the period-1
-// orbit instead (ex. 03: from |odd| = 0.069 to 5e-13 in one step, 0.7408 -> 0.7407, after which
-// the round-off sign of the odd part read as a merge at 0.7403, where there is no PD). A true
-// merge approaches with the odd part falling like the square root of the distance in omega: its
-// points never come within 1e-9 of the scale by chance.
-std::function<std::uint64_t(const Eigen::VectorXd&)> period2_regime(const HarmonicBalance& hbp, double xs) {
-  static_assert(2 * kMaxContacts < 63, "bit 63 is free of the contact regime's two bits per contact");
-  const auto contact = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
-  return [&hbp, contact, xs](const Eigen::VectorXd& X) {
-    std::uint64_t code = contact ? contact(X) : 0;
-    if (subharmonic_part(hbp, 2, X).cwiseAbs().maxCoeff() <= 1e-9 * xs) code |= std::uint64_t(1) << 63;
-    return code;
-  };
-}
-
 // The continuation of the period-2 branch away from its branch point, with what decides its end:
 // it merged when its odd part reverses against the point before (a smooth branch turns its odd
 // part gradually; it flips only through zero).
@@ -305,7 +284,7 @@ struct Period2Continuation {
       : hbp(hbp_), s(c.scaling), co(opt.continuation) {
     s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
     s.omega = c.scaling.omega / 2.0;
-    co.regime = period2_regime(hbp, c.scaling.x[0]);
+    co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
     end.omega_min = opt.omega_min / 2.0;
     end.omega_max = opt.omega_max / 2.0;
     end.stop = [this](const Eigen::VectorXd& X, double) {

@@ -47,10 +47,7 @@
 //     merged at another PD; the crossing is refined by secant iterations on the chord to
 //     |odd| ~ 0 and matched to the nearest located PD of c), where it leaves the range
 //     (complete), or where the continuation fails (the reason kept; the rest of the run
-//     stands). A step whose corrector lands on the period-1 branch itself (odd harmonics
-//     below 1e-9 of the scale; close to the period-2 branch near the merge) counts as a
-//     regime change and is retried shorter (period_doubling.cpp, period2_regime): read as a
-//     merge, its round-off odd part had ended a branch where there is no PD.
+//     stands).
 // The two directions +-e from the PD give the same orbits shifted by one forcing period
 // (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
 // a PD where an earlier branch merged is not switched again.
