@@ -93,3 +93,26 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
 // fast_iterations: the continuation's step-growth rule (3, the sweep's default: the period-2
 // corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).
 BENCHMARK(BM_Ex03Period2Branch)->Arg(3)->Arg(4)->ArgNames({"fast_iterations"})->Unit(benchmark::kMillisecond);
+
+// One corrector iteration of that branch at its middle point: the period-2 model's
+// linearization (residual, product matrix, condensed system) and one bordered solve.
+static void BM_Ex03Period2Iteration(benchmark::State& st) {
+  const HarmonicBalance hb = test_models::nlvib_ex03(40);
+  const SweepOptions o = ex03_options(StabilityMethod::floquet, true, 0.02, 0.0);
+  const auto br = period_doubled_branches(hb, sweep_frequency(hb, o, "ex03"), o);
+  if (br.empty() || br[0].curve.branch.points.size() < 3) {
+    st.SkipWithError("no period-2 branch");
+    return;
+  }
+  const HarmonicBalance& hbp = *br[0].model;
+  const BranchPoint& p = br[0].curve.branch.points[br[0].curve.branch.points.size() / 2];
+  const Scaling& s = br[0].curve.scaling;
+  Eigen::VectorXd R, dRdomega, dy, row = Eigen::VectorXd::Zero(hbp.size() + 1), rhs = row;
+  row[hbp.size()] = 1.0;
+  rhs[0] = 1.0;
+  for (auto _ : st) {
+    const auto lin = hbp.linearize(p.X, p.omega, s, R, dRdomega);
+    benchmark::DoNotOptimize(lin->solve_bordered(row, rhs, dy));
+  }
+}
+BENCHMARK(BM_Ex03Period2Iteration)->Unit(benchmark::kMicrosecond);

@@ -56,7 +56,8 @@ class FrequencyResponseFromFile {
   void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, const SweepOptions& o) const;
+  std::vector<TorusBranch> torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const SweepOptions& o, int first_id) const;
   void draw(Run& run) const;
 };
 
@@ -157,8 +158,13 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   if (model_.period_doubling_depth >= 1)
     pd = run.timed("period-2 branches", [&] { return period_doubling_cascade(hb, c, o, model_.period_doubling_depth); });
   for (const auto& b : pd) run.say(model_.name + ": " + b.why);
+  // Torus branches from the NS points (hb/quasi_periodic.hpp): ids after the period-doubled
+  // branches', so that bifurcations.csv's starts_branch names either kind.
+  const int first_torus = int(pd.size()) + 1;
+  std::vector<int> starts = branch_starts(c, pd);
+  if (model_.torus_on) add_torus_starts(starts, torus_branches(run, hb, c, o, first_torus), first_torus);
   Table frc = dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name));
-  Table bif = bifurcation_table(c, {}, branch_starts(c, pd));
+  Table bif = bifurcation_table(c, {}, starts);
   int period2_points = 0;
   for (std::size_t k = 0; k < pd.size(); ++k) {
     if (!has_points(pd[k])) continue;
@@ -172,7 +178,6 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
   curve_key_numbers(run, hb, c);
-  if (model_.torus_on) torus_branches(run, hb, c, o);
   if (model_.diagram.on) bifurcation_diagram(run, hb, c);
 }
 
@@ -240,18 +245,19 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
 // Step 3b (with the file's torus key): quasi-periodic motion past each Neimark-Sacker point,
 // a torus branch by two-frequency harmonic balance (hb/quasi_periodic.hpp); torus.csv (app/tables.hpp)
 // and key numbers per branch: where it starts (the NS point), the Floquet second frequency
-// there (alpha omega / 2 pi), its points, where it ends and its omega2 there; a branch that
-// fails says where and why.
-void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                               const SweepOptions& o) const {
+// there (alpha omega / 2 pi), its points, where it ends and its omega2 there, each under its
+// branch id (first_id, first_id + 1, ...); a branch that fails says where and why.
+std::vector<TorusBranch> FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& hb,
+                                                                   const FrequencyCurve& c, const SweepOptions& o,
+                                                                   int first_id) const {
   const TorusOptions& to = model_.torus;
   const TorusBalance tb(hb, to.harmonics1, to.harmonics2, to.lines);
   const std::vector<TorusBranch> br = run.timed("torus branches", [&] { return gearhb::torus_branches(tb, c, o, to); });
-  run.write("torus.csv", torus_table(tb, br, model_.output));
+  run.write("torus.csv", torus_table(tb, br, model_.output, first_id));
   KeyNumbers& key = run.key_numbers();
   key.add("torus_branches", double(br.size()), "-");
   for (std::size_t k = 0; k < br.size(); ++k) {
-    const std::string id = std::to_string(k + 1);
+    const std::string id = std::to_string(first_id + int(k));
     run.say(model_.name + ": " + br[k].why + " (" + std::to_string(br[k].points.size()) + " points)");
     key.add("torus_omega_ns_" + id, br[k].omega_ns, "rad/s");
     if (std::isfinite(br[k].omega2_ns)) key.add("torus_omega2_floquet_" + id, br[k].omega2_ns, "rad/s");
@@ -260,6 +266,7 @@ void FrequencyResponseFromFile::torus_branches(Run& run, const HarmonicBalance& 
     key.add("torus_omega_end_" + id, br[k].omega_end, "rad/s");
     key.add("torus_omega2_end_" + id, br[k].points.back().omega2, "rad/s");
   }
+  return br;
 }
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).

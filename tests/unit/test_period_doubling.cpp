@@ -67,6 +67,28 @@ TEST(PeriodDoubling, Ex03BranchJoinsTheTwoDoublings) {
   EXPECT_LT(odd_norm(b, P.back()), 0.02 * largest);
 }
 
+// Near the merge the period-2 branch runs close to the period-1 branch, which solves the
+// period-2 model too: a full step's corrector may converge onto it (the odd part falls from 7 %
+// of the orbit to round-off in one step; seen at the default step from a branch point located
+// 1e-12 away, where the round-off sign of the odd part read as a merge with no PD). At other
+// step lengths the branch must still merge at the lower PD with no point on the period-1 branch.
+TEST(PeriodDoubling, Ex03BranchNeverStepsOntoThePeriodOneBranch) {
+  const auto& e = ex03();
+  for (const double ds_max : {0.01, 0.03}) {
+    SweepOptions o = e.o;
+    o.continuation.ds_max = ds_max;
+    const auto br = period_doubled_branches(e.hb, e.c, o);
+    ASSERT_EQ(br.size(), 1u) << "ds_max " << ds_max;
+    const PeriodDoubledBranch& b = br[0];
+    EXPECT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+    EXPECT_NEAR(b.omega_end, kPdLow, 5e-6) << "ds_max " << ds_max << ": " << b.why;
+    const auto& P = b.curve.branch.points;
+    for (std::size_t k = 1; k + 1 < P.size(); ++k)
+      EXPECT_GT(odd_norm(b, P[k]), 1e-6) << "ds_max " << ds_max << ": point " << k << " at omega "
+                                         << 2.0 * P[k].omega << " lies on the period-1 branch";
+  }
+}
+
 TEST(PeriodDoubling, Ex03StablePointsAreSeenByTimeIntegration) {
   const auto& e = ex03();
   ASSERT_EQ(e.br.size(), 1u);

@@ -11,9 +11,14 @@
 //  - the torus against a long GSL time integration at three omegas: the second frequency
 //    from the rotation of the Poincare points (theta1 = 0 mod 2 pi) and the largest q1.
 #include <cmath>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "gearhb/app/tables.hpp"
 #include "gearhb/hb/quasi_periodic.hpp"
 #include "gearhb/hb/time_integration.hpp"
 #include "test_models.hpp"
@@ -153,6 +158,61 @@ TEST(QuasiPeriodic, SecondFrequencyAtTheNsPointIsTheFloquetAngle) {
   EXPECT_NEAR(omega_0, ns.omega, 1e-3);
   EXPECT_NEAR(omega2_0, omega2_floquet, 1e-3);
   EXPECT_NEAR(b.omega2_ns, omega2_floquet, 1e-7);   // the branch's own Floquet value (its NS orbit corrected again)
+}
+
+// The rows of a table's CSV as column -> text.
+static std::vector<std::map<std::string, std::string>> csv_rows(const Table& t) {
+  std::istringstream in(t.to_csv());
+  std::string line, cell;
+  std::vector<std::string> head;
+  std::vector<std::map<std::string, std::string>> rows;
+  for (bool first = true; std::getline(in, line); first = false) {
+    std::istringstream cells(line);
+    std::vector<std::string> v;
+    while (std::getline(cells, cell, ',')) v.push_back(cell);
+    if (!line.empty() && line.back() == ',') v.push_back("");
+    if (first) {
+      head = v;
+      continue;
+    }
+    std::map<std::string, std::string> row;
+    for (std::size_t j = 0; j < head.size() && j < v.size(); ++j) row[head[j]] = v[j];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+// One branch numbering per run (gearhb_frc): the torus branches after P period-doubled ones
+// are P + 1, P + 2, ... (here P = 2), in torus.csv's `branch` and in bifurcations.csv's
+// `starts_branch` of the NS point each starts; a start that fails keeps its id with no rows.
+TEST(QuasiPeriodic, TorusBranchIdsFollowThePeriodDoubledBranches) {
+  const TorusCase& t = torus_case();
+  TorusOptions to;
+  to.harmonics1 = 21;
+  to.max_points = 2;
+  const TorusBalance tb(t.hb, to.harmonics1, to.harmonics2);
+  const std::vector<TorusBranch> br = torus_branches(tb, t.c, t.o, to);
+  ASSERT_EQ(br.size(), 2u);   // the lower NS point (its start fails), then the upper
+  ASSERT_TRUE(br[0].points.empty()) << br[0].why;
+  ASSERT_EQ(br[1].points.size(), 2u) << br[1].why;
+  const int first_id = 3;
+  std::vector<int> starts(t.c.bifurcations.size(), -1);
+  add_torus_starts(starts, br, first_id);
+  const auto bif = csv_rows(bifurcation_table(t.c, {}, starts));
+  const auto torus = csv_rows(torus_table(tb, br, e1(), first_id));
+  ASSERT_EQ(torus.size(), 2u);
+  int named = 0;
+  for (const auto& b : bif) {
+    if (b.at("starts_branch").empty()) continue;
+    ++named;
+    EXPECT_EQ(b.at("type"), "neimark_sacker");
+    EXPECT_EQ(b.at("starts_branch"), "4");   // the upper NS point's branch: first_id + 1
+    for (const auto& r : torus) {
+      EXPECT_EQ(r.at("branch"), "4");
+      EXPECT_EQ(r.at("omega_ns"), b.at("omega"));
+    }
+  }
+  EXPECT_EQ(named, 1);
 }
 
 TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {

@@ -159,13 +159,14 @@ Table time_integration_table(const TimeIntegrationCheck& check) {
   return t;
 }
 
-Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q) {
+Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q,
+                  int first_id) {
   Table t({"branch", "omega_ns", "omega", "omega2", "rotation", "x_max", "x_min", "x_qp_rms", "section_min",
            "section_max", "residual"});
   for (std::size_t k = 0; k < branches.size(); ++k)
     for (const TorusPoint& p : branches[k].points) {
       const TorusMeasures m = torus_measures(tb, p.X, q);
-      t.add_row({long(k + 1), branches[k].omega_ns, p.omega, p.omega2, p.omega2 / p.omega, m.x_max, m.x_min,
+      t.add_row({long(first_id) + long(k), branches[k].omega_ns, p.omega, p.omega2, p.omega2 / p.omega, m.x_max, m.x_min,
                  m.x_qp_rms, m.section_min, m.section_max, p.residual});
     }
   return t;

@@ -75,8 +75,9 @@ Table dof_response_table(const HarmonicBalance& hb, const FrequencyCurve& c, con
 // located (1: on the chord; 0: a corrector failed there, the values are the next point's),
 // smooth (1: the crossing multiplier is on the unit circle to 1e-2 there; 0: it jumps across),
 // period, branch (the branch the event lies on, BranchLabel; omega written as the forcing
-// frequency), starts_branch (the id of the period-2 branch a PD starts: starts[i] for
-// bifurcation i, empty where none or `starts` is empty).
+// frequency), starts_branch (the id of the branch the event starts: the period-doubled branch of
+// a PD, the torus branch of an NS point; starts[i] for bifurcation i, empty where none or
+// `starts` is empty).
 Table bifurcation_table(const FrequencyCurve& c, const BranchLabel& label = {}, const std::vector<int>& starts = {});
 
 // A curve with the period-doubled branches switched at its period doublings (`pd`,
@@ -94,13 +95,15 @@ Table bifurcation_table(const FrequencyCurve& c, const std::vector<PeriodDoubled
 Table time_integration_table(const TimeIntegrationCheck& check);
 
 // torus.csv (issue 34 §2, hb/quasi_periodic.hpp): one row per point of each torus branch:
-// branch (1, 2, ... in the order of the NS points), omega_ns (its NS point) [rad/s], omega
+// branch (its id, first_id + k for branches[k]: one numbering with frc.csv's branches,
+// add_torus_starts), omega_ns (its NS point) [rad/s], omega
 // [rad/s], omega2 (the second frequency, in (0, omega/2] up to relabelling) [rad/s], rotation
 // (omega2 / omega), x_max, x_min (the output coordinate q'x over the torus), x_qp_rms (RMS of
 // its quasi-periodic part, the pairs k2 != 0), section_min, section_max (q'x on the Poincare
 // section theta1 = 0 mod 2 pi, the closed curve the once-per-period states lie on), residual
 // (scaled, at convergence).
-Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q);
+Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q,
+                  int first_id = 1);
 
 // The gear-mesh chapters (8, 9): a frequency curve of the 1-DOF mesh model: omega,
 // f_mesh_hz, then the common columns of the mesh deflection (app/schema.hpp); the rows of

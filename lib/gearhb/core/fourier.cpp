@@ -137,14 +137,20 @@ void Aft::product_matrix_from_moments(const double* sc, const double* ss,
     G(0, 2 * l) = Ss(l);
   }
   for (int k = 1; k <= H_; ++k) {
-    const int ak = 2 * k - 1, bk = 2 * k;
-    G(ak, 0) = 2.0 * Sc(k);
-    G(bk, 0) = 2.0 * Ss(k);
-    for (int l = 1; l <= H_; ++l) {
-      const int al = 2 * l - 1, bl = 2 * l;
+    G(2 * k - 1, 0) = 2.0 * Sc(k);
+    G(2 * k, 0) = 2.0 * Ss(k);
+  }
+  // column by column (G is column-major: each column one contiguous run)
+  for (int l = 1; l <= H_; ++l) {
+    const int al = 2 * l - 1, bl = 2 * l;
+    for (int k = 1; k <= H_; ++k) {
+      const int ak = 2 * k - 1, bk = 2 * k;
       G(ak, al) = Sc(k - l) + Sc(k + l);
-      G(ak, bl) = Ss(k + l) - Ss(k - l);
       G(bk, al) = Ss(k + l) + Ss(k - l);
+    }
+    for (int k = 1; k <= H_; ++k) {
+      const int ak = 2 * k - 1, bk = 2 * k;
+      G(ak, bl) = Ss(k + l) - Ss(k - l);
       G(bk, bl) = Sc(k - l) - Sc(k + l);
     }
   }

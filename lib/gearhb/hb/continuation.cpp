@@ -84,12 +84,15 @@ bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int m
 }
 
 // The fold between two converged points ya, yb whose tangents ta, tb have omega
-// components of opposite sign: bisection on the chord fraction, each trial point
-// corrected back onto the branch in the hyperplane normal to the chord, until the
-// omega component of the tangent there changes sign within 1e-8 of the chord.
-// Omega is stationary at a fold, so this gives the fold frequency to round-off.
-// If a corrector fails (it should not on a short chord) the linear interpolation
-// of the omega-tangent is kept.
+// components of opposite sign: regula falsi (Illinois: the end kept twice in a row has its
+// value halved; the trial kept inside the bracket's inner 98 %) on the chord fraction, on the
+// omega component of the tangent (smooth, through zero at the fold), each trial point
+// corrected back onto the branch in the hyperplane normal to the chord, until the bracket
+// is below 1e-8 of the chord (as the bisection it replaced: 27 trials a fold; ex. 03 at H = 40:
+// 11 and 8 for the period-1 folds, 7 and 2 for the period-2 branch's)
+// or that component is zero to 1e-14. Omega is stationary at a fold, so this gives the
+// fold frequency to round-off. If a corrector fails (it should not on a short chord) the
+// linear interpolation of the omega-tangent is kept.
 Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::VectorXd& ta,
                             const Eigen::VectorXd& yb, const Eigen::VectorXd& tb, double tolerance,
                             int corrector_iterations) {
@@ -98,15 +101,25 @@ Eigen::VectorXd locate_fold(Scaled& S, const Eigen::VectorXd& ya, const Eigen::V
   Eigen::VectorXd best = (1.0 - a_lin) * ya + a_lin * yb;
   const Eigen::VectorXd normal = (yb - ya).normalized();
   const bool sign_a = ta[n] > 0;
-  double lo = 0.0, hi = 1.0;
-  while (hi - lo > 1e-8) {
-    const double mid = 0.5 * (lo + hi);
+  double lo = 0.0, hi = 1.0, h_lo = ta[n], h_hi = tb[n];
+  int side = 0;
+  for (int trial = 0; trial < 60 && hi - lo > 1e-8; ++trial) {
+    const double mid = std::clamp(lo + (hi - lo) * h_lo / (h_lo - h_hi), lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));
     Eigen::VectorXd y = (1.0 - mid) * ya + mid * yb, tm;
     int iters = 0;
     double res = 0.0;
     if (!correct(S, y, normal, corrector_iterations, tolerance, iters, res) || !tangent_here(S, ta, tm)) return best;
     best = y;
-    ((tm[n] > 0) == sign_a ? lo : hi) = mid;
+    if (std::fabs(tm[n]) <= 1e-14) break;
+    if ((tm[n] > 0) == sign_a) {
+      lo = mid, h_lo = tm[n];
+      if (side == -1) h_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = mid, h_hi = tm[n];
+      if (side == 1) h_lo *= 0.5;
+      side = 1;
+    }
   }
   return best;
 }

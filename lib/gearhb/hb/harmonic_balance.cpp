@@ -193,8 +193,9 @@ class CondensedLinearization : public Linearization {
   // blocks: L's diagonal blocks (harmonic 0: n x n, k >= 1: 2n x 2n, [cos; sin]);
   // normals: n x P; G: the P product matrices (m x m).
   CondensedLinearization(std::vector<Eigen::MatrixXd> blocks, std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu,
-                         Eigen::MatrixXd normals, std::vector<Eigen::MatrixXd> G, Eigen::VectorXd dRdomega, const Scaling& s)
-      : L_(std::move(blocks)), lu_(std::move(lu)), normals_(std::move(normals)), G_(std::move(G)),
+                         Eigen::MatrixXd normals, std::shared_ptr<const std::vector<Eigen::MatrixXd>> G,
+                         Eigen::VectorXd dRdomega, const Scaling& s)
+      : L_(std::move(blocks)), lu_(std::move(lu)), normals_(std::move(normals)), Gp_(std::move(G)), G_(*Gp_),
         b_(std::move(dRdomega)), s_(s), m_(2 * int(L_.size()) - 1) {
     const int n = int(normals_.rows()), P = int(normals_.cols()), m = m_;
     for (std::size_t k = 0; k < L_.size(); ++k) offset_.push_back(k == 0 ? 0 : n * (2 * int(k) - 1));
@@ -214,15 +215,19 @@ class CondensedLinearization : public Linearization {
       }
     Zb_ = solve_L(b_);
     UZb_ = project(Zb_);
+    // the product matrices by rows (the rows of I + S Gc and of the border are combinations of
+    // their rows: row-major storage keeps every such row one contiguous run of memory)
+    for (const auto& g : G_) Grows_.emplace_back(g);
     // I + S Gc, S(q1, q2) = n_i1' (w_q2 at basis a1): nonzero for q1, q2 of one harmonic
     const int q = int(coords_.size());
-    SG_ = Eigen::MatrixXd::Identity(q, q);
+    std::vector<std::vector<int>> in_block(L_.size());
+    for (int q2 = 0; q2 < q; ++q2) in_block[std::size_t(coords_[q2].block)].push_back(q2);
+    SG_ = RowMatrix::Identity(q, q);
     for (int q1 = 0; q1 < q; ++q1)
-      for (int q2 = 0; q2 < q; ++q2) {
+      for (const int q2 : in_block[std::size_t(coords_[q1].block)]) {
         const Coord &c1 = coords_[q1], &c2 = coords_[q2];
-        if (c1.block != c2.block) continue;
         const double S = normals_.col(c1.contact).dot(w_[q2].segment(c1.local, n));
-        SG_.row(q1).segment(c2.slot * m, m) += S * G_[c2.contact].row(c2.basis);
+        SG_.row(q1).segment(c2.slot * m, m) += S * Grows_[c2.contact].row(c2.basis);
       }
   }
 
@@ -233,7 +238,7 @@ class CondensedLinearization : public Linearization {
     const Eigen::VectorXd c = row.head(N).cwiseQuotient(s_.x);
     const double d = row[N] / s_.omega, g = rhs[N];
     const Eigen::VectorXd Zf = solve_L(f);
-    Eigen::MatrixXd A(q + 1, q + 1);
+    RowMatrix A(q + 1, q + 1);
     Eigen::VectorXd r(q + 1);
     A.topLeftCorner(q, q) = SG_;
     A.topRightCorner(q, 1) = UZb_;
@@ -241,7 +246,7 @@ class CondensedLinearization : public Linearization {
     for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
       const Coord& cj = coords_[j];
       const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
-      A.row(q).segment(cj.slot * m, m) -= wc * G_[cj.contact].row(cj.basis);
+      A.row(q).segment(cj.slot * m, m) -= wc * Grows_[cj.contact].row(cj.basis);
     }
     A(q, q) = d - c.dot(Zb_);
     r.head(q) = project(Zf);
@@ -250,7 +255,7 @@ class CondensedLinearization : public Linearization {
       const double omega = A.row(i).cwiseAbs().maxCoeff();
       if (omega > 0.0) A.row(i) /= omega, r[i] /= omega;
     }
-    const Eigen::VectorXd vw = A.partialPivLu().solve(r);
+    const Eigen::VectorXd vw = Eigen::MatrixXd(A).partialPivLu().solve(r);
     if (!vw.allFinite()) return false;
     const double dw = vw[q];
     Eigen::VectorXd dx = Zf - Zb_ * dw;
@@ -276,18 +281,21 @@ class CondensedLinearization : public Linearization {
 
  private:
   struct Coord { int contact, slot, basis, block, local; };   // slot: the contact's place in active_
+  using RowMatrix = Eigen::Matrix<double, Eigen::Dynamic, Eigen::Dynamic, Eigen::RowMajor>;
   std::vector<Eigen::MatrixXd> L_;
   std::vector<Eigen::PartialPivLU<Eigen::MatrixXd>> lu_;
   std::vector<int> offset_;     // first unknown of each block
   Eigen::MatrixXd normals_;
-  std::vector<Eigen::MatrixXd> G_;
+  std::shared_ptr<const std::vector<Eigen::MatrixXd>> Gp_;   // shared with the dense fallback
+  const std::vector<Eigen::MatrixXd>& G_;
+  std::vector<RowMatrix> Grows_;   // G_ stored by rows
   Eigen::VectorXd b_, Zb_, UZb_;
   Scaling s_;
   int m_;                       // 2H+1 coefficients per coordinate
   std::vector<int> active_;     // the contacts with G_i != 0
   std::vector<Coord> coords_;
   std::vector<Eigen::VectorXd> w_;
-  Eigen::MatrixXd SG_;
+  RowMatrix SG_;
   Eigen::VectorXd solve_L(const Eigen::VectorXd& v) const {
     Eigen::VectorXd out(v.size());
     for (std::size_t k = 0; k < L_.size(); ++k) out.segment(offset_[k], L_[k].rows()) = lu_[k].solve(v.segment(offset_[k], L_[k].rows()));
@@ -345,8 +353,12 @@ std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd&
   std::vector<Eigen::MatrixXd> G;
   contact_terms(X, R, true, &G);
   const int n = n_, m = 2 * H_ + 1, P = int(contacts_.size());
-  auto dense = [this, omega, G]() { return assemble_jacobian(omega, G); };   // G as it is now (a copy)
+  // G as it is now, shared with the condensed system (which takes a copy only where it moves the
+  // mean stiffness below)
+  const auto Gs = std::make_shared<const std::vector<Eigen::MatrixXd>>(std::move(G));
+  auto dense = [this, omega, Gs]() { return assemble_jacobian(omega, *Gs); };
   if (P * m >= size()) return std::make_unique<DenseLinearization>(dense(), dRdomega, s);   // nothing to condense
+  std::shared_ptr<const std::vector<Eigen::MatrixXd>> Gc = Gs;
   auto singular = [](const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
     const Eigen::VectorXd d = lu.matrixLU().diagonal().cwiseAbs();
     return !(d.minCoeff() > 1e-13 * d.maxCoeff());
@@ -361,10 +373,12 @@ std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd&
       // a gear pair on bearings has no stiffness but the mesh). J = L + U Gc U' equals
       // (L + U D U') + U (Gc - D) U' for any D; D = each contact's mean stiffness on the static
       // coefficient moves sum_i kc_i n_i n_i' from G_i(0, 0) into the static block, exactly.
+      auto moved = std::make_shared<std::vector<Eigen::MatrixXd>>(*Gs);
       for (int i = 0; i < P; ++i) {
         blocks[0] += kc_mean_[std::size_t(i)] * contacts_[std::size_t(i)].normal * contacts_[std::size_t(i)].normal.transpose();
-        G[std::size_t(i)](0, 0) -= kc_mean_[std::size_t(i)];
+        (*moved)[std::size_t(i)](0, 0) -= kc_mean_[std::size_t(i)];
       }
+      Gc = moved;
       factors.back().compute(blocks[0]);
     }
     // L still singular (a free mode no contact holds, an undamped resonance of the open
@@ -375,8 +389,7 @@ std::unique_ptr<Linearization> HarmonicBalance::linearize(const Eigen::VectorXd&
   Eigen::MatrixXd normals(n, P);
   for (int i = 0; i < P; ++i) normals.col(i) = contacts_[i].normal;
   return std::make_unique<HbLinearization>(
-      std::make_unique<CondensedLinearization>(std::move(blocks), std::move(factors), std::move(normals), std::move(G),
-                                               dRdomega, s),
+      std::make_unique<CondensedLinearization>(std::move(blocks), std::move(factors), std::move(normals), Gc, dRdomega, s),
       dense,
       dRdomega, s);
 }

@@ -232,6 +232,11 @@ TorusMeasures torus_measures(const TorusBalance& tb, const Eigen::VectorXd& X, c
   return r;
 }
 
+void add_torus_starts(std::vector<int>& starts, const std::vector<TorusBranch>& br, int first_id) {
+  for (std::size_t k = 0; k < br.size(); ++k)
+    if (!br[k].points.empty() && br[k].from < starts.size()) starts[br[k].from] = first_id + int(k);
+}
+
 std::string check_torus_options(const TorusOptions& to, int H, std::string* why) {
   auto bad = [&](const char* key, const std::string& w) {
     if (why) *why = w;

@@ -162,6 +162,14 @@ TorusPoint torus_point_at(const TorusBalance& tb, const TorusPoint& guess, doubl
 std::vector<TorusBranch> torus_branches(const TorusBalance& tb, const FrequencyCurve& c, const SweepOptions& opt,
                                         const TorusOptions& to);
 
+// Branch ids (one numbering with the period-doubled branches: frc.csv's and bifurcations.csv's
+// `branch`): the torus branch br[k] is branch first_id + k (gearhb_frc: first_id = the number of
+// period-doubled branches + 1, so 0 is the period-1 curve, 1..P the period-doubled branches in
+// their order, P + 1, ... the torus branches in the order of their NS points). starts: per
+// bifurcation of the curve the id of the branch it starts (-1: none, as branch_starts gives it);
+// each NS point whose torus branch has points gets that branch's id.
+void add_torus_starts(std::vector<int>& starts, const std::vector<TorusBranch>& br, int first_id);
+
 // The option out of range ("harmonics1", "harmonics2", "lines", "amplitude", "max_points") for
 // a model of H harmonics, with why; "" if none.
 std::string check_torus_options(const TorusOptions& to, int H, std::string* why = nullptr);
