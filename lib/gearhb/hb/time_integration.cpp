@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_min.h>
 #include <gsl/gsl_odeiv2.h>
@@ -487,6 +488,19 @@ void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, doubl
     x0 += X.segment(hb.index(2 * k - 1, 0), n);                  // cos(0) = 1
     v0 += k * omega * X.segment(hb.index(2 * k, 0), n);           // d/dt sin = k omega cos
   }
+}
+
+double fastest_rate(const HarmonicBalance& hb) {
+  const auto& sys = hb.system();
+  const int n = int(sys.M.rows());
+  Eigen::MatrixXd K = sys.K;
+  for (const auto& c : hb.contacts()) K += c.kc * c.normal * c.normal.transpose();
+  const Eigen::MatrixXd Minv = sys.M.inverse();
+  Eigen::MatrixXd A = Eigen::MatrixXd::Zero(2 * n, 2 * n);
+  A.topRightCorner(n, n).setIdentity();
+  A.bottomLeftCorner(n, n) = -Minv * K;
+  A.bottomRightCorner(n, n) = -Minv * sys.C;
+  return Eigen::EigenSolver<Eigen::MatrixXd>(A, false).eigenvalues().cwiseAbs().maxCoeff();
 }
 
 }  // namespace gearhb

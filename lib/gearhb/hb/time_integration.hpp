@@ -108,4 +108,11 @@ class TimeIntegrator {
 void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                       Eigen::VectorXd& x0, Eigen::VectorXd& v0);
 
+// The fastest rate of the model's linear dynamics [1/s]: the largest |lambda| of the
+// first-order matrix [0 I; -M^-1 K_c, -M^-1 C], K_c the stiffness with every contact closed at
+// its kc. An explicit integrator (rk8pd) takes of the order of (this rate x the period) / 5
+// steps a period whatever the accuracy asked: the cost a caller can weigh before integrating
+// (rayleigh_beta = 1 s on ch. 6's pair: supports' modes decaying at ~1e9/s).
+double fastest_rate(const HarmonicBalance& hb);
+
 }  // namespace gearhb
