@@ -45,8 +45,11 @@
 //     (arc_length_continuation_from);
 //  5. it ends where its odd harmonics change sign (it crossed the period-1 branch: it
 //     merged at another PD; the crossing is refined by secant iterations on the chord to
-//     |odd| ~ 0 and matched to the nearest located PD of c), where it leaves the range
-//     (complete), or where the continuation fails (the reason kept; the rest of the run
+//     |odd| ~ 0 and matched to the nearest located PD of c), or where its odd harmonics
+//     vanish (below 1e-8 of the branch's largest: the corrector turned onto the period-1
+//     branch, a solution of the period-2 model too; that point is dropped and the branch ends
+//     at the period-2 model's branch point beside the nearest located PD), where it leaves the
+//     range (complete), or where the continuation fails (the reason kept; the rest of the run
 //     stands).
 // The two directions +-e from the PD give the same orbits shifted by one forcing period
 // (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
