@@ -191,6 +191,14 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   const double xs = c.scaling.x[0], w = sp.at.omega;
   const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, opt.floquet);
   if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  if (!bf.smooth) {
+    // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
+    std::ostringstream os;
+    os << "a non-smooth PD: the multiplier jumps across -1 (to " << bf.multiplier.real()
+       << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag()
+       << "i) within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
+    throw Failed(os.str());
+  }
   sp.phi_floquet = odd_harmonics_of(hb, hbp, fr, critical_eigenvector(hb, fr, w), w, xs, pdo.samples);
   std::vector<int> odd;
   sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
@@ -355,42 +363,87 @@ struct Period2Continuation {
   }
 };
 
-// The PD of c other than the i-th nearest to the forcing frequencies [lo, hi], -1 where none lies
-// within 1e-3 hi of them (P: forcing frequency per c's omega).
-int nearest_pd(const FrequencyCurve& c, std::size_t i, double P, double lo, double hi) {
+// The merge point of a branch on hb's basis: a period-2 point whose odd harmonics vanish is the
+// period-1 orbit X1 (harmonic 2k of Omega -> k of omega), at c's omega 2 Omega.
+Eigen::VectorXd period1_part(const HarmonicBalance& hb, const HarmonicBalance& hbp, const Eigen::VectorXd& Xp) {
+  const int n = hb.dofs();
+  Eigen::VectorXd X = Eigen::VectorXd::Zero(hb.size());
+  X.head(n) = Xp.head(n);
+  for (int k = 1; k <= hb.harmonics() && 2 * k <= hbp.harmonics(); ++k) {
+    X.segment(hb.index(2 * k - 1, 0), n) = Xp.segment(hbp.index(4 * k - 1, 0), n);
+    X.segment(hb.index(2 * k, 0), n) = Xp.segment(hbp.index(4 * k, 0), n);
+  }
+  return X;
+}
+
+// Where on c a branch met it: the chord (points j, j + 1) of c nearest the period-1 orbit (X1, w)
+// in the scaled unknowns. Not the nearest omega: a branch with folds passes one omega several
+// times (ch. 6 Fig. 40: three times at 8654 rad/s, on chords with and without a PD).
+int nearest_chord(const FrequencyCurve& c, const Eigen::VectorXd& X1, double w) {
+  const auto& P = c.branch.points;
+  const Scaling& s = c.scaling;
+  auto scaled = [&s](const Eigen::VectorXd& X, double omega) {
+    Eigen::VectorXd z(X.size() + 1);
+    z.head(X.size()) = X.array() / s.x.array();
+    z[X.size()] = omega / s.omega;
+    return z;
+  };
+  const Eigen::VectorXd z = scaled(X1, w);
+  int best = -1;
+  double dmin = INFINITY;
+  for (std::size_t j = 0; j + 1 < P.size(); ++j) {
+    const Eigen::VectorXd a = scaled(P[j].X, P[j].omega), d = scaled(P[j + 1].X, P[j + 1].omega) - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((z - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double dist = (z - a - t * d).norm();
+    if (dist < dmin) dmin = dist, best = int(j);
+  }
+  return best;
+}
+
+// The PD of c other than the i-th located on chord j of c or on a chord next to it (the period-2
+// model's branch point, where the HB branch meets c, lies beside the PD of the exact orbit by the
+// truncation error: ch. 6 Fig. 40 at H = 10, 19 rad/s from the PD at 8674.3 rad/s, 2.2e-3
+// relative; the bilinear oscillator at H = 3, 1.4e-3), the one nearest w; -1 where none.
+int pd_on_chord(const FrequencyCurve& c, std::size_t i, int j, double w) {
   int to = -1;
   double dmin = INFINITY;
   for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
-    const double w = P * c.bifurcations[k].omega, dk = std::max({lo - w, w - hi, 0.0});
-    if (c.bifurcations[k].type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, to = int(k);
+    const Bifurcation& bf = c.bifurcations[k];
+    if (bf.type != BifurcationType::period_doubling || k == i || std::abs(bf.after_point - j) > 1) continue;
+    if (std::fabs(bf.omega - w) < dmin) dmin = std::fabs(bf.omega - w), to = int(k);
   }
-  return dmin <= 1e-3 * std::fabs(hi) ? to : -1;
+  return to;
 }
 
 // The merge of a branch that crossed the period-1 branch: refined on its last chord (merge_point).
-void end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const FrequencyCurve& c,
-                     std::size_t i, double P) {
+// Returns the chord of c where it met c.
+int end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const HarmonicBalance& hb,
+                    const FrequencyCurve& c, std::size_t i, double P) {
   try {
     b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], b.points.back(), p2.s, p2.prev_odd,
                                   p2.co.tolerance);
   } catch (const std::exception&) {
     b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
   }
-  r.omega_end = 2.0 * P * b.points.back().omega;
-  r.to = nearest_pd(c, i, P, r.omega_end, r.omega_end);
+  const BranchPoint& e = b.points.back();
+  r.omega_end = 2.0 * P * e.omega;
+  const int j = nearest_chord(c, period1_part(hb, p2.hbp, e.X), 2.0 * e.omega);
+  r.to = pd_on_chord(c, i, j, 2.0 * e.omega);
+  return j;
 }
 
 // The merge of a branch that joined the period-1 branch: its last point lies on that branch past
 // the merge and is dropped; the merge is the period-2 model's branch point beside the PD of c
-// nearest the last chord (where the switch would start a branch), or, where no PD was located
-// near it, the branch ends at the point before.
-void end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
-                 const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
-  const double wa = 2.0 * P * b.points[b.points.size() - 2].omega, wb = 2.0 * P * b.points.back().omega;
+// on the chord where it joined (where the switch would start a branch), or, where no PD was
+// located there, the branch ends at the point before. Returns the chord of c where it joined.
+int end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
+                const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
+  const BranchPoint on = b.points.back();   // on the period-1 branch
   b.points.pop_back();
-  r.to = nearest_pd(c, i, P, std::min(wa, wb), std::max(wa, wb));
-  r.omega_end = wa;
-  if (r.to < 0) return;
+  const int j = nearest_chord(c, period1_part(hb, hbp, on.X), 2.0 * on.omega);
+  r.to = pd_on_chord(c, i, j, 2.0 * on.omega);
+  r.omega_end = 2.0 * P * b.points.back().omega;
+  if (r.to < 0) return j;
   try {
     std::vector<int> odd;
     const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
@@ -399,6 +452,25 @@ void end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, c
   } catch (const std::exception&) {
     // no branch point of the period-2 model there: the branch ends at the point before
   }
+  return j;
+}
+
+// What the period-1 sweep says about chord j of c (points j, j + 1) where a branch met c, for the
+// end's line: whether their orbits' shooting correction converged, and, where both did and the
+// parity of their real multipliers below -1 is the same (no PD in between, frequency_sweep.cpp
+// step 5b), that no multiplier crossed -1 there: the period-2 HB branch then ends at a branch
+// point of its own truncation, not at a PD of the exact orbit.
+std::string chord_evidence(const FrequencyCurve& c, int j, double P) {
+  const auto& Q = c.branch.points;
+  std::ostringstream os;
+  if (j < 0 || std::size_t(j) + 1 >= Q.size() || c.floquet.size() != Q.size()) return "";
+  const PointFloquet &a = c.floquet[std::size_t(j)], &b = c.floquet[std::size_t(j) + 1];
+  os << "between its points at omega = " << P * Q[std::size_t(j)].omega << " and " << P * Q[std::size_t(j) + 1].omega;
+  if (!a.corrected || !b.corrected)
+    os << ", where the shooting correction of the period-" << int(P) << " orbit did not converge (multipliers unresolved)";
+  else if (a.outside_real_negative % 2 == b.outside_real_negative % 2)
+    os << ", whose corrected orbits show no multiplier crossing -1";
+  return os.str();
 }
 
 // How the branch ends: failed (where and why), merged with the period-1 branch (at which of its
@@ -413,13 +485,19 @@ void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& 
     r.end = PeriodDoubledBranch::End::failed;
     r.omega_end = 2.0 * P * f.omega;
   } else if (m != Merge::none) {
-    if (m == Merge::crossed) end_at_crossing(r, b, p2, c, i, P);
-    else end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
+    const int j = m == Merge::crossed ? end_at_crossing(r, b, p2, hb, c, i, P) : end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
     r.end = PeriodDoubledBranch::End::merged;
     const int period = int(P);
     os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
-    if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
-    else os << " where no PD of the period-" << period << " branch was located";
+    if (r.to >= 0) {
+      const Bifurcation& bf = c.bifurcations[std::size_t(r.to)];
+      os << " (the PD located at " << P * bf.omega << (bf.smooth ? "" : ", non-smooth: the multiplier jumps across -1");
+      const std::string e = chord_evidence(c, bf.after_point, P);
+      if (e.find("did not converge") != std::string::npos) os << "; " << e;
+      os << ")";
+    } else {
+      os << " where no PD of the period-" << period << " branch was located (" << chord_evidence(c, j, P) << ")";
+    }
   } else {
     r.end = PeriodDoubledBranch::End::left_range;
     r.omega_end = 2.0 * P * last.omega;
