@@ -448,18 +448,6 @@ std::complex<double> negative_real_nearest_minus_one(const FloquetResult& r) {
   return best;
 }
 
-// The multiplier a period doubling found by parity reports: the real one below zero nearest -1,
-// or, where the located point has none (the multiplier jumped across -1 and away from the real
-// axis, or off it), the multiplier nearest -1.
-std::complex<double> doubling_multiplier(const FloquetResult& r) {
-  const std::complex<double> m = negative_real_nearest_minus_one(r);
-  if (std::isfinite(m.real())) return m;
-  std::complex<double> best = r.critical;
-  for (Eigen::Index i = 0; i < r.multipliers.size(); ++i)
-    if (std::abs(r.multipliers[i] + 1.0) < std::abs(best + 1.0)) best = r.multipliers[i];
-  return best;
-}
-
 // Step 5b: the period doublings the count of step 5 misses. det(I + M) has the sign
 // (-1)^(real multipliers below -1) (a complex pair contributes |1 + mu|^2 > 0, a real multiplier
 // above -1 a positive factor), so it changes sign between two points exactly where an odd number
@@ -487,9 +475,22 @@ void add_period_doublings_by_parity(const HarmonicBalance& hb, const SweepOption
     FloquetMemo memo(hb, c.scaling.x[0], opt.floquet);
     memo.add(P[i - 1], fr[i - 1]);
     memo.add(P[i], fr[i]);
-    auto probe = [&memo, &opt, &c, i](const Eigen::VectorXd& X, double omega) {
+    // the multiplier below -1 of the last trial on the odd side: the one that crossed, where it
+    // jumps across -1 (the located point, on the even side, may have no real multiplier below 0)
+    std::complex<double> odd_side(NAN, NAN);
+    auto probe = [&memo, &opt, &c, i, &odd_side](const Eigen::VectorXd& X, double omega) {
       const FloquetResult& r = memo.at(X, omega, [&] { report(opt, "bifurcations", c, i, omega); });
-      return StateProbe{point_floquet(r).outside_real_negative % 2, std::log(std::abs(negative_real_nearest_minus_one(r)))};
+      const int parity = point_floquet(r).outside_real_negative % 2;
+      const std::complex<double> m = negative_real_nearest_minus_one(r);
+      if (parity == 1) odd_side = m;
+      return StateProbe{parity, std::log(std::abs(m))};
+    };
+    // of the located point's and the odd side's real multiplier below 0, the one nearest -1
+    auto crossing = [&odd_side](const FloquetResult& r) {
+      const std::complex<double> m = negative_real_nearest_minus_one(r);
+      if (!std::isfinite(m.real())) return std::isfinite(odd_side.real()) ? odd_side : std::complex<double>(0.0);
+      if (!std::isfinite(odd_side.real())) return m;
+      return std::fabs(std::log(std::abs(m))) <= std::fabs(std::log(std::abs(odd_side))) ? m : odd_side;
     };
     Bifurcation bf;
     bf.type = BifurcationType::period_doubling;
@@ -498,11 +499,11 @@ void add_period_doublings_by_parity(const HarmonicBalance& hb, const SweepOption
       const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, probe, 1e-9, corrector_tolerance);
       bf.omega = at.omega;
       bf.X = at.X;
-      bf.multiplier = doubling_multiplier(memo.at(at.X, at.omega));
+      bf.multiplier = crossing(memo.at(at.X, at.omega));
     } catch (const std::exception&) {
       bf.located = false;
       bf.omega = P[i].omega;
-      bf.multiplier = doubling_multiplier(fr[i]);
+      bf.multiplier = crossing(fr[i]);
     }
     bf.smooth = bf.located && std::fabs(std::abs(bf.multiplier) - 1.0) <= 1e-2;
     c.bifurcations.push_back(bf);

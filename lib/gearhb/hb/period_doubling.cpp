@@ -194,9 +194,9 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   if (!bf.smooth) {
     // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
     std::ostringstream os;
-    os << "a non-smooth PD: the multiplier jumps across -1 (to " << bf.multiplier.real()
-       << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag()
-       << "i) within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
+    os << "a non-smooth PD: a multiplier jumps across -1 (to " << bf.multiplier.real();
+    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
+    os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
     throw Failed(os.str());
   }
   sp.phi_floquet = odd_harmonics_of(hb, hbp, fr, critical_eigenvector(hb, fr, w), w, xs, pdo.samples);
@@ -467,7 +467,7 @@ std::string chord_evidence(const FrequencyCurve& c, int j, double P) {
   const PointFloquet &a = c.floquet[std::size_t(j)], &b = c.floquet[std::size_t(j) + 1];
   os << "between its points at omega = " << P * Q[std::size_t(j)].omega << " and " << P * Q[std::size_t(j) + 1].omega;
   if (!a.corrected || !b.corrected)
-    os << ", where the shooting correction of the period-" << int(P) << " orbit did not converge (multipliers unresolved)";
+    os << ", where the shooting correction of the period-" << int(P) << " orbit did not converge: multipliers unresolved";
   else if (a.outside_real_negative % 2 == b.outside_real_negative % 2)
     os << ", whose corrected orbits show no multiplier crossing -1";
   return os.str();
@@ -491,7 +491,7 @@ void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& 
     os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
     if (r.to >= 0) {
       const Bifurcation& bf = c.bifurcations[std::size_t(r.to)];
-      os << " (the PD located at " << P * bf.omega << (bf.smooth ? "" : ", non-smooth: the multiplier jumps across -1");
+      os << " (the PD located at " << P * bf.omega << (bf.smooth ? "" : ", non-smooth: a multiplier jumps across -1");
       const std::string e = chord_evidence(c, bf.after_point, P);
       if (e.find("did not converge") != std::string::npos) os << "; " << e;
       os << ")";

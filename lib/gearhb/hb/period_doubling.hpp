@@ -45,12 +45,20 @@
 //     (arc_length_continuation_from);
 //  5. it ends where its odd harmonics change sign (it crossed the period-1 branch: it
 //     merged at another PD; the crossing is refined by secant iterations on the chord to
-//     |odd| ~ 0 and matched to the nearest located PD of c), or where its odd harmonics
-//     vanish (below 1e-8 of the branch's largest: the corrector turned onto the period-1
-//     branch, a solution of the period-2 model too; that point is dropped and the branch ends
-//     at the period-2 model's branch point beside the nearest located PD), where it leaves the
-//     range (complete), or where the continuation fails (the reason kept; the rest of the run
-//     stands).
+//     |odd| ~ 0), or where its odd harmonics vanish (below 1e-8 of the branch's largest: the
+//     corrector turned onto the period-1 branch, a solution of the period-2 model too; that
+//     point is dropped and the branch ends at the period-2 model's branch point beside the PD
+//     it joined at), where it leaves the range (complete), or where the continuation fails
+//     (the reason kept; the rest of the run stands). The PD a merge ends at is the one located
+//     on the chord of c (or a chord next to it) nearest the merge point in the scaled
+//     unknowns: the HB branch point lies beside the PD of the exact orbit by the truncation
+//     error (ch. 6 Fig. 40 at H = 10: 8654.8 against 8674.3 rad/s; 8673.5 at H = 14), and a
+//     branch with folds passes one omega several times, so a window in omega alone missed it or
+//     could pick a PD of another pass. Where no PD lies there the line says between which
+//     points of c and what their Floquet data show (shooting not converged; no multiplier
+//     crossing -1); a PD located on orbits whose shooting did not converge is said so too. A
+//     non-smooth PD (smooth = 0, a multiplier jumping across -1) has no eigenvector at -1: its
+//     switch fails saying so.
 // The two directions +-e from the PD give the same orbits shifted by one forcing period
 // (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
 // a PD where an earlier branch merged is not switched again.
