@@ -460,13 +460,19 @@ int end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, co
 // parity of their real multipliers below -1 is the same (no PD in between, frequency_sweep.cpp
 // step 5b), that no multiplier crossed -1 there: the period-2 HB branch then ends at a branch
 // point of its own truncation, not at a PD of the exact orbit.
+bool has_chord_floquet(const FrequencyCurve& c, int j) {
+  return j >= 0 && std::size_t(j) + 1 < c.branch.points.size() && c.floquet.size() == c.branch.points.size();
+}
+bool chord_unresolved(const FrequencyCurve& c, int j) {
+  return has_chord_floquet(c, j) && (!c.floquet[std::size_t(j)].corrected || !c.floquet[std::size_t(j) + 1].corrected);
+}
 std::string chord_evidence(const FrequencyCurve& c, int j, double P) {
   const auto& Q = c.branch.points;
   std::ostringstream os;
-  if (j < 0 || std::size_t(j) + 1 >= Q.size() || c.floquet.size() != Q.size()) return "";
+  if (!has_chord_floquet(c, j)) return "";
   const PointFloquet &a = c.floquet[std::size_t(j)], &b = c.floquet[std::size_t(j) + 1];
   os << "between its points at omega = " << P * Q[std::size_t(j)].omega << " and " << P * Q[std::size_t(j) + 1].omega;
-  if (!a.corrected || !b.corrected)
+  if (chord_unresolved(c, j))
     os << ", where the shooting correction of the period-" << int(P) << " orbit did not converge: multipliers unresolved";
   else if (a.outside_real_negative % 2 == b.outside_real_negative % 2)
     os << ", whose corrected orbits show no multiplier crossing -1";
@@ -492,11 +498,12 @@ void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& 
     if (r.to >= 0) {
       const Bifurcation& bf = c.bifurcations[std::size_t(r.to)];
       os << " (the PD located at " << P * bf.omega << (bf.smooth ? "" : ", non-smooth: a multiplier jumps across -1");
-      const std::string e = chord_evidence(c, bf.after_point, P);
-      if (e.find("did not converge") != std::string::npos) os << "; " << e;
+      if (chord_unresolved(c, bf.after_point)) os << "; " << chord_evidence(c, bf.after_point, P);
       os << ")";
     } else {
-      os << " where no PD of the period-" << period << " branch was located (" << chord_evidence(c, j, P) << ")";
+      os << " where no PD of the period-" << period << " branch was located";
+      const std::string e = chord_evidence(c, j, P);
+      if (!e.empty()) os << " (" << e << ")";
     }
   } else {
     r.end = PeriodDoubledBranch::End::left_range;
