@@ -493,8 +493,8 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
 }
 
 // Issue 34 §4, as gearhb_gear's: the largest K_v of the motion that exists (max_kv_any_motion:
-// over the meshes of every stable period-1 and period-2 (4) point; max_kv_any_motion_from: the
-// period of the orbit that gave it) and any_motion_complete (0 where a mesh frequency has no
+// over the meshes of every stable period-1 and period-2 (4) point, 0 where none is stable;
+// max_kv_any_motion_from: the period of the orbit that gave it, absent then) and any_motion_complete (0 where a mesh frequency has no
 // stable orbit of any period computed: its motion unknown, not counted); the ranges with no
 // stable period-1 orbit are the stability step's unstable_period1_* keys. With stability only.
 void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, const SweepOptions& o) const {
@@ -515,8 +515,8 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, c
     stable.insert(stable.end(), more.begin(), more.end());
   }
   KeyNumbers& key = run.key_numbers();
-  key.add("max_kv_any_motion", kv, "-");
-  key.add("max_kv_any_motion_from", double(from), "-");
+  key.add("max_kv_any_motion", kv, "-");   // 0: no stable orbit of any computed period
+  if (kv > 0.0) key.add("max_kv_any_motion_from", double(from), "-");
   key.add("any_motion_complete", uncovered(o.omega_min, o.omega_max, stable).empty() ? 1.0 : 0.0, "-");
 }
 

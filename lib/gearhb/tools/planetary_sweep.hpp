@@ -19,6 +19,7 @@
 //    axis beyond 0.75, which a lightly damped set has everywhere) and found none there.
 #include <cmath>
 
+#include <string>
 #include <vector>
 
 #include "gearhb/hb/frequency_sweep.hpp"
@@ -44,6 +45,18 @@ inline SweepOptions planetary_stability_options(SweepOptions o) {
   o.floquet.correct_orbit = false;
   o.narrow_bands = BandSearch::never;
   return o;
+}
+
+// The curve over the range of o (planetary_sweep_options) and the stability of every point with
+// its bifurcations: the program's two steps in one, for its benchmark and tests (throws if the
+// curve is incomplete).
+inline FrequencyCurve planetary_response_with_stability(const HarmonicBalance& hb, const SweepOptions& o,
+                                                        const std::string& label) {
+  FrequencyCurve c = require_complete(sweep_frequency(hb, o, label), label);
+  c.stable.clear();
+  c.floquet.clear();
+  analyse_stability(hb, planetary_stability_options(o), c);
+  return c;
 }
 
 // The period-doubled branches from the located period doublings of the response c (o: the
