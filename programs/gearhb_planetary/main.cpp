@@ -315,7 +315,10 @@ void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, const 
 // their points by the same variational multipliers, over two mesh periods); each says in one line
 // where it starts and how it ends (a switch that fails: where and why; the rest of the run
 // stands), then where it is stable and its largest stable K_v; its points' meshes measured over
-// its period (F0: the period-1 set's static mesh forces).
+// its period (F0: the period-1 set's static mesh forces). Key numbers period_doubled_branches and,
+// per branch k with points, branch_points_<k>, branch_stable_points_<k>, branch_pd_f_mesh_hz_<k> (the
+// PD it starts at), branch_start_f_mesh_hz_<k> (the period-2 model's branch point beside it),
+// branch_end_f_mesh_hz_<k>.
 void PlanetarySetFromFile::doubled_branches(Run& run, const HarmonicBalance& hb, SweepOptions o,
                                             const std::vector<double>& F0, Response& r) const {
   const auto& B = r.curve.bifurcations;
@@ -326,11 +329,21 @@ void PlanetarySetFromFile::doubled_branches(Run& run, const HarmonicBalance& hb,
   r.doubled = run.timed("period-doubled branches", [&] {
     return planetary_period_doubled_branches(hb, r.curve, o, file_.period_doubling_depth);
   });
+  KeyNumbers& key = run.key_numbers();
+  key.add("period_doubled_branches", double(r.doubled.size()), "-");
   for (std::size_t k = 0; k < r.doubled.size(); ++k) {
     const PeriodDoubledBranch& b = r.doubled[k];
     run.say(file_.name + ": " + b.why);
     r.doubled_measures.push_back(has_points(b) ? measures(*b.model, b.curve, F0) : std::vector<PointMeasures>{});
     if (!has_points(b)) continue;
+    // branch k + 1: its points, the stable ones, where it starts (the period-2 model's branch
+    // point beside the PD) and where it ends [forcing mesh frequency, Hz]
+    const std::string id = std::to_string(k + 1);
+    key.add("branch_points_" + id, double(b.curve.branch.points.size()), "-");
+    key.add("branch_stable_points_" + id, double(std::count(b.curve.stable.begin(), b.curve.stable.end(), true)), "-");
+    key.add("branch_pd_f_mesh_hz_" + id, hz(b.omega_start), "Hz");
+    key.add("branch_start_f_mesh_hz_" + id, hz(b.omega_branch_point), "Hz");
+    key.add("branch_end_f_mesh_hz_" + id, hz(b.omega_end), "Hz");
     char part[160];
     std::snprintf(part, sizeof part, ": period-%d branch %zu, %.1f to %.1f Hz:", b.period, k + 1, hz(b.omega_start),
                   hz(b.omega_end));
