@@ -110,21 +110,30 @@ Eigen::VectorXd critical_eigenvector(const HarmonicBalance& hb, const FloquetRes
   return e;
 }
 
-// The eigen-solution over one forcing period by central differences of the exact flow, and
-// its odd harmonics k of Omega = omega / 2 (Omega t_i = pi i / N; the antiperiodic extension
-// makes the integral over two periods twice that over one), on hbp's basis, unit norm.
-Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FloquetResult& fr,
-                                 const Eigen::VectorXd& e, double w, double xs, int N) {
+// The eigen-solution from e over one forcing period at the N nodes T i / N (columns): by central
+// differences of the exact flow from the corrected state +- delta e, or, on the variational
+// path (fr not corrected: a time-varying contact stiffness, or FloquetOptions::correct_orbit
+// false), by the variational equation about the HB orbit whose monodromy gave e.
+Eigen::MatrixXd eigen_solution(const HarmonicBalance& hb, const Eigen::VectorXd& X, const FloquetResult& fr,
+                               const Eigen::VectorXd& e, double w, double xs, int N, const FloquetOptions& fo) {
   const int n = hb.dofs();
   const double T = 2.0 * M_PI / w, delta = 1e-6 * xs;
   std::vector<double> nodes(static_cast<std::size_t>(N));
   for (int i = 0; i < N; ++i) nodes[std::size_t(i)] = T * i / N;
+  if (!fr.corrected) return variational_solution(hb, X, w, e, nodes, fo.variational_tolerance);
   PiecewiseLinearFlow flow(hb);
   Eigen::VectorXd xT, vT;
   Eigen::MatrixXd Phi, xp, xm;
   flow.period_map(fr.x0 + delta * e.head(n), fr.v0 + delta * e.tail(n), w, nodes, xT, vT, Phi, &xp);
   flow.period_map(fr.x0 - delta * e.head(n), fr.v0 - delta * e.tail(n), w, nodes, xT, vT, Phi, &xm);
-  const Eigen::MatrixXd D = (xp - xm) / (2.0 * delta);
+  return (xp - xm) / (2.0 * delta);
+}
+
+// The odd harmonics k of Omega = omega / 2 of the eigen-solution D at Omega t_i = pi i / N (the
+// antiperiodic extension makes the integral over two periods twice that over one), on hbp's
+// basis, unit norm.
+Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalance& hbp, const Eigen::MatrixXd& D) {
+  const int n = hb.dofs(), N = int(D.cols());
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(hbp.size());
   for (int k = 1; k <= hbp.harmonics(); k += 2) {
     Eigen::VectorXd ck = Eigen::VectorXd::Zero(n), sk = Eigen::VectorXd::Zero(n);
@@ -180,8 +189,6 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
 
 SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
                                const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp) {
-  for (const auto& ct : hb.contacts())
-    if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
   if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
   // the located point itself (a point re-derived from omega on the chord misses it where the
   // branch turns within the chord: beside a fold)
@@ -189,8 +196,6 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   sp.at.X = bf.X;
   sp.at.omega = bf.omega;
   const double xs = c.scaling.x[0], w = sp.at.omega;
-  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, opt.floquet);
-  if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
   if (!bf.smooth) {
     // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
     std::ostringstream os;
@@ -199,7 +204,16 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
     os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
     throw Failed(os.str());
   }
-  sp.phi_floquet = odd_harmonics_of(hb, hbp, fr, critical_eigenvector(hb, fr, w), w, xs, pdo.samples);
+  // the corrected orbit on the exact flow where there is one and the sweep corrects its orbits;
+  // else the variational equation about the HB orbit (its monodromy and eigen-solution)
+  bool profile = false;
+  for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
+  FloquetOptions fo = opt.floquet;
+  fo.correct_orbit = fo.correct_orbit && !profile;
+  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
+  if (fo.correct_orbit && !fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  const Eigen::VectorXd e = critical_eigenvector(hb, fr, w);
+  sp.phi_floquet = odd_harmonics_of(hb, hbp, eigen_solution(hb, sp.at.X, fr, e, w, xs, pdo.samples, fo));
   std::vector<int> odd;
   sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
   // its null vector by inverse iteration from the Floquet direction

@@ -26,7 +26,11 @@
 //  2. its Floquet multipliers on the corrected orbit (floquet.hpp) and the real eigenvector
 //     e = (dx0, dv0) of the multiplier nearest -1;
 //  3. the eigen-solution dx(t) over one forcing period, by central differences of the
-//     exact flow (PiecewiseLinearFlow) from the corrected state +- delta e; it is
+//     exact flow (PiecewiseLinearFlow) from the corrected state +- delta e, or, where the
+//     orbit is not corrected (a time-varying contact stiffness has no exact flow; or the
+//     sweep's FloquetOptions::correct_orbit is false, as gearhb_planetary's), steps 2-3 on
+//     the variational equation about the HB orbit (floquet.hpp floquet_of_hb_variational,
+//     variational_solution): the direction only starts step 4's inverse iteration; it is
 //     antiperiodic (dx(t + T) = -dx(t) for mu = -1), so it lives on the odd harmonics of
 //     Omega, and its coefficients are the trapezoid sums over one period (spectrally
 //     accurate: the integrand dx(t) cos(k Omega t), k odd, is T-periodic);
@@ -67,7 +71,8 @@
 // multipliers of the orbit corrected by shooting over two forcing periods, and its own
 // bifurcations (its PDs start period-4 branches: period_doubling_cascade, the same switch on
 // the period-2 model as hb, PeriodDoublingOptions::period = 2).
-// Models with a time-varying contact stiffness have no exact flow: the switch reports it.
+// Models with a time-varying contact stiffness (a planetary set's meshes) take the variational
+// path of step 3; their period-2 points' multipliers are those of the sweep's FloquetOptions.
 #include <memory>
 #include <string>
 #include <utility>
