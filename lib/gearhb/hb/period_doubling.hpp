@@ -91,6 +91,12 @@ struct PeriodDoublingOptions {
   // branches are period 4; period_doubling_cascade). The branches' omegas and messages are
   // forcing frequencies, period x hb's.
   int period = 1;
+  // The step growth of the branch's continuation: ContinuationOptions::fast_iterations (the
+  // step grows by `grow` after a corrector of at most this many iterations). A contact model's
+  // period-2 corrector takes 4 Newton iterations at any step (ex. 03: steps 1e-5, 1e-6, 7e-10,
+  // 1e-14 - the first moves the contact intervals, then it converges quadratically), so the
+  // sweep's 3 never grows the step: 86 points and 0.47 s against 33 points and 0.25 s.
+  int fast_iterations = 4;
 };
 
 // Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
