@@ -75,11 +75,12 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   const HarmonicBalance hb = test_models::nlvib_ex03(40);
   SweepOptions o = ex03_options(StabilityMethod::floquet, true, 0.02, 0.0);
   const FrequencyCurve c = sweep_frequency(hb, o, "ex03");
-  o.continuation.fast_iterations = int(st.range(0));
+  PeriodDoublingOptions pdo;
+  pdo.fast_iterations = int(st.range(0));
   std::size_t points = 0;
   int rejected = 0, iterations = 0;
   for (auto _ : st) {
-    const auto br = period_doubled_branches(hb, c, o);
+    const auto br = period_doubled_branches(hb, c, o, pdo);
     if (br.size() != 1 || br[0].end != PeriodDoubledBranch::End::merged) st.SkipWithError("no merged branch");
     points = br.empty() ? 0 : br[0].curve.branch.points.size();
     rejected = br.empty() ? 0 : br[0].curve.branch.rejected_steps;
@@ -90,8 +91,8 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   st.counters["rejected"] = double(rejected);               // rejected continuation steps
   st.counters["iterations"] = double(iterations);           // corrector iterations of the accepted points
 }
-// fast_iterations: the continuation's step-growth rule (3, the sweep's default: the period-2
-// corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).
+// fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 4, the default: the
+// period-2 corrector takes 4 iterations a step; 3, the sweep's, never grows the step).
 BENCHMARK(BM_Ex03Period2Branch)->Arg(3)->Arg(4)->ArgNames({"fast_iterations"})->Unit(benchmark::kMillisecond);
 
 // One corrector iteration of that branch at its middle point: the period-2 model's
@@ -116,3 +117,4 @@ static void BM_Ex03Period2Iteration(benchmark::State& st) {
   }
 }
 BENCHMARK(BM_Ex03Period2Iteration)->Unit(benchmark::kMicrosecond);
+

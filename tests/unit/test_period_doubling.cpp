@@ -103,7 +103,7 @@ TEST(PeriodDoubling, Ex03StablePointsAreSeenByTimeIntegration) {
   to.x_scale = e.c.scaling.x[0];
   to.samples_per_period = 4000;
   int compared = 0, unstable = 0;
-  for (std::size_t i = 0; i < P.size(); i += 6) {
+  for (std::size_t i = 0; i < P.size(); i += 2) {   // every other point (33 on the branch)
     if (!b.curve.stable[i]) {
       ++unstable;
       continue;

@@ -15,9 +15,13 @@ DenseLinearization::DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdome
 
 bool DenseLinearization::solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs,
                                         Eigen::VectorXd& dy) const {
-  Eigen::MatrixXd A = A_;
-  A.row(A.rows() - 1) = row.transpose();
-  dy = A.partialPivLu().solve(rhs);
+  if (!(row.size() == factored_row_.size() && row == factored_row_)) {
+    Eigen::MatrixXd A = A_;
+    A.row(A.rows() - 1) = row.transpose();
+    lu_.compute(A);
+    factored_row_ = row;
+  }
+  dy = lu_.solve(rhs);
   return dy.allFinite();
 }
 

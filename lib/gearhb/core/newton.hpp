@@ -30,7 +30,8 @@ struct Scaling {
 class Linearization {
  public:
   virtual ~Linearization() = default;
-  // dy (n+1), or false if the matrix is singular to working precision.
+  // dy (n+1), or false if the matrix is singular to working precision. A solve with the
+  // row of the solve before reuses its factorization (a corrector's tangent: continuation.cpp).
   virtual bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs,
                               Eigen::VectorXd& dy) const = 0;
   // Whether the last solve used a structured (not the dense) factorisation.
@@ -38,7 +39,7 @@ class Linearization {
 };
 
 // The general case: the dense Jacobian, the (n+1) x (n+1) matrix factored by LU
-// with partial pivoting.
+// with partial pivoting (the factorization kept for further solves with the same row).
 class DenseLinearization : public Linearization {
  public:
   DenseLinearization(Eigen::MatrixXd J, Eigen::VectorXd dRdomega, const Scaling& s);
@@ -46,6 +47,8 @@ class DenseLinearization : public Linearization {
 
  private:
   Eigen::MatrixXd A_;   // scaled, last row filled per solve
+  mutable Eigen::VectorXd factored_row_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
 };
 
 // A square system of equations with one parameter omega.

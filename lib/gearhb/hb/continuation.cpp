@@ -42,6 +42,11 @@ struct Scaled {
     lin = p.linearize(X(y), omega(y), s, R, dRdomega);
     return R.cwiseAbs().maxCoeff() / s.residual;
   }
+  // R at y alone (the linearization kept); returns max|R|/r.
+  double residual_at(const Eigen::VectorXd& y) {
+    p.evaluate(X(y), omega(y), R, nullptr, nullptr);
+    return R.cwiseAbs().maxCoeff() / s.residual;
+  }
 };
 
 // Unit tangent at the last evaluated point, oriented along `previous`: [A; previous'] t = [0; 1].
@@ -61,18 +66,27 @@ bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previou
 }
 
 // Corrector: Newton on { R(y) = 0 ; normal' (y - y_p) = 0 }, from y = y_p (in place).
-// Returns true on convergence; reports iterations and final scaled residual. On
-// return S is linearised at the final y (tangent_here reuses it).
+// Returns true on convergence (residual and last step below the tolerance); reports
+// iterations and final scaled residual. Once a step is below the tolerance the residual
+// after it is evaluated alone: if it converged, S keeps the linearization at the iterate
+// before, less than the tolerance away, with its factorization for the row `normal`, and
+// tangent_here reuses both (a tangent with that row costs a back-substitution; before, the
+// converged point was linearised and factored once more, a fifth of a contact model's
+// period-2 corrector: ex. 03).
 bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int max_iterations,
              double tolerance, int& iters, double& res) {
   const int n = S.n;
   const Eigen::VectorXd yp = y;
   Eigen::VectorXd F(n + 1), dy;
-  double last_step = 0.0;
+  double last_step = INFINITY;
   for (iters = 0; iters <= max_iterations; ++iters) {
+    if (iters > 0 && last_step < tolerance) {
+      res = S.residual_at(y);
+      if (!std::isfinite(res)) return false;
+      if (res < tolerance) return true;
+    }
     res = S.eval(y);
     if (!std::isfinite(res)) return false;
-    if (iters > 0 && res < tolerance && last_step < tolerance) return true;
     if (iters == max_iterations) return false;
     F.head(n) = -S.R / S.s.residual;
     F[n] = -normal.dot(y - yp);
@@ -294,7 +308,7 @@ Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::Vec
   Eigen::VectorXd y = S.y(X, omega) + ds0 * d, t;
   int iters = 0;
   double res = 0.0;
-  if (!correct(S, y, d, opt.endpoint_iterations, opt.tolerance, iters, res)) {
+  if (!correct(S, y, d, opt.corrector_max_iterations, opt.tolerance, iters, res)) {
     b.failures.push_back({omega, res, ds0, "first point off the start: corrector did not converge"});
     return b;
   }

@@ -125,8 +125,10 @@ struct ContinuationEnd {
 // Pseudo-arc-length continuation off the solution (X, omega) along `direction` (scaled,
 // y = (X / x_scale, omega / omega_scale), n + 1 entries; e.g. the critical direction at a
 // branch point): the first point is the predictor y + ds0 d (d = direction normalised)
-// corrected in the hyperplane normal to d, its tangent oriented along d; then the steps of
-// arc_length_continuation (opt.omega_start / omega_end unused) until `end` says so.
+// corrected in the hyperplane normal to d (at most corrector_max_iterations, as any step: a
+// step too long for the branch point's basin fails in 12 iterations, not 50), its tangent
+// oriented along d; then the steps of arc_length_continuation (opt.omega_start / omega_end
+// unused) until `end` says so.
 Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::VectorXd& X, double omega,
                                     const Eigen::VectorXd& direction, double ds0, const Scaling& s,
                                     const ContinuationOptions& opt, const ContinuationEnd& end);

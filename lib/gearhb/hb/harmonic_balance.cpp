@@ -233,29 +233,15 @@ class CondensedLinearization : public Linearization {
 
   bool solve_bordered(const Eigen::VectorXd& row, const Eigen::VectorXd& rhs, Eigen::VectorXd& dy) const override {
     const Eigen::Index N = b_.size(), q = Eigen::Index(coords_.size());
-    const int m = m_;
     const Eigen::VectorXd f = rhs.head(N) * s_.residual;
     const Eigen::VectorXd c = row.head(N).cwiseQuotient(s_.x);
     const double d = row[N] / s_.omega, g = rhs[N];
     const Eigen::VectorXd Zf = solve_L(f);
-    RowMatrix A(q + 1, q + 1);
+    if (!(row.size() == factored_row_.size() && row == factored_row_)) factor(row, c, d);
     Eigen::VectorXd r(q + 1);
-    A.topLeftCorner(q, q) = SG_;
-    A.topRightCorner(q, 1) = UZb_;
-    A.row(q).setZero();
-    for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
-      const Coord& cj = coords_[j];
-      const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
-      A.row(q).segment(cj.slot * m, m) -= wc * Grows_[cj.contact].row(cj.basis);
-    }
-    A(q, q) = d - c.dot(Zb_);
     r.head(q) = project(Zf);
     r[q] = g - c.dot(Zf);
-    for (Eigen::Index i = 0; i <= q; ++i) {   // row equilibration for the pivoting
-      const double omega = A.row(i).cwiseAbs().maxCoeff();
-      if (omega > 0.0) A.row(i) /= omega, r[i] /= omega;
-    }
-    const Eigen::VectorXd vw = Eigen::MatrixXd(A).partialPivLu().solve(r);
+    const Eigen::VectorXd vw = lu_A_.solve(r.cwiseQuotient(row_scale_));
     if (!vw.allFinite()) return false;
     const double dw = vw[q];
     Eigen::VectorXd dx = Zf - Zb_ * dw;
@@ -296,6 +282,32 @@ class CondensedLinearization : public Linearization {
   std::vector<Coord> coords_;
   std::vector<Eigen::VectorXd> w_;
   RowMatrix SG_;
+  // The condensed bordered matrix for one bordered row (c, d: the row unscaled), each row
+  // equilibrated for the pivoting (row_scale_), and its LU, kept for the next solve with the
+  // same row.
+  mutable Eigen::VectorXd factored_row_, row_scale_;
+  mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_A_;
+  void factor(const Eigen::VectorXd& row, const Eigen::VectorXd& c, double d) const {
+    const Eigen::Index q = Eigen::Index(coords_.size());
+    const int m = m_;
+    RowMatrix A(q + 1, q + 1);
+    A.topLeftCorner(q, q) = SG_;
+    A.topRightCorner(q, 1) = UZb_;
+    A.row(q).setZero();
+    for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
+      const Coord& cj = coords_[j];
+      const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
+      A.row(q).segment(cj.slot * m, m) -= wc * Grows_[cj.contact].row(cj.basis);
+    }
+    A(q, q) = d - c.dot(Zb_);
+    row_scale_ = Eigen::VectorXd::Ones(q + 1);
+    for (Eigen::Index i = 0; i <= q; ++i) {   // row equilibration for the pivoting
+      const double omega = A.row(i).cwiseAbs().maxCoeff();
+      if (omega > 0.0) A.row(i) /= omega, row_scale_[i] = omega;
+    }
+    lu_A_.compute(Eigen::MatrixXd(A));
+    factored_row_ = row;
+  }
   Eigen::VectorXd solve_L(const Eigen::VectorXd& v) const {
     Eigen::VectorXd out(v.size());
     for (std::size_t k = 0; k < L_.size(); ++k) out.segment(offset_[k], L_[k].rows()) = lu_[k].solve(v.segment(offset_[k], L_[k].rows()));

@@ -82,7 +82,21 @@ Eigen::MatrixXd odd_block(const HarmonicBalance& hbp, const Eigen::VectorXd& X, 
   return Jo;
 }
 
-int det_sign(const Eigen::MatrixXd& A) { return Eigen::PartialPivLU<Eigen::MatrixXd>(A).determinant() > 0.0 ? 1 : -1; }
+// The sign of det A and log |det A| (from the LU's pivots: det itself over- or underflows).
+struct SignedLogDet {
+  int sign = 1;
+  double log_abs = 0.0;
+};
+SignedLogDet signed_log_det(const Eigen::MatrixXd& A) {
+  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+  SignedLogDet d{int(lu.permutationP().determinant()), 0.0};
+  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+    const double u = lu.matrixLU()(i, i);
+    if (u < 0.0) d.sign = -d.sign;
+    d.log_abs += std::log(std::fabs(u));
+  }
+  return d;
+}
 
 // The critical Floquet eigenvector of the corrected PD orbit (multiplier near -1), made real,
 // displacements and velocities scaled alike (velocities / omega, as the shooting scales them).
@@ -151,20 +165,24 @@ Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalanc
 
 // The branch point of the period-2 model itself: where the odd block of its Jacobian on
 // the period-1 branch is singular (det changes sign), searched on the chords within two
-// points of the PD, the nearest taken, located by bisection on the chord. The HB model at
+// points of the PD, the nearest taken, located on the chord to a chord fraction of 1e-12 by
+// regula falsi (Illinois) on det relative to its larger end (ex. 03: 10 and 9 trials where
+// bisection took 40). The HB model at
 // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
 // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
 // largest and turns back): then there is no period-2 HB branch to switch to.
 BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FrequencyCurve& c,
                                  const Bifurcation& bf, const SweepOptions& opt, std::vector<int>& odd) {
   const auto& P = c.branch.points;
-  auto sign_at = [&](const BranchPoint& q) {
-    return det_sign(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
+  auto det_at = [&](const BranchPoint& q) {
+    return signed_log_det(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
   };
   const int lo_i = std::max(0, bf.after_point - 2), hi_i = std::min(int(P.size()) - 2, bf.after_point + 2);
+  std::vector<SignedLogDet> at;   // at the points lo_i .. hi_i + 1
+  for (int i = lo_i; i <= hi_i + 1; ++i) at.push_back(det_at(P[std::size_t(i)]));
   int best = -1;
   for (int i = lo_i; i <= hi_i; ++i)
-    if (sign_at(P[std::size_t(i)]) != sign_at(P[std::size_t(i) + 1]) &&
+    if (at[std::size_t(i - lo_i)].sign != at[std::size_t(i - lo_i + 1)].sign &&
         (best < 0 || std::abs(i - bf.after_point) < std::abs(best - bf.after_point)))
       best = i;
   if (best < 0) {
@@ -174,13 +192,26 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
     throw Failed(os.str());
   }
   const BranchPoint &pa = P[std::size_t(best)], &pb = P[std::size_t(best) + 1];
-  const int sa = sign_at(pa);
-  double tl = 0.0, th = 1.0;
+  const SignedLogDet &da = at[std::size_t(best - lo_i)], &db = at[std::size_t(best - lo_i + 1)];
+  const double log_ref = std::max(da.log_abs, db.log_abs);
+  auto relative = [log_ref](const SignedLogDet& d) { return d.sign * std::exp(d.log_abs - log_ref); };
+  double tl = 0.0, th = 1.0, hl = relative(da), hh = relative(db);
+  int side = 0;   // Illinois: the value of the end kept twice in a row is halved
   BranchPoint q = pa;
   for (int it = 0; it < 60 && th - tl > 1e-12; ++it) {
-    const double tm = 0.5 * (tl + th);
+    // the secant point, kept inside the bracket's inner 98 % (so the bracket shrinks)
+    const double tm = std::clamp(tl + (th - tl) * hl / (hl - hh), tl + 0.01 * (th - tl), th - 0.01 * (th - tl));
     q = point_on_chord(hb, pa, pb, c.scaling, tm, opt.continuation.tolerance);
-    (sign_at(q) == sa ? tl : th) = tm;
+    const double hm = relative(det_at(q));
+    if ((hm > 0.0) == (hl > 0.0)) {
+      tl = tm, hl = hm;
+      if (side == -1) hh *= 0.5;
+      side = -1;
+    } else {
+      th = tm, hh = hm;
+      if (side == 1) hl *= 0.5;
+      side = 1;
+    }
   }
   return q;
 }
@@ -315,10 +346,12 @@ struct Period2Continuation {
     return odd.dot(prev_odd) < 0.0 ? Merge::crossed : Merge::none;
   }
 
-  Period2Continuation(const HarmonicBalance& hbp_, const FrequencyCurve& c, const SweepOptions& opt)
+  Period2Continuation(const HarmonicBalance& hbp_, const FrequencyCurve& c, const SweepOptions& opt,
+                      const PeriodDoublingOptions& pdo)
       : hbp(hbp_), s(c.scaling), co(opt.continuation) {
     s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
     s.omega = c.scaling.omega / 2.0;
+    co.fast_iterations = pdo.fast_iterations;
     co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
     end.omega_min = opt.omega_min / 2.0;
     end.omega_max = opt.omega_max / 2.0;
@@ -429,20 +462,45 @@ int pd_on_chord(const FrequencyCurve& c, std::size_t i, int j, double w) {
   return to;
 }
 
-// The merge of a branch that crossed the period-1 branch: refined on its last chord (merge_point).
-// Returns the chord of c where it met c.
+// The merge at the period-2 model's branch point beside the PD r.to of c (where the switch there
+// would start a branch), appended as the branch's last point; where there is none (no branch
+// point of the period-2 model there), nothing changes.
+void end_at_branch_point(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
+                         const FrequencyCurve& c, const SweepOptions& opt, double P) {
+  try {
+    std::vector<int> odd;
+    const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
+    b.points.push_back(BranchPoint{to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, 0, 0.0, 0.0, 0.0});
+    r.omega_end = P * q.omega;
+  } catch (const std::exception&) {
+  }
+}
+
+// The merge of a branch that crossed the period-1 branch: the crossing refined on its last chord
+// (merge_point) says on which chord of c it met c; the branch ends at the period-2 model's branch
+// point beside the PD there, or at the refined crossing where no PD lies there. Not the refined
+// crossing itself: the crossing is the branch point, where the chord's trial points may converge
+// onto the period-1 branch (a solution of the period-2 model too) anywhere near it, and |odd| = 0
+// holds all along that branch (ex. 03 at H = 40 with the step growing: 2.7e-6 past the branch
+// point). Returns the chord of c where it met c.
 int end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const HarmonicBalance& hb,
-                    const FrequencyCurve& c, std::size_t i, double P) {
+                    const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
   try {
     b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], b.points.back(), p2.s, p2.prev_odd,
                                   p2.co.tolerance);
   } catch (const std::exception&) {
     b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
   }
-  const BranchPoint& e = b.points.back();
+  const BranchPoint e = b.points.back();
   r.omega_end = 2.0 * P * e.omega;
   const int j = nearest_chord(c, period1_part(hb, p2.hbp, e.X), 2.0 * e.omega);
   r.to = pd_on_chord(c, i, j, 2.0 * e.omega);
+  if (r.to >= 0 && b.points.size() >= 2) {
+    b.points.pop_back();
+    const std::size_t before = b.points.size();
+    end_at_branch_point(r, b, hb, p2.hbp, c, opt, P);
+    if (b.points.size() == before) b.points.push_back(e);
+  }
   return j;
 }
 
@@ -457,15 +515,7 @@ int end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, co
   const int j = nearest_chord(c, period1_part(hb, hbp, on.X), 2.0 * on.omega);
   r.to = pd_on_chord(c, i, j, 2.0 * on.omega);
   r.omega_end = 2.0 * P * b.points.back().omega;
-  if (r.to < 0) return j;
-  try {
-    std::vector<int> odd;
-    const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
-    b.points.push_back(BranchPoint{to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, 0, 0.0, 0.0, 0.0});
-    r.omega_end = P * q.omega;
-  } catch (const std::exception&) {
-    // no branch point of the period-2 model there: the branch ends at the point before
-  }
+  if (r.to >= 0) end_at_branch_point(r, b, hb, hbp, c, opt, P);
   return j;
 }
 
@@ -505,7 +555,7 @@ void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& 
     r.end = PeriodDoubledBranch::End::failed;
     r.omega_end = 2.0 * P * f.omega;
   } else if (m != Merge::none) {
-    const int j = m == Merge::crossed ? end_at_crossing(r, b, p2, hb, c, i, P) : end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
+    const int j = m == Merge::crossed ? end_at_crossing(r, b, p2, hb, c, i, opt, P) : end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
     r.end = PeriodDoubledBranch::End::merged;
     const int period = int(P);
     os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
@@ -551,7 +601,7 @@ void switch_branch(PeriodDoubledBranch& r, const HarmonicBalance& hb, const Freq
   const BranchPoint& at = sp.branch_point;
   r.omega_branch_point = P * at.omega;
   r.direction_agreement = sp.agreement;
-  Period2Continuation p2(hbp, c, opt);
+  Period2Continuation p2(hbp, c, opt, pdo);
   const Eigen::VectorXd X0 = to_subharmonic_basis(hb, hbp, 2, at.X);
   Branch b = p2.from_branch_point(X0, at.omega / 2.0, sp.phi, c.scaling.x[0], pdo.step);
   p2.refine_overshoot(b, c.scaling.x[0]);
