@@ -91,8 +91,8 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   st.counters["rejected"] = double(rejected);               // rejected continuation steps
   st.counters["iterations"] = double(iterations);           // corrector iterations of the accepted points
 }
-// fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 4, the default: the
-// period-2 corrector takes 4 iterations a step; 3, the sweep's, never grows the step).
+// fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 3, the default: the
+// period-2 corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).
 BENCHMARK(BM_Ex03Period2Branch)->Arg(3)->Arg(4)->ArgNames({"fast_iterations"})->Unit(benchmark::kMillisecond);
 
 // One corrector iteration of that branch at its middle point: the period-2 model's

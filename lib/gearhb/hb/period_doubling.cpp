@@ -166,7 +166,7 @@ Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalanc
 // The branch point of the period-2 model itself: where the odd block of its Jacobian on
 // the period-1 branch is singular (det changes sign), searched on the chords within two
 // points of the PD, the nearest taken, located on the chord to a chord fraction of 1e-12 by
-// regula falsi (Illinois) on det relative to its larger end (ex. 03: 10 and 9 trials where
+// regula falsi (Illinois) on det relative to its larger end (ex. 03: 14 trials where
 // bisection took 40). The HB model at
 // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
 // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
@@ -227,14 +227,6 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   sp.at.X = bf.X;
   sp.at.omega = bf.omega;
   const double xs = c.scaling.x[0], w = sp.at.omega;
-  if (!bf.smooth) {
-    // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
-    std::ostringstream os;
-    os << "a non-smooth PD: a multiplier jumps across -1 (to " << bf.multiplier.real();
-    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
-    os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
-    throw Failed(os.str());
-  }
   // the corrected orbit on the exact flow where there is one and the sweep corrects its orbits;
   // else the variational equation about the HB orbit (its monodromy and eigen-solution)
   bool profile = false;
@@ -243,6 +235,14 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   fo.correct_orbit = fo.correct_orbit && !profile;
   const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
   if (fo.correct_orbit && !fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  if (!bf.smooth) {
+    // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
+    std::ostringstream os;
+    os << "a non-smooth PD: a multiplier jumps across -1 (to " << bf.multiplier.real();
+    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
+    os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
+    throw Failed(os.str());
+  }
   const Eigen::VectorXd e = critical_eigenvector(hb, fr, w);
   sp.phi_floquet = odd_harmonics_of(hb, hbp, eigen_solution(hb, sp.at.X, fr, e, w, xs, pdo.samples, fo));
   std::vector<int> odd;

@@ -109,9 +109,12 @@ struct PeriodDoublingOptions {
   // The step growth of the branch's continuation: ContinuationOptions::fast_iterations (the
   // step grows by `grow` after a corrector of at most this many iterations). A contact model's
   // period-2 corrector takes 4 Newton iterations at any step (ex. 03: steps 1e-5, 1e-6, 7e-10,
-  // 1e-14 - the first moves the contact intervals, then it converges quadratically), so the
-  // sweep's 3 never grows the step: 86 points and 0.47 s against 33 points and 0.25 s.
-  int fast_iterations = 4;
+  // 1e-14 - the first moves the contact intervals, then it converges quadratically), so at the
+  // sweep's 3 the step never grows (ex. 03: 87 points, 0.37 s). 4 lets it grow (33 points,
+  // 0.23 s) but is not the default: on ch. 6 Fig. 43's check curve the longer steps leave the
+  // branch point along a small loop (odd part 7e-5, 10716 -> 10616 -> 10716 rad/s) back to it and
+  // miss the period-2 branch that the default finds.
+  int fast_iterations = 3;
 };
 
 // Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
