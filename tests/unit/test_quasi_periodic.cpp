@@ -215,31 +215,51 @@ TEST(QuasiPeriodic, TorusBranchIdsFollowThePeriodDoubledBranches) {
   EXPECT_EQ(named, 1);
 }
 
-TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {
-  const TorusCase& t = torus_case();
+namespace {
+// The upper NS point's torus branch down to omega = 0.61, computed once.
+const TorusBranch& upper_branch(const TorusBalance& tb, const TorusOptions& to) {
+  static const TorusBranch b = [&] {
+    const TorusCase& t = torus_case();
+    SweepOptions o = t.o;
+    o.omega_min = 0.6100;
+    return torus_branch(tb, t.c, t.upper, o, to);
+  }();
+  return b;
+}
+TorusOptions torus_options() {
   TorusOptions to;
   to.harmonics1 = 21;
-  SweepOptions o = t.o;
-  o.omega_min = 0.6100;   // the branch leaves this range below the last omega checked
+  return to;
+}
+// The torus at omega corrected from the branch point nearest it.
+TorusPoint torus_near(const TorusBalance& tb, const TorusBranch& b, double omega, const TorusOptions& to) {
+  const TorusPoint* near = &b.points.front();
+  for (const TorusPoint& q : b.points)
+    if (std::abs(q.omega - omega) < std::abs(near->omega - omega)) near = &q;
+  return torus_point_at(tb, *near, omega, torus_case().c.scaling, to);
+}
+TorusStabilityOptions stability_options() {
+  TorusStabilityOptions so;
+  so.integration.x_scale = torus_case().c.scaling.x.cwiseAbs().maxCoeff();
+  return so;
+}
+}  // namespace
+
+TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {
+  const TorusCase& t = torus_case();
+  const TorusOptions to = torus_options();
   const TorusBalance tb(t.hb, to.harmonics1, to.harmonics2);
-  const TorusBranch b = torus_branch(tb, t.c, t.upper, o, to);
+  const TorusBranch& b = upper_branch(tb, to);   // it leaves the range below the last omega checked
   ASSERT_EQ(b.end, TorusBranch::End::left_range) << b.why;
   const TimeIntegrator ti(t.hb);
   const TimeIntegrationOptions io;
   const int n = 2, periods = 2000;
   int checked = 0;
   for (const double omega : {0.6137, 0.6124, 0.6107}) {
-    // the torus at omega, corrected from the branch point nearest it
-    const TorusPoint* near = &b.points.front();
-    for (const TorusPoint& q : b.points)
-      if (std::abs(q.omega - omega) < std::abs(near->omega - omega)) near = &q;
-    const TorusPoint p = torus_point_at(tb, *near, omega, t.c.scaling, to);
+    const TorusPoint p = torus_near(tb, b, omega, to);
     // start on the HB torus at (theta1, theta2) = (0, 0); 200 periods of transient
-    Eigen::VectorXd x0 = p.X.head(n), v0 = Eigen::VectorXd::Zero(n);
-    for (int k = 1; k <= tb.pairs(); ++k) {
-      x0 += p.X.segment((2 * k - 1) * n, n);
-      v0 += (tb.k1(k) * p.omega + tb.k2(k) * p.omega2) * p.X.segment(2 * k * n, n);
-    }
+    Eigen::VectorXd x0, v0;
+    torus_state(tb, p.X, p.omega, p.omega2, 0.0, 0.0, x0, v0);
     Eigen::MatrixXd xs, vs;
     ti.poincare(x0, v0, p.omega, 200, periods, io, xs, vs);
     Eigen::MatrixXd Z(xs.rows(), 2 * n);
@@ -274,4 +294,48 @@ TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {
     EXPECT_LT(std::abs(torus_measures(fine, q.X, e1()).x_max - m.x_max), 2.5e-4);
   }
   EXPECT_EQ(checked, 3);
+}
+
+
+// Where a long time integration settles on the torus (TorusAgreesWithLongTimeIntegration:
+// 200 transient periods from the HB torus, then the Poincare points rotate at HB's omega2 and
+// reach its x_max; gearhb_frc's bifurcation diagram calls 0.611-0.614 quasi-periodic), the
+// flow's test must call it stable: lambda1 within the threshold of 0 (the invariant circle),
+// lambda2 below -threshold, the orbit within drift_tol of the HB section. Measured (400 periods,
+// the default): lambda1 1.2e-3 and 6.3e-3, lambda2 -0.37 and -0.43, drift 0.11 and 0.17 at
+// 0.6137 and 0.6124; lambda1 falls as 1 / periods (0.6124: 0.0156, 6.3e-3, 4.6e-3, 1.4e-3 at
+// 200, 400, 800, 1600 periods: the finite-time error of a zero exponent), lambda2 stays.
+TEST(QuasiPeriodicStability, TorusTheIntegrationSettlesOnIsStable) {
+  const TorusOptions to = torus_options();
+  const TorusBalance tb(torus_case().hb, to.harmonics1, to.harmonics2);
+  const TorusBranch& b = upper_branch(tb, to);
+  ASSERT_EQ(b.end, TorusBranch::End::left_range) << b.why;
+  const TorusStabilityOptions so = stability_options();
+  for (const double omega : {0.6137, 0.6124}) {
+    const TorusStability s = torus_stability(tb, torus_near(tb, b, omega, to), so);
+    ASSERT_TRUE(s.failure.empty()) << s.failure;
+    EXPECT_EQ(s.verdict, TorusStability::Verdict::stable) << "omega " << omega;
+    EXPECT_LT(std::abs(s.lyapunov1), so.threshold);
+    EXPECT_LT(s.lyapunov2, -so.threshold);
+    EXPECT_LT(s.drift, so.drift_tol);
+  }
+}
+
+// Where the time integration is chaotic (the bifurcation diagram of nlvib_ex03_torus.json:
+// chaotic at 0.600-0.610, lambda 0.06-0.26 per period), the HB torus continued there must not be
+// called stable: the flow started on it leaves it or stretches. Measured (400 periods): lambda1
+// 0.203 (the diagram's largest exponent at 0.605: 0.21), lambda2 -0.39, drift 0.69 at omega 0.6050.
+TEST(QuasiPeriodicStability, TorusInTheChaoticRegionIsNotStable) {
+  const TorusOptions to = torus_options();
+  const TorusBalance tb(torus_case().hb, to.harmonics1, to.harmonics2);
+  const TorusBranch& b = upper_branch(tb, to);
+  ASSERT_FALSE(b.points.empty()) << b.why;
+  // natural continuation in omega from the branch's last point (the branch is monotone in
+  // omega down to 0.6014, torus.csv of the example)
+  TorusPoint p = torus_near(tb, b, 0.6100, to);
+  for (double omega = 0.6095; omega >= 0.6049; omega -= 0.0005) p = torus_point_at(tb, p, omega, torus_case().c.scaling, to);
+  const TorusStabilityOptions so = stability_options();
+  const TorusStability s = torus_stability(tb, p, so);
+  ASSERT_TRUE(s.failure.empty()) << s.failure;
+  EXPECT_EQ(s.verdict, TorusStability::Verdict::unstable);
 }
