@@ -456,6 +456,22 @@ std::vector<Eigen::VectorXd> first_points(const TorusContinuation& tc, const NsS
   return Ys;
 }
 
+// first_points at amplitude, else at amplitude / 5 and / 25 (step 4 of the header: near a
+// grazing NS point the first-order shape holds only at amplitudes of the orbit's penetration).
+std::vector<Eigen::VectorXd> first_points_retried(const TorusContinuation& tc, const NsStart& s,
+                                                  const Eigen::VectorXd& Yns, double amplitude, TorusBranch& out) {
+  std::string first;
+  for (int k = 0; k < 3; ++k) {
+    try {
+      return first_points(tc, s, Yns, amplitude / std::pow(5.0, k), out);
+    } catch (const std::runtime_error& e) {
+      out.points.clear();
+      if (k == 0) first = e.what();
+    }
+  }
+  throw std::runtime_error(first + ", nor at a fifth and a 25th of that");
+}
+
 // Steps 4-5: the pseudo-arc-length continuation from the first two points until the branch
 // ends (out.end, out.why).
 void continue_torus(const TorusContinuation& tc, std::vector<Eigen::VectorXd> Ys, const SweepOptions& opt,
@@ -513,7 +529,7 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
     out.omega2_ns = s.alpha * s.omega / (2.0 * M_PI);
     const TorusContinuation tc(tb, c.scaling, to);
     const Eigen::VectorXd Yns = tc.scaled(tb.from_periodic(s.X1), out.omega2_ns, s.omega);
-    continue_torus(tc, first_points(tc, s, Yns, to.amplitude, out), opt, to, where, out);
+    continue_torus(tc, first_points_retried(tc, s, Yns, to.amplitude, out), opt, to, where, out);
   } catch (const std::exception& e) {
     out.end = TorusBranch::End::failed;
     out.why = where + "failed: " + e.what();

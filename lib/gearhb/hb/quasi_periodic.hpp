@@ -38,7 +38,12 @@
 //     omega2 = alpha omega / (2 pi) is the torus' first-order shape (pairs (k1, +-1));
 //  4. the first point: period-1 point + eps times that shape (eps: a fraction `amplitude` of
 //     the orbit's size), corrected with omega and omega2 free and the amplitude held (its
-//     projection on the shape); the second at 2 eps; then pseudo-arc-length continuation in
+//     projection on the shape); the second at 2 eps (if these fail, again at eps / 5 and eps /
+//     25: at an NS point where the orbit grazes the contact - the example's lower NS point at
+//     0.59939, contact onset at 0.59936, the orbit 1e-4 of the gap into contact - the
+//     first-order shape, the linearisation about an orbit that barely touches, holds only for
+//     tori that do not reach far past the contact's edge; there eps = 0.005 fails and eps / 5
+//     converges); then pseudo-arc-length continuation in
 //     the scaled unknowns [X / x_scale, omega2 / omega_scale, omega / omega_scale] with a
 //     secant predictor (a corrected point farther than half the step from its predictor is
 //     refused and the step halved: it jumped to another part of the solution set);
