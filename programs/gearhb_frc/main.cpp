@@ -257,6 +257,13 @@ std::vector<TorusBranch> FrequencyResponseFromFile::torus_branches(Run& run, con
   std::vector<TorusBranch> br = run.timed("torus branches", [&] { return gearhb::torus_branches(tb, c, o, to); });
   TorusStabilityOptions so = model_.torus_stability;
   so.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  // skipped, said in one line, where the explicit integration is stiff (as ch. 6's diagram)
+  const double stiff = fastest_rate(hb) * 2.0 * M_PI / std::min(model_.omega_from, model_.omega_to);
+  if (stiff > 1e4 && so.every > 0) {
+    run.say(model_.name + ": no torus stability: the time integration is stiff (fastest rate x period " +
+            std::to_string(stiff) + " > 1e4)");
+    so.every = 0;
+  }
   run.timed("torus stability", [&] {
     for (TorusBranch& b : br) add_torus_stability(tb, b, so);
     return 0;

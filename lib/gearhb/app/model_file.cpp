@@ -162,7 +162,7 @@ void read_torus(const json& j, const std::string& path, ModelFile& m) {
   TorusStabilityOptions& so = m.torus_stability;
   if (t.contains("stability_every")) so.every = whole(t["stability_every"], path, "torus.stability_every", 0, 10000);
   if (t.contains("stability_periods"))
-    so.periods = whole(t["stability_periods"], path, "torus.stability_periods", 10, 100000);
+    so.periods = whole(t["stability_periods"], path, "torus.stability_periods", 10, 10000);
   std::string why;
   const std::string key = check_torus_options(o, m.harmonics, &why);
   if (!key.empty()) fail(path, "torus." + key, why);
@@ -267,7 +267,7 @@ std::string model_file_help() {
          "  torus.max_points      most points per torus branch (default 200)\n"
          "  torus.stability_every the torus' stability by the flow's two largest Lyapunov exponents at every\n"
          "                        k-th point of a branch and its last (default 5; 0 = none; 0..10000)\n"
-         "  torus.stability_periods  forcing periods of that variational integration (default 400; 10..100000)\n" +
+         "  torus.stability_periods  forcing periods of that variational integration (default 400; 10..10000)\n" +
          period_doubling_help() + bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"

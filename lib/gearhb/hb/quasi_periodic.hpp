@@ -162,7 +162,7 @@ struct TorusOptions {
 // third of the threshold 0.02 (the bifurcation diagram's lyapunov_threshold).
 struct TorusStabilityOptions {
   int every = 5;              // every k-th point of a branch (0, k, 2k, ...) and its last; 0: none
-  int periods = 400;          // forcing periods of the variational integration (10..100000)
+  int periods = 400;          // forcing periods of the variational integration (gearhb_frc: 10..10000)
   double threshold = 0.02;    // per forcing period; stated, not derived (see above)
   // the drift: the largest distance (max norm in (x, v / omega)) of the orbit's Poincare points
   // from the HB section curve (sampled at 256 values of theta2), over that curve's half-width
