@@ -9,7 +9,10 @@
 //    amplitude against alpha omega / (2 pi), alpha the angle of the critical Floquet
 //    multiplier of the exact (shooting-corrected) orbit - an independent method;
 //  - the torus against a long GSL time integration at three omegas: the second frequency
-//    from the rotation of the Poincare points (theta1 = 0 mod 2 pi) and the largest q1.
+//    from the rotation of the Poincare points (theta1 = 0 mod 2 pi) and the largest q1;
+//  - its stability by the flow (torus_stability): stable where that integration settles on
+//    it, unstable where the bifurcation diagram's integration is chaotic;
+//  - both NS points start a branch (the lower, grazing one at a fifth of the amplitude).
 #include <cmath>
 #include <map>
 #include <sstream>
