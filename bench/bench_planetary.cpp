@@ -6,8 +6,11 @@
 // set of geared-turbofan proportions (examples/gtf_star_five_planets.json: both flanks on
 // every mesh, 20 contacts) over its speed range with the stability of every point and the
 // bifurcations, as the program computes them. Times go to the report.
+// The example at its period doubling: the whole run with the switch, and the switch alone.
 //   build/bin/gearhb_bench --benchmark_filter=planetary
 #include <algorithm>
+#include <string>
+#include <vector>
 
 #include <benchmark/benchmark.h>
 
@@ -78,13 +81,45 @@ static void BM_planetary_star_response_with_stability(benchmark::State& state) {
   const HarmonicBalance hb = planetary_response_model(f);
   const SweepOptions o = planetary_sweep_options(f);
   for (auto _ : state) {
-    FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
-    c.stable.clear();
-    c.floquet.clear();
-    analyse_stability(hb, planetary_stability_options(o), c);
+    const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
     state.counters["points"] = double(c.branch.points.size());
     state.counters["unstable"] = double(std::count(c.stable.begin(), c.stable.end(), false));
     state.counters["bifurcations"] = double(c.bifurcations.size());
   }
 }
 BENCHMARK(BM_planetary_star_response_with_stability)->Unit(benchmark::kSecond)->Iterations(1);
+
+// The example at the loaded Lin-Parker set's period doubling (examples/lin_parker_1999_loaded_pd.json)
+// as gearhb_planetary runs it: the sweep over its band, the stability of every point and the
+// bifurcations, then the period-2 branch switched at the period doubling with its own stability
+// (tools/planetary_sweep.hpp planetary_period_doubled_branches); then the switch and the branch
+// alone.
+namespace {
+PlanetaryFile pd_example() {
+  return read_planetary_file(
+      std::string(GEARHB_SOURCE_DIR) + "/programs/gearhb_planetary/examples/lin_parker_1999_loaded_pd.json", {});
+}
+}  // namespace
+
+static void BM_planetary_period_doubling_example(benchmark::State& state) {
+  const PlanetaryFile f = pd_example();
+  const HarmonicBalance hb = planetary_response_model(f);
+  const SweepOptions o = planetary_sweep_options(f);
+  for (auto _ : state) {
+    const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
+    const std::vector<PeriodDoubledBranch> br = planetary_period_doubled_branches(hb, c, o, f.period_doubling_depth);
+    state.counters["points"] = double(c.branch.points.size());
+    state.counters["branches"] = double(br.size());
+    state.counters["period2_points"] = br.empty() ? 0.0 : double(br.front().curve.branch.points.size());
+  }
+}
+BENCHMARK(BM_planetary_period_doubling_example)->Unit(benchmark::kSecond)->Iterations(1);
+
+static void BM_planetary_period_doubling_switch(benchmark::State& state) {
+  const PlanetaryFile f = pd_example();
+  const HarmonicBalance hb = planetary_response_model(f);
+  const SweepOptions o = planetary_sweep_options(f);
+  const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
+  for (auto _ : state) benchmark::DoNotOptimize(planetary_period_doubled_branches(hb, c, o, f.period_doubling_depth));
+}
+BENCHMARK(BM_planetary_period_doubling_switch)->Unit(benchmark::kSecond)->Iterations(1);

@@ -326,19 +326,23 @@ PLANETARY_CAPTIONS = {
                    "forbids fall to round-off (the bottom of the axis). Pin errors, unequal spacing or unequal "
                    "backlash break the symmetry: the title then says no rule applies.",
     "response.png": "Response over the mesh frequency (harmonic balance with exact contact on every mesh, arc "
-                    "length): the sun's rotation and centre (AC RMS, Floquet stability at the marked points) and "
-                    "the largest K_v of the sun-planet and of the ring-planet meshes, with a rug where a mesh of "
-                    "that kind loses contact.",
+                    "length): the sun's rotation and centre (AC RMS; solid where stable, dashed where unstable by "
+                    "the Floquet multipliers, where the run computed them) and the largest K_v of the sun-planet and "
+                    "of the ring-planet meshes, with a rug where a mesh of that kind loses contact. Where the run "
+                    "switched at a period doubling, each period-2 branch in its own colour (its measures over two "
+                    "mesh periods, its own rug rows), and the mesh frequencies with no stable period-1 orbit "
+                    "shaded.",
     "meshes.png": "Every mesh over the mesh frequency: its dynamic factor K_v (largest |drive - back force| over "
-                  "the static force), one line per planet, sun-planet meshes above, ring-planet below, the points "
-                  "whose Floquet multipliers were computed marked; at the bottom one band per mesh with its "
-                  "contact class along the curve (drive flank loses contact, back flank hits, both; no band: "
-                  "full contact). Notice which meshes lose contact first and where the back flanks hit.",
+                  "the static force), one line per planet, sun-planet meshes above, ring-planet below; its "
+                  "contact class as a broad stroke under its own curve (drive flank loses contact, back flank "
+                  "hits, both; no stroke: full contact), on each branch: a period-2 branch dotted with its points "
+                  "(hollow where unstable) and its own strokes. Notice which meshes lose contact first, on which "
+                  "branch, and where the back flanks hit.",
     "load_sharing.png": "Planet load sharing over the mesh frequency: L_n = N max F_sn / sum_m max F_sm for each "
                         "planet (F_sn the drive-flank force of its sun-planet mesh over the period), 1 for equal "
                         "shares. With a pin error (planet.pin_errors) notice how its planet sheds load to its "
                         "neighbours and how the resonances change the split; without, every L_n is 1 on the "
-                        "symmetric response.",
+                        "symmetric response. A period-2 branch dotted, with its points.",
 }
 
 # The figures of a gearhb_frc run, copied as frc_<example>_<figure>: figure -> caption.

@@ -6,16 +6,18 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
                 and planet mode): every body drawn at rest (grey) and displaced (colour),
                 its rotation as the turned spoke; the displacement scaled to be seen;
   response.png  (with a `response` section) the sun's vibration over the mesh frequency
-                (AC RMS of its rotation u_s and of its centre) with the points whose
-                Floquet multipliers were computed (unstable ones in red), and the largest
-                dynamic factor K_v of the sun-planet and ring-planet meshes, the frequencies
-                where a mesh loses contact as a rug;
+                (AC RMS of its rotation u_s, response.csv's x_rms_ac, and of its centre), solid
+                where stable and dashed where not (Floquet), and the largest dynamic factor K_v
+                of the sun-planet and ring-planet meshes, the frequencies where a mesh loses
+                contact as a rug per branch; the period-2 (4) branches switched at the period
+                doublings (rows with branch > 0) each in its own colour, over two mesh periods;
+                the ranges with no stable period-1 orbit shaded (key numbers unstable_period1_*);
   meshes.png    (with `response`) every mesh over the mesh frequency: its dynamic factor K_v
-                (one line per planet, sun-planet and ring-planet meshes in two panels, the
-                points whose Floquet multipliers were computed marked) and its contact class
-                along the curve as one band per mesh (drive-flank loss, back-flank impact);
+                (one line per planet, sun-planet and ring-planet meshes in two panels) and its
+                contact class along the curve as one band per mesh (drive-flank loss, back-flank
+                impact); a period-2 branch's meshes as dotted lines with its own contact bands;
   load_sharing.png  (with `response`) the planet load-sharing factor of every planet over the
-                mesh frequency;
+                mesh frequency (a period-2 branch dotted);
   campbell.png  (with `campbell`) the natural frequencies over carrier speed;
   mesh_stiffness.png  (with mesh.stiffness tooth_model) k(theta) of the sun-planet and the
                 ring-planet meshes over one mesh cycle, their means dotted;
@@ -31,8 +33,9 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, bifurcation_handles, plot_branch,  # noqa: E402
-                   read_csv, rug_room, runs, save)
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, PERIOD2_COLOURS, RUG_HEIGHT,  # noqa: E402
+                   bifurcation_handles, branch_ids, plot_branch, read_csv, rows_of, rug_room, runs, save,
+                   shade_no_stable_period1, unstable_period1_ranges)
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
 
@@ -101,31 +104,74 @@ def modes_figure(d_dir, params):
     return str(d_dir / "modes.png")
 
 
+def read_response(d_dir):
+    """response.csv split by branch: the period-1 curve (branch 0) and the period-doubled branches
+    [(id, period, rows)]."""
+    full = read_csv(d_dir / "response.csv")
+    doubled = []
+    for bid in branch_ids(full):
+        rows = rows_of(full, bid)
+        doubled.append((bid, int(rows["period"][0]), rows))
+    return rows_of(full, 0), doubled
+
+
+def shade_unstable_period1(d_dir, axes):
+    """Shade the mesh-frequency ranges with no stable period-1 orbit on every panel; the legend entry."""
+    kn_file = d_dir / "key_numbers.json"
+    ranges = unstable_period1_ranges(json.load(open(kn_file)) if kn_file.exists() else {})
+    return shade_no_stable_period1(axes, ranges, scale=1.0 / (2.0 * math.pi), unit="Hz")
+
+
+def largest_kv(d, kind, N):
+    return [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(d["f_mesh_hz"]))]
+
+
+RUG_ROW = 0.04   # axes fraction per row of the loss rug (its ticks of 6 points)
+
+
+def loss_rug(ax, d, kind, N, colour, row, label):
+    """Ticks at the frequencies where a drive flank of a `kind` mesh loses contact, in rug row `row`."""
+    hz = d["f_mesh_hz"]
+    loss = [hz[i] for i in range(len(hz)) if any("drive_loss" in d["contact_%s_%d" % (kind, n + 1)][i] for n in range(N))]
+    ax.plot(loss, [0.02 + RUG_ROW * row] * len(loss), "|", color=colour, ms=6, transform=ax.get_xaxis_transform(),
+            label=label if loss else None)
+
+
 def response_figure(d_dir, params):
-    d = read_csv(d_dir / "response.csv")
-    hz, N = d["f_mesh_hz"], params["planets"]
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.0, 6.4), sharex=True)
+    d, doubled = read_response(d_dir)
+    N = params["planets"]
+    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.4, 6.8), sharex=True)
     bif = read_bifurcations(d_dir)
-    for y, colour, label in (("sun_u_rms_um", "C0", "sun rotation u_s (AC RMS)"),
-                             ("sun_xy_rms_um", "C1", "sun centre x, y (AC RMS)")):
-        curve(top, d, y, colour, label)
+    curve(top, d, "x_rms_ac", "C0", "sun rotation u_s (AC RMS)", scale=1e6)
+    curve(top, d, "sun_xy_rms_um", "C1", "sun centre x, y (AC RMS)")
+    for n, (bid, period, d2) in enumerate(doubled):
+        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
+        curve(top, d2, "x_rms_ac", colour, "period %d (branch %d): u_s and x, y,\nover %d mesh periods" % (period, bid, period),
+              scale=1e6)
+        curve(top, d2, "sun_xy_rms_um", colour)
     bifurcation_marks(top, bif)
     top.set_ylabel("um")
     top.set_yscale("log")
-    top.legend(handles=top.get_legend_handles_labels()[0] + stability_handles(d, bif),
+    shaded = shade_unstable_period1(d_dir, (top, bottom))
+    top.legend(handles=top.get_legend_handles_labels()[0] + stability_handles(d, bif, doubled) + shaded,
                loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
-    for kind, colour in (("sun", "C2"), ("ring", "C3")):
-        kv = [max(d["dynamic_factor_%s_%d" % (kind, n + 1)][i] for n in range(N)) for i in range(len(hz))]
-        bottom.plot(hz, kv, color=colour, label="%s-planet meshes: largest K_v" % kind)
-        loss = [hz[i] for i in range(len(hz))
-                if any("drive_loss" in d["contact_%s_%d" % (kind, n + 1)][i] for n in range(N))]
-        bottom.plot(loss, [0.03 if kind == "sun" else 0.08] * len(loss), "|", color=colour, ms=8,
-                    transform=bottom.get_xaxis_transform(),
-                    label="%s-planet drive flank loses contact" % kind if loss else None)
-    rug_room(bottom, rows=2)
+    rows = 0
+    for kind, colour in (("sun", "C0"), ("ring", "C3")):
+        bottom.plot(d["f_mesh_hz"], largest_kv(d, kind, N), color=colour, label="%s-planet meshes: largest K_v" % kind)
+        loss_rug(bottom, d, kind, N, colour, rows, "%s-planet drive flank loses contact" % kind)
+        rows += 1
+    for n, (bid, period, d2) in enumerate(doubled):
+        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
+        for kind, ls in (("sun", "-"), ("ring", "-.")):
+            bottom.plot(d2["f_mesh_hz"], largest_kv(d2, kind, N), color=colour, ls=ls,
+                        label="period %d (branch %d): %s-planet K_v" % (period, bid, kind))
+            loss_rug(bottom, d2, kind, N, colour, rows, "branch %d: %s-planet drive flank loses contact" % (bid, kind))
+            rows += 1
+    rug_room(bottom, rows=math.ceil(rows * RUG_ROW / (RUG_HEIGHT + 0.006)))
     bottom.set_ylabel("K_v: largest force / static force")
     bottom.set_xlabel("mesh frequency [Hz]")
-    bottom.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0))
+    bottom.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
+                  title="rug: one row per branch and mesh kind" if doubled else None, title_fontsize=8)
     fig.suptitle("%s, N = %d planets, %g N m on the %s" % (params.get("name", "planetary set"), N,
                                                            params["response"]["torque"],
                                                            params["response"]["input"]), fontsize=10)
@@ -171,13 +217,23 @@ def evaluated(d):
     return any(s == s for s in d["stable"])
 
 
-def curve(ax, d, y, colour, label=None, lw=1.1):
-    """Column y over the mesh frequency: solid where stable, dashed where unstable (Floquet at
-    every point); one solid line where the run computed no stability."""
+def curve(ax, d, y, colour, label=None, lw=1.1, scale=1.0):
+    """Column y (x scale) over the mesh frequency: solid where stable, dashed where unstable
+    (Floquet at every point); one solid line where the run computed no stability."""
     if evaluated(d):
-        plot_branch(ax, d, y=y, color=colour, label=label, x="f_mesh_hz", lw=lw)
+        plot_branch(ax, d, y=y, color=colour, label=label, x="f_mesh_hz", lw=lw, scale=scale)
     else:
-        ax.plot(d["f_mesh_hz"], d[y], color=colour, lw=lw, label=label)
+        ax.plot(d["f_mesh_hz"], [v * scale for v in d[y]], color=colour, lw=lw, label=label)
+
+
+def doubled_curve(ax, d2, y, colour, label=None):
+    """A period-2 branch's column y: dotted, thin, with its points (its own style beside the
+    period-1 lines of the same colour); unstable points hollow."""
+    ax.plot(d2["f_mesh_hz"], d2[y], color=colour, ls=":", lw=1.0, label=label)
+    for stable, fill in ((1, colour), (0, "none")):
+        keep = [i for i, s in enumerate(d2["stable"]) if s == stable]
+        ax.plot([d2["f_mesh_hz"][i] for i in keep], [d2[y][i] for i in keep], ls="none", marker="o", ms=3.5,
+                color=colour, mfc=fill)
 
 
 def read_bifurcations(d_dir):
@@ -195,16 +251,20 @@ def bifurcation_marks(ax, bif):
                 mfc="none", ms=6, transform=ax.get_xaxis_transform(), clip_on=False, zorder=4)
 
 
-def stability_handles(d, bif):
-    """Legend entries: the line styles (if stability was computed) and the bifurcation kinds drawn."""
+def stability_handles(d, bif, doubled=()):
+    """Legend entries: the line styles present (if stability was computed; over the period-1 rows d
+    and the period-doubled branches' rows) and the bifurcation kinds drawn (of every branch)."""
     from matplotlib.lines import Line2D
     if not evaluated(d):
         return [Line2D([], [], ls="none", label="(no stability computed)")]
-    unstable = any(x == 0 for x in d["stable"])
-    return ([Line2D([], [], color="0.3", ls="-", label="stable (Floquet)" if unstable else "stable (Floquet) everywhere")] +
-            ([Line2D([], [], color="0.3", ls="--", label="unstable (Floquet)")] if unstable else []) +
+    flags = list(d["stable"]) + [x for _, _, d2 in doubled for x in d2["stable"]]
+    stable, unstable = any(x == 1 for x in flags), any(x == 0 for x in flags)
+    return (([Line2D([], [], color="0.3", ls="-", label="stable (Floquet)" if unstable else "stable (Floquet) everywhere")]
+             if stable else []) +
+            ([Line2D([], [], color="0.3", ls="--", label="unstable (Floquet)" if stable else "unstable (Floquet) everywhere")]
+             if unstable else []) +
             [h for h in bifurcation_handles([k for k in BIFURCATION_MARKERS if k in bif["type"]])
-             if not h.set_label(h.get_label() + " (above the axes)")])
+             if not h.set_label(h.get_label() + (" (above the axes; of every branch)" if doubled else " (above the axes)"))])
 
 
 def contact_on_curve(ax, d, y, column, colour):
@@ -223,7 +283,7 @@ def contact_on_curve(ax, d, y, column, colour):
 
 
 def meshes_figure(d_dir, params):
-    d = read_csv(d_dir / "response.csv")
+    d, doubled = read_response(d_dir)
     hz, N = d["f_mesh_hz"], params["planets"]
     fig, axes = plt.subplots(2, 1, figsize=(7.6, 7.0), sharex=True)
     bif = read_bifurcations(d_dir)
@@ -232,20 +292,24 @@ def meshes_figure(d_dir, params):
             y = "dynamic_factor_%s_%d" % (kind, n + 1)
             contact_on_curve(ax, d, y, "contact_%s_%d" % (kind, n + 1), "C%d" % n)
             curve(ax, d, y, "C%d" % n, "planet %d" % (n + 1))
+            for bid, period, d2 in doubled:
+                contact_on_curve(ax, d2, y, "contact_%s_%d" % (kind, n + 1), "C%d" % n)
+                doubled_curve(ax, d2, y, "C%d" % n)
         bifurcation_marks(ax, bif)
         ax.set_ylabel("%s-planet meshes: K_v" % kind)
         ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8, title="mesh of", title_fontsize=8)
     from matplotlib.patches import Patch
-    seen = {c for k in ("sun", "ring") for n in range(N) for c in d["contact_%s_%d" % (k, n + 1)]}
+    seen = {c for rows in [d] + [d2 for _, _, d2 in doubled] for k in ("sun", "ring") for n in range(N)
+            for c in rows["contact_%s_%d" % (k, n + 1)]}
     classes = [(c, text) for c, text in (("drive_loss", "drive flank loses contact"), ("back_impact", "back flank hits"),
                                          ("drive_loss+back_impact", "both")) if c in seen]
-    axes[1].legend(handles=stability_handles(d, bif) +
+    axes[1].legend(handles=stability_handles(d, bif, doubled) + doubled_handles(doubled) +
                    [Patch(color=CONTACT_COLOURS[RUG_STATE[c]], alpha=0.55, label=text) for c, text in classes] +
                    [Patch(color="white", ec="0.6", label="no stroke: full contact" if classes
                           else "full contact everywhere (no stroke)")],
                    loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
                    title="stability; contact class:\na broad stroke under\nthe mesh's own curve", title_fontsize=8)
-    axes[1].set_xlabel("mesh frequency [Hz] (sun speed relative to the carrier: 60 f / z_s rpm)")
+    axes[1].set_xlabel("mesh frequency [Hz]\n(sun speed relative to the carrier: 60 f / z_s rpm)")
     back = params["mesh"].get("sun_planet_backlash", params["mesh"].get("ring_planet_backlash"))
     alike = all(abs(d["dynamic_factor_%s_%d" % (k, n + 1)][i] - d["dynamic_factor_%s_1" % k][i]) < 5e-3
                 for k in ("sun", "ring") for n in range(N) for i in range(len(hz)))
@@ -258,22 +322,34 @@ def meshes_figure(d_dir, params):
     return save(fig, d_dir / "meshes.png")
 
 
+def doubled_handles(doubled):
+    """Legend entry of the period-doubled branches' style (none without them)."""
+    from matplotlib.lines import Line2D
+    periods = sorted({period for _, period, _ in doubled})
+    return [Line2D([], [], color="0.3", ls=":", marker="o", ms=3.5, mfc="none",
+                   label="period-%s branches: dotted, points\n(hollow: unstable), over %s mesh periods"
+                   % ("/".join(map(str, periods)), "/".join(map(str, periods))))] if doubled else []
+
+
 def load_sharing_figure(d_dir, params):
-    d = read_csv(d_dir / "response.csv")
+    d, doubled = read_response(d_dir)
     N = params["planets"]
     errors = params.get("planet", {}).get("pin_errors")
     fig, ax = plt.subplots(figsize=(7.0, 4.2))
     for n in range(N):
         label = "planet %d" % (n + 1) + ("" if errors is None else ", pin error %g um" % (1e6 * errors[n]))
         curve(ax, d, "load_sharing_planet_%d" % (n + 1), "C%d" % n, label)
+        for _, _, d2 in doubled:
+            doubled_curve(ax, d2, "load_sharing_planet_%d" % (n + 1), "C%d" % n)
     ax.axhline(1.0, color="0.6", lw=0.8, ls=":")
     ax.set_xlabel("mesh frequency [Hz]")
     ax.set_ylabel("planet load-sharing factor L_n")
-    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    ax.legend(handles=ax.get_legend_handles_labels()[0] + doubled_handles(doubled),
+              loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     stability = ("no stability computed" if not evaluated(d) else
                  "dashed where unstable" if any(x == 0 for x in d["stable"]) else "stable everywhere (Floquet)")
-    ax.set_title("%s: L_n = N max F_sn / sum_m max F_sm\n(F_sn the drive-flank force of sun-planet mesh n over the period;"
-                 " %s)" % (params.get("name", "planetary set"), stability), fontsize=9)
+    ax.set_title("%s:\nL_n = N max F_sn / sum_m max F_sm (F_sn the drive-flank force\nof sun-planet mesh n over the period;"
+                 " %s)" % (params.get("name", "planetary set"), stability), fontsize=9, loc="left")
     return save(fig, d_dir / "load_sharing.png")
 
 

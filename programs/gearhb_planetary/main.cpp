@@ -25,10 +25,17 @@
 // model at the mesh's static load, the ring-planet mesh's by the potential energy of an
 // internal tooth (or ISO 6336-1 for internal gears: mesh.ring_planet_stiffness).
 //
+// At each period doubling located on the curve a period-2 branch is switched to and followed
+// as the pair programs do (hb/period_doubling.hpp; tools/planetary_sweep.hpp: the meshes'
+// stiffness varies, so the switch's eigen-solution and the branch's multipliers come from the
+// variational equation about the HB orbit), to the file's period_doubling.depth; response.csv
+// holds every branch in the one schema (app/schema.hpp), bifurcations.csv every branch's events.
+//
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
 // written; it computes the stiffnesses from the teeth), natural_frequencies, mode_shapes,
-// campbell, mesh_stiffness, response (loaded_model, response_curve, stability with
-// bifurcations.csv, response_table, response_key_numbers), draw.
+// campbell, mesh_stiffness, response (loaded_model, response_curve, stability,
+// doubled_branches, response_table, bifurcations_table, response_key_numbers,
+// any_motion_key_numbers), draw.
 //
 // Sample runs:
 //   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --out /tmp/lp
@@ -46,11 +53,13 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/core/units.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/tools/planetary_file.hpp"
 #include "gearhb/tools/planetary_stiffness.hpp"
@@ -85,16 +94,28 @@ class PlanetarySetFromFile {
   void mode_shapes(Run& run, const std::vector<PlanetaryMode>& modes) const;
   void campbell(Run& run) const;
   void mesh_stiffness(Run& run) const;
+  // The response: the period-1 curve and the period-doubled branches switched at its PDs.
+  struct Response {
+    FrequencyCurve curve;
+    std::vector<PointMeasures> measures;                      // per point of curve
+    std::vector<PeriodDoubledBranch> doubled;                 // period 2 (4: period_doubling.depth 2)
+    std::vector<std::vector<PointMeasures>> doubled_measures; // per branch (empty: no points)
+  };
   void response(Run& run) const;
   HarmonicBalance loaded_model() const;
   FrequencyCurve response_curve(Run& run, const HarmonicBalance& hb, SweepOptions& o) const;
   void stability(Run& run, const HarmonicBalance& hb, const SweepOptions& o, FrequencyCurve& c) const;
-  std::vector<PointMeasures> measures(const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  Table response_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<bool>& evaluated,
-                       const std::vector<PointMeasures>& m) const;
+  void doubled_branches(Run& run, const HarmonicBalance& hb, SweepOptions o, const std::vector<double>& F0,
+                        Response& r) const;
+  std::vector<PointMeasures> measures(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                      const std::vector<double>& F0) const;
+  Table curve_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<PointMeasures>& m,
+                    const BranchLabel& label) const;
+  Table response_table(const HarmonicBalance& hb, const Response& r) const;
+  Table bifurcations_table(const Response& r) const;
   Table sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<bool>& evaluated,
-                            const std::vector<PointMeasures>& m) const;
+  void response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<PointMeasures>& m) const;
+  void any_motion_key_numbers(Run& run, const Response& r, const SweepOptions& o) const;
   void draw(Run& run) const;
 };
 
@@ -229,17 +250,22 @@ void PlanetarySetFromFile::mesh_stiffness(Run& run) const {
   run.say(file_.name + ": " + line);
 }
 
-// Step 4 (with `response`): the set under load over the mesh frequency.
+// Step 4 (with `response`): the set under load over the mesh frequency, and the period-doubled
+// branches switched at its period doublings.
 void PlanetarySetFromFile::response(Run& run) const {
   const HarmonicBalance hb = loaded_model();
   SweepOptions o;
-  FrequencyCurve c = response_curve(run, hb, o);
-  stability(run, hb, o, c);
-  const std::vector<bool> evaluated(c.branch.points.size(), file_.response.stability);
-  const std::vector<PointMeasures> m = measures(hb, c);
-  run.write("response.csv", response_table(hb, c, evaluated, m));
-  run.write("sun_harmonics.csv", sun_harmonics_table(hb, c));
-  response_key_numbers(run, c, evaluated, m);
+  Response r;
+  r.curve = response_curve(run, hb, o);
+  stability(run, hb, o, r.curve);
+  const std::vector<double> F0 = planetary_static_mesh_forces(hb, file_.set.planets());
+  r.measures = measures(hb, r.curve, F0);
+  doubled_branches(run, hb, o, F0, r);
+  run.write("response.csv", response_table(hb, r));
+  if (file_.response.stability) run.write("bifurcations.csv", bifurcations_table(r));
+  run.write("sun_harmonics.csv", sun_harmonics_table(hb, r.curve));
+  response_key_numbers(run, r.curve, r.measures);
+  any_motion_key_numbers(run, r, o);
 }
 
 // The loaded set (planetary_file.hpp planetary_response_model): the output held by its
@@ -259,16 +285,14 @@ FrequencyCurve PlanetarySetFromFile::response_curve(Run& run, const HarmonicBala
 
 // The Floquet multipliers of every point and the bifurcations between them, as the pair
 // programs' sweep (tools/planetary_sweep.hpp: the variational multipliers about the HB
-// orbit, no narrow-band search; why, and the cost). response.stability = 0 skips it.
+// orbit, no narrow-band search; why, and the cost). response.stability = 0 skips it (the
+// curve's stability stays `none`: its stable and Floquet cells are empty).
 void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, const SweepOptions& o, FrequencyCurve& c) const {
-  c.stable.assign(c.branch.points.size(), true);
-  c.floquet.assign(c.branch.points.size(), PointFloquet{});
   if (!file_.response.stability) return;
   c.stable.clear();
   c.floquet.clear();
   c.stability = StabilityMethod::floquet;
   run.timed("stability", [&] { analyse_stability(hb, planetary_stability_options(o), c); });
-  run.write("bifurcations.csv", bifurcation_table(c));
   std::map<BifurcationType, int> count;
   std::string where;
   for (const Bifurcation& b : c.bifurcations) {
@@ -285,11 +309,64 @@ void PlanetarySetFromFile::stability(Run& run, const HarmonicBalance& hb, const 
   run.say(file_.name + ": " + std::to_string(c.bifurcations.size()) + " bifurcations" + where);
 }
 
-// Every point's meshes over the period (planetary_mesh.hpp): K_v against each mesh's static
-// force, the flank states, and the planets' load-sharing factors.
-std::vector<PointMeasures> PlanetarySetFromFile::measures(const HarmonicBalance& hb, const FrequencyCurve& c) const {
+// Period-2 branches (and period 4 at period_doubling.depth 2) from the located period doublings
+// of the curve, switched as the pair programs switch them (tools/planetary_sweep.hpp
+// planetary_period_doubled_branches: hb/period_doubling.hpp over the same range, the stability of
+// their points by the same variational multipliers, over two mesh periods); each says in one line
+// where it starts and how it ends (a switch that fails: where and why; the rest of the run
+// stands), then where it is stable and its largest stable K_v; its points' meshes measured over
+// its period (F0: the period-1 set's static mesh forces). Key numbers period_doubled_branches and,
+// per branch k with points, branch_points_<k>, branch_stable_points_<k>, branch_pd_f_mesh_hz_<k> (the
+// PD it starts at), branch_start_f_mesh_hz_<k> (the period-2 model's branch point beside it),
+// branch_end_f_mesh_hz_<k>.
+void PlanetarySetFromFile::doubled_branches(Run& run, const HarmonicBalance& hb, SweepOptions o,
+                                            const std::vector<double>& F0, Response& r) const {
+  const auto& B = r.curve.bifurcations;
+  if (file_.period_doubling_depth < 1 ||
+      std::none_of(B.begin(), B.end(), [](const Bifurcation& b) { return b.type == BifurcationType::period_doubling; }))
+    return;
+  report_sweep_progress(run, o, file_.name + ": period 2");
+  r.doubled = run.timed("period-doubled branches", [&] {
+    return planetary_period_doubled_branches(hb, r.curve, o, file_.period_doubling_depth);
+  });
+  KeyNumbers& key = run.key_numbers();
+  key.add("period_doubled_branches", double(r.doubled.size()), "-");
+  for (std::size_t k = 0; k < r.doubled.size(); ++k) {
+    const PeriodDoubledBranch& b = r.doubled[k];
+    run.say(file_.name + ": " + b.why);
+    r.doubled_measures.push_back(has_points(b) ? measures(*b.model, b.curve, F0) : std::vector<PointMeasures>{});
+    if (!has_points(b)) continue;
+    // branch k + 1: its points, the stable ones, where it starts (the period-2 model's branch
+    // point beside the PD) and where it ends [forcing mesh frequency, Hz]
+    const std::string id = std::to_string(k + 1);
+    key.add("branch_points_" + id, double(b.curve.branch.points.size()), "-");
+    key.add("branch_stable_points_" + id, double(std::count(b.curve.stable.begin(), b.curve.stable.end(), true)), "-");
+    key.add("branch_pd_f_mesh_hz_" + id, hz(b.omega_start), "Hz");
+    key.add("branch_start_f_mesh_hz_" + id, hz(b.omega_branch_point), "Hz");
+    key.add("branch_end_f_mesh_hz_" + id, hz(b.omega_end), "Hz");
+    char part[160];
+    std::snprintf(part, sizeof part, ": period-%d branch %zu, %.1f to %.1f Hz:", b.period, k + 1, hz(b.omega_start),
+                  hz(b.omega_end));
+    std::string line = file_.name + part;
+    const Intervals st = stable_intervals(b.curve, b.period);
+    for (std::size_t j = 0; j < st.size(); ++j) {
+      std::snprintf(part, sizeof part, "%s %.1f-%.1f", j == 0 ? " stable at" : ",", hz(st[j].first), hz(st[j].second));
+      line += part;
+    }
+    double kv = 0.0;
+    for (std::size_t p = 0; p < b.curve.stable.size(); ++p)
+      for (const PlanetaryMeshOrbit& m : r.doubled_measures.back()[p].meshes)
+        if (b.curve.stable[p]) kv = std::max(kv, m.dynamic_factor);
+    std::snprintf(part, sizeof part, " Hz; largest stable K_v %.3f", kv);
+    run.say(st.empty() ? line + " unstable everywhere" : line + part);
+  }
+}
+
+// Every point's meshes over its period (planetary_mesh.hpp; hb the curve's model, of period 1 or
+// 2): K_v against each mesh's static force F0, the flank states, and the planets' load-sharing factors.
+std::vector<PointMeasures> PlanetarySetFromFile::measures(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                          const std::vector<double>& F0) const {
   const int N = file_.set.planets();
-  const std::vector<double> F0 = planetary_static_mesh_forces(hb, N);
   const std::vector<int> back = back_flank_contacts(file_.meshes, N);
   std::vector<PointMeasures> out;
   for (const BranchPoint& p : c.branch.points) {
@@ -301,35 +378,57 @@ std::vector<PointMeasures> PlanetarySetFromFile::measures(const HarmonicBalance&
   return out;
 }
 
-// response.csv: f_mesh_hz, sun_u_rms_um (AC RMS of the sun's rotation u_s), sun_xy_rms_um
-// (of its centre), stable and floquet_modulus (empty where not evaluated), per planet
-// load_sharing_planet_<n> (L_n, planet_load_sharing), and per mesh (sun_1..N, ring_1..N)
-// dynamic_factor_<mesh> (K_v: largest |drive - back force| over the static one) and
-// contact_<mesh> (full | drive_loss | back_impact | drive_loss+back_impact).
-Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                           const std::vector<bool>& evaluated, const std::vector<PointMeasures>& m) const {
-  const int N = file_.set.planets(), n = hb.dofs(), H = hb.harmonics();
-  std::vector<std::string> columns{"f_mesh_hz", "sun_u_rms_um", "sun_xy_rms_um", "stable", "floquet_modulus"};
-  for (int i = 0; i < N; ++i) columns.push_back("load_sharing_planet_" + std::to_string(i + 1));
-  for (int i = 0; i < 2 * N; ++i) columns.push_back("dynamic_factor_" + mesh_name(i, N));
-  for (int i = 0; i < 2 * N; ++i) columns.push_back("contact_" + mesh_name(i, N));
-  Table t(columns);
-  for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
-    const Eigen::VectorXd& X = c.branch.points[p].X;
-    double u2 = 0.0, xy2 = 0.0;
-    for (int k = 1; k <= 2 * H; ++k) {
-      u2 += 0.5 * std::pow(X(k * n + coordinate(Body::sun, 2)), 2);
-      xy2 += 0.5 * (std::pow(X(k * n + coordinate(Body::sun, 0)), 2) + std::pow(X(k * n + coordinate(Body::sun, 1)), 2));
-    }
-    std::vector<Table::Cell> row{c.branch.points[p].omega / (2.0 * M_PI), 1e6 * std::sqrt(u2), 1e6 * std::sqrt(xy2),
-                                 cell(evaluated[p], c.stable[p] ? 1.0 : 0.0), cell(evaluated[p], c.floquet[p].modulus)};
-    for (double L : m[p].load_sharing) row.emplace_back(L);
-    for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(o.dynamic_factor);
-    for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(std::string(to_string(mesh_contact(o.drive, o.back))));
-    t.add_row(std::move(row));
+// The worst contact class over the meshes (the `contact` column): drive_loss+back_impact if some
+// mesh loses its drive flank and some (other) mesh's back flank hits, else whichever happens.
+std::string worst_contact(const PointMeasures& m) {
+  bool loss = false, impact = false;
+  for (const PlanetaryMeshOrbit& o : m.meshes) {
+    loss = loss || o.drive != ContactState::full;
+    impact = impact || o.back != ContactState::open;
   }
+  return loss && impact ? "drive_loss+back_impact" : loss ? "drive_loss" : impact ? "back_impact" : "full";
+}
+
+// The rows of one curve (app/schema.hpp): f_mesh_hz's frequency columns, the common columns of the
+// sun's rotation u_s (x, m), then the set's: sun_xy_rms_um (AC RMS of the sun centre's motion),
+// per planet load_sharing_planet_<n>, per mesh dynamic_factor_<mesh> and contact_<mesh>; `label`
+// its period and branch (a period-2 branch: hb its period-2 model).
+Table PlanetarySetFromFile::curve_table(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                        const std::vector<PointMeasures>& m, const BranchLabel& label) const {
+  const int N = file_.set.planets(), n = hb.dofs(), H = hb.harmonics();
+  std::vector<std::string> extra{"sun_xy_rms_um"};
+  for (int i = 0; i < N; ++i) extra.push_back("load_sharing_planet_" + std::to_string(i + 1));
+  for (int i = 0; i < 2 * N; ++i) extra.push_back("dynamic_factor_" + mesh_name(i, N));
+  for (int i = 0; i < 2 * N; ++i) extra.push_back("contact_" + mesh_name(i, N));
+  return frequency_response_table(
+      hb, c, Eigen::VectorXd::Unit(n, coordinate(Body::sun, 2)), extra,
+      [&](std::size_t p) {
+        const Eigen::VectorXd& X = c.branch.points[p].X;
+        double xy2 = 0.0;
+        for (int k = 1; k <= 2 * H; ++k)
+          xy2 += 0.5 * (std::pow(X(k * n + coordinate(Body::sun, 0)), 2) + std::pow(X(k * n + coordinate(Body::sun, 1)), 2));
+        std::vector<Table::Cell> row{1e6 * std::sqrt(xy2)};
+        for (double L : m[p].load_sharing) row.emplace_back(L);
+        for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(o.dynamic_factor);
+        for (const PlanetaryMeshOrbit& o : m[p].meshes) row.emplace_back(std::string(to_string(mesh_contact(o.drive, o.back))));
+        return row;
+      },
+      [&](std::size_t p) { return worst_contact(m[p]); }, {}, label, {FrequencyAxis::mesh});
+}
+
+// response.csv: the period-1 curve (period 1, branch 0), then each period-doubled branch with
+// points (period 2 or 4, branch k), as the pair programs write them.
+Table PlanetarySetFromFile::response_table(const HarmonicBalance& hb, const Response& r) const {
+  Table t = curve_table(hb, r.curve, r.measures, {});
+  for (std::size_t k = 0; k < r.doubled.size(); ++k)
+    if (has_points(r.doubled[k]))
+      t.append(curve_table(*r.doubled[k].model, r.doubled[k].curve, r.doubled_measures[k],
+                           BranchLabel{r.doubled[k].period, int(k) + 1}));
   return t;
 }
+
+// bifurcations.csv: the curve's, then each branch's (period, branch, starts_branch: app/tables.hpp).
+Table PlanetarySetFromFile::bifurcations_table(const Response& r) const { return bifurcation_table(r.curve, r.doubled); }
 
 // sun_harmonics.csv: the harmonic content of the sun's motion, one row per point and mesh
 // harmonic l: f_mesh_hz, harmonic, u_um (amplitude of the rotation u_s), xy_um (of the centre,
@@ -360,9 +459,10 @@ Table PlanetarySetFromFile::sun_harmonics_table(const HarmonicBalance& hb, const
 // The curve's key numbers: points, the largest dynamic factor and where, the points with a
 // drive-flank loss or a back-flank impact on some mesh and the lowest such mesh frequencies,
 // the largest load-sharing factor and where, the stability evaluated.
-void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<bool>& evaluated,
+void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& c,
                                                 const std::vector<PointMeasures>& m) const {
   KeyNumbers& key = run.key_numbers();
+  const bool evaluated = c.stability != StabilityMethod::none;
   double kv_max = 0.0, kv_hz = 0.0, ls_max = 0.0, ls_hz = 0.0, first_loss = NAN, first_impact = NAN;
   int loss_points = 0, impact_points = 0, checked = 0, unstable = 0;
   for (std::size_t p = 0; p < c.branch.points.size(); ++p) {
@@ -379,8 +479,8 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
     impact_points += impact ? 1 : 0;
     if (loss && !(hz >= first_loss)) first_loss = hz;
     if (impact && !(hz >= first_impact)) first_impact = hz;
-    checked += evaluated[p] ? 1 : 0;
-    unstable += evaluated[p] && !c.stable[p] ? 1 : 0;
+    checked += evaluated ? 1 : 0;
+    unstable += evaluated && !c.stable[p] ? 1 : 0;
   }
   key.add("response_points", double(c.branch.points.size()), "-");
   key.add("dynamic_factor_max", kv_max, "-");
@@ -405,6 +505,34 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
                         : "Floquet at " + std::to_string(checked) + " points, " + std::to_string(unstable) + " unstable"));
 }
 
+// Issue 34 §4, as gearhb_gear's: the largest K_v of the motion that exists (max_kv_any_motion:
+// over the meshes of every stable period-1 and period-2 (4) point, 0 where none is stable;
+// max_kv_any_motion_from: the period of the orbit that gave it, absent then) and any_motion_complete (0 where a mesh frequency has no
+// stable orbit of any period computed: its motion unknown, not counted); the ranges with no
+// stable period-1 orbit are the stability step's unstable_period1_* keys. With stability only.
+void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, const SweepOptions& o) const {
+  if (r.curve.stability == StabilityMethod::none) return;
+  double kv = 0.0;
+  int from = 1;
+  auto take = [&](const FrequencyCurve& c, const std::vector<PointMeasures>& m, int period) {
+    for (std::size_t p = 0; p < c.stable.size(); ++p)
+      for (const PlanetaryMeshOrbit& mesh : m[p].meshes)
+        if (c.stable[p] && mesh.dynamic_factor > kv) kv = mesh.dynamic_factor, from = period;
+  };
+  take(r.curve, r.measures, 1);
+  Intervals stable = stable_intervals(r.curve);
+  for (std::size_t b = 0; b < r.doubled.size(); ++b) {
+    if (!has_points(r.doubled[b])) continue;
+    take(r.doubled[b].curve, r.doubled_measures[b], r.doubled[b].period);
+    const Intervals more = stable_intervals(r.doubled[b].curve, r.doubled[b].period);
+    stable.insert(stable.end(), more.begin(), more.end());
+  }
+  KeyNumbers& key = run.key_numbers();
+  key.add("max_kv_any_motion", kv, "-");   // 0: no stable orbit of any computed period
+  if (kv > 0.0) key.add("max_kv_any_motion_from", double(from), "-");
+  key.add("any_motion_complete", uncovered(o.omega_min, o.omega_max, stable).empty() ? 1.0 : 0.0, "-");
+}
+
 // Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
 void PlanetarySetFromFile::draw(Run& run) const {
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/gearhb_planetary.py",
@@ -419,7 +547,8 @@ int main(int argc, char** argv) {
               "  M q'' + (K_b + K_m) q = 0, three DOFs per body in the carrier frame\n"
               "Writes DIR/modes.csv (frequency_hz, mode_type, multiplicity), mode_shapes.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv and modes.png; with `response`\n"
-              "response.csv, sun_harmonics.csv, bifurcations.csv (response.stability 1: every point's stability).\n\n" +
+              "response.csv (every branch: period, branch), sun_harmonics.csv, bifurcations.csv (response.stability 1:\n"
+              "every point's stability; period-2 branches switched at its period doublings).\n\n" +
                   planetary_file_help());
   PlanetarySetFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -12,6 +12,9 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/core/linear_dynamics.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
+#include "gearhb/hb/continuation.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
@@ -229,4 +232,121 @@ TEST(PeriodDoubling, BilinearBranchEndsAtTheOtherDoublingNotOnThePeriodOneBranch
     for (const auto& p : P) largest = std::max(largest, odd_norm(b, p));
     for (std::size_t k = 1; k + 1 < P.size(); ++k) EXPECT_GT(odd_norm(b, P[k]), 1e-6 * largest) << b.why << ", point " << k;
   }
+}
+
+namespace {
+// The bilinear oscillator of the test above at H harmonics, swept over 0.5-3.5.
+struct BilinearPd {
+  HarmonicBalance hb;
+  SweepOptions o;
+  FrequencyCurve c;
+  explicit BilinearPd(int H)
+      : hb(LinearSystem{Eigen::MatrixXd::Identity(1, 1), 0.02 * Eigen::MatrixXd::Identity(1, 1),
+                        Eigen::MatrixXd::Identity(1, 1)},
+           {UnilateralContact{Eigen::VectorXd::Ones(1), 1.0, 0.0, {}}},
+           Excitation{Eigen::VectorXd::Zero(1), 0.01 * Eigen::VectorXd::Ones(1), Eigen::VectorXd::Zero(1)}, H) {
+    o.omega_min = 0.5;
+    o.omega_max = 3.5;
+    o.stability = StabilityMethod::floquet;
+    c = sweep_frequency(hb, o, "bilinear");
+  }
+};
+}  // namespace
+
+TEST(PeriodDoubling, BilinearBranchEndsAtTheDoublingOnItsChordAtLowHarmonics) {
+  // The same oscillator at H = 3. Its PDs are those of the exact orbit (Floquet on the corrected
+  // orbit: the model has no gap harmonics, so the exact flow does not depend on H): the same as at
+  // H = 10 to 1e-6. The period-2 model's own branch points (where its HB branch meets the
+  // period-1 branch) lie beside them by the truncation error, at H = 3 1.6e-3 and 1.4e-3
+  // (relative) from 0.74434 and 0.79811: farther than the 1e-3 window the end was matched with
+  // before, so the branch from 0.74434 "merged where no PD was located" and 0.79811 was switched
+  // again (the same branch walked back). The end is now matched by the chord of the period-1
+  // branch where the period-2 branch meets it.
+  const BilinearPd ten(10), three(3);
+  ASSERT_TRUE(three.c.complete) << three.c.failure;
+  std::vector<double> pd3, pd10;
+  for (const auto& b : three.c.bifurcations)
+    if (b.type == BifurcationType::period_doubling) pd3.push_back(b.omega);
+  for (const auto& b : ten.c.bifurcations)
+    if (b.type == BifurcationType::period_doubling) pd10.push_back(b.omega);
+  ASSERT_EQ(pd3.size(), 4u);
+  ASSERT_EQ(pd10.size(), 4u);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(pd3[k], pd10[k], 1e-6);
+  const auto br = period_doubled_branches(three.hb, three.c, three.o);
+  ASSERT_EQ(br.size(), 2u);   // one branch per resonance: each end's PD is not switched again
+  for (const PeriodDoubledBranch& b : br) {
+    ASSERT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+    ASSERT_GE(b.to, 0) << b.why;
+    EXPECT_EQ(b.why.find("no PD"), std::string::npos) << b.why;
+    const double w_to = three.c.bifurcations[std::size_t(b.to)].omega;
+    EXPECT_LT(std::fabs(b.omega_end - b.omega_start), 0.6) << b.why;   // the two PDs of one resonance
+    EXPECT_NEAR(b.omega_end, w_to, 2e-3 * w_to) << b.why;   // the branch point beside that PD
+  }
+  EXPECT_NEAR(br[0].omega_start, pd10[0], 1e-6);
+  EXPECT_NEAR(three.c.bifurcations[std::size_t(br[0].to)].omega, pd10[1], 1e-6) << br[0].why;
+}
+
+TEST(PeriodDoubling, GearPairDoublingInTheStepOfANeimarkSackerIsLocatedAndEndsTheBranch) {
+  // ch. 6 Fig. 40's gear pair (6 DOF, Fi = 1e5 N m, Fa = 1e4, kc = 5e8 N/m, H = 10, the chapter's
+  // sweep). In one continuation step of its period-1 branch, 8959 -> 9189 rad/s, a complex pair
+  // of multipliers enters the unit circle (a Neimark-Sacker point at 9072) and a real multiplier
+  // leaves it through -1 (measured on the step: -0.955 at 9155, -1.017 at 9167): the number
+  // outside goes 2 -> 1, and the sweep located only the first change, so the period-2 branch
+  // switched at the next PD (9290) merged at 9164.7 "where no PD was located". Now the PD is
+  // located (the parity of the real multipliers below -1 changes on the step), checked against
+  // GSL's variational monodromy (rk8pd on the original model, independent of the exact-flow
+  // exponentials), and the branch from 9290 ends at it.
+  GearPairParameters g;
+  Eigen::VectorXd fc(6);
+  fc << 1e4, 0, 1e4, 1e4, 0, 1e4;
+  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
+                           Excitation{gear_pair_static_torque(g, 1e5), fc, Eigen::VectorXd::Zero(6)}, 10);
+  SweepOptions o;
+  o.omega_min = 2000;
+  o.omega_max = 62000;
+  o.continuation.ds_max = 0.005;
+  o.continuation.tolerance = 1e-9;
+  o.continuation.ds_min = 1e-8;
+  const FrequencyCurve c = sweep_frequency(hb, o, "fig40");
+  ASSERT_TRUE(c.complete) << c.failure;
+  int found = -1, next = -1;
+  for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
+    const Bifurcation& b = c.bifurcations[k];
+    if (b.type != BifurcationType::period_doubling) continue;
+    if (b.omega > 9150 && b.omega < 9170) found = int(k);
+    if (std::fabs(b.omega - 9290.07) < 0.1) next = int(k);
+  }
+  ASSERT_GE(found, 0) << "no PD located between 9150 and 9170 rad/s";
+  ASSERT_GE(next, 0);
+  const Bifurcation& pd = c.bifurcations[std::size_t(found)];
+  EXPECT_TRUE(pd.smooth);
+  EXPECT_NEAR(pd.multiplier.real(), -1.0, 1e-6);
+  // GSL: the most negative real multiplier above -1 just below the PD, below -1 just above it
+  const auto& P = c.branch.points;
+  const BranchPoint &a = P[std::size_t(pd.after_point)], &z = P[std::size_t(pd.after_point) + 1];
+  TimeIntegrator ti(hb);
+  TimeIntegrationOptions to;
+  to.x_scale = c.scaling.x[0];
+  for (const double dw : {-3.0, 3.0}) {
+    const double t = (pd.omega + dw - a.omega) / (z.omega - a.omega);
+    const BranchPoint q = point_on_chord(hb, a, z, c.scaling, t, 1e-9);
+    const FloquetResult fl = floquet_of_hb_orbit(hb, q.X, q.omega, c.scaling.x[0]);
+    ASSERT_TRUE(fl.corrected) << q.omega;
+    const Eigen::VectorXcd mu = general_eigenvalues(ti.monodromy(fl.x0, fl.v0, q.omega, to), "GSL monodromy");
+    double most_negative = 0.0;
+    for (Eigen::Index i = 0; i < mu.size(); ++i)
+      if (std::fabs(mu[i].imag()) < 1e-9) most_negative = std::min(most_negative, mu[i].real());
+    if (dw < 0) EXPECT_GT(most_negative, -1.0) << "omega " << q.omega;
+    else EXPECT_LT(most_negative, -1.0) << "omega " << q.omega;
+  }
+  // the period-2 branch switched at 9290 alone ends at the located PD
+  FrequencyCurve one = c;
+  one.bifurcations.clear();
+  for (int k : {found, next}) one.bifurcations.push_back(c.bifurcations[std::size_t(k)]);
+  std::swap(one.bifurcations[0], one.bifurcations[1]);   // switch at 9290 first
+  const auto br = period_doubled_branches(hb, one, o);
+  ASSERT_FALSE(br.empty());
+  EXPECT_EQ(br[0].end, PeriodDoubledBranch::End::merged) << br[0].why;
+  EXPECT_EQ(br[0].to, 1) << br[0].why;
+  EXPECT_NEAR(br[0].omega_end, pd.omega, 5.0) << br[0].why;
 }

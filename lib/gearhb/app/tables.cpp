@@ -44,7 +44,10 @@ std::vector<Table::Cell> common_row(const ResponseEvaluator& ev, const Frequency
   const auto r = ev.summarize(P[i].X);
   const bool fl = c.floquet.size() == P.size();
   std::vector<Table::Cell> row = frequency_cells(layout.axis, label.period * P[i].omega, layout.teeth_1);
-  row.insert(row.end(), {r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, long(c.stable[i] ? 1 : 0),
+  // stable: empty where the curve has no stability (StabilityMethod::none: all flags true)
+  const Table::Cell stable =
+      c.stability == StabilityMethod::none ? Table::Cell(std::string()) : Table::Cell(long(c.stable[i] ? 1 : 0));
+  row.insert(row.end(), {r.x_max, r.x_min, r.x_rms_ac, r.x_h1, r.x_mean, stable,
                                contact.empty() ? std::string(to_string(r.contact)) : contact,
                                cell(fl, fl ? c.floquet[i].modulus : 0.0), cell(fl, fl ? c.floquet[i].angle : 0.0),
                                // NaN where no corrected orbit exists (a time-varying stiffness)

@@ -342,74 +342,94 @@ struct SecondOrderContext {
   const Eigen::MatrixXd* C;
   int n;
   Eigen::MatrixXd Bt;
+  int cols = 0;   // columns of the state Y carried
 };
-// Y = [X; V] (2n x 2n, column-major): X' = V, V' = -B(t) X - C V.
+// Y = [X; V] (2n x cols, column-major): X' = V, V' = -B(t) X - C V.
 int second_order_rhs(double t, const double y[], double dydt[], void* params) {
   auto* c = static_cast<SecondOrderContext*>(params);
   (*c->B)(t, c->Bt);
   const int n = c->n;
-  Eigen::Map<const Eigen::MatrixXd> Y(y, 2 * n, 2 * n);
-  Eigen::Map<Eigen::MatrixXd> dY(dydt, 2 * n, 2 * n);
+  Eigen::Map<const Eigen::MatrixXd> Y(y, 2 * n, c->cols);
+  Eigen::Map<Eigen::MatrixXd> dY(dydt, 2 * n, c->cols);
   dY.topRows(n) = Y.bottomRows(n);
   dY.bottomRows(n).noalias() = -c->Bt * Y.topRows(n);
   dY.bottomRows(n).noalias() -= *c->C * Y.bottomRows(n);
   return GSL_SUCCESS;
 }
 
-// The monodromy matrix of the second-order variational equation x'' = -B(t) x - C x' over
-// [0, T] in the state [x; v], as monodromy_linear_periodic on A = [0 I; -B -C] (the same
-// GSL rk8pd, tolerances and breakpoints) at half its cost a step: the zero and identity
-// blocks of A are not multiplied.
-Eigen::MatrixXd monodromy_second_order(const std::function<void(double, Eigen::MatrixXd&)>& B, const Eigen::MatrixXd& C,
-                                       double T, const std::vector<double>& breakpoints, double tol) {
-  const int n = int(C.rows());
-  SecondOrderContext ctx{&B, &C, n, Eigen::MatrixXd::Zero(n, n)};
-  Eigen::MatrixXd Y = Eigen::MatrixXd::Identity(2 * n, 2 * n);
+// Y0 (2n x cols, the state [x; v] of each column) carried over [0, T] by the second-order
+// variational equation x'' = -B(t) x - C x' (GSL rk8pd, relative and absolute tolerance tol;
+// a fresh driver at every breakpoint, where B may jump, and at every sample time), half the
+// cost of a first-order step on A = [0 I; -B -C]: its zero and identity blocks are not
+// multiplied. `samples` (ascending, in [0, T)): the x rows of Y there, side by side into *xs.
+Eigen::MatrixXd second_order_march(const std::function<void(double, Eigen::MatrixXd&)>& B, const Eigen::MatrixXd& C,
+                                   Eigen::MatrixXd Y, double T, const std::vector<double>& breakpoints, double tol,
+                                   const std::vector<double>& samples = {}, Eigen::MatrixXd* xs = nullptr) {
+  const int n = int(C.rows()), cols = int(Y.cols());
+  SecondOrderContext ctx{&B, &C, n, Eigen::MatrixXd::Zero(n, n), cols};
   std::vector<double> ends;
   for (double b : breakpoints)
     if (b > 0.0 && b < T) ends.push_back(b);
+  for (double s : samples)
+    if (s > 0.0 && s < T) ends.push_back(s);
   std::sort(ends.begin(), ends.end());
   ends.push_back(T);
-  gsl_odeiv2_system sys{second_order_rhs, nullptr, std::size_t(2 * n) * std::size_t(2 * n), &ctx};
+  if (xs) xs->resize(n, Eigen::Index(samples.size()) * cols);
+  std::size_t next = 0;   // the next sample to record
+  auto record = [&](double t) {
+    for (; xs && next < samples.size() && samples[next] <= t; ++next)
+      xs->middleCols(Eigen::Index(next) * cols, cols) = Y.topRows(n);
+  };
+  gsl_odeiv2_system sys{second_order_rhs, nullptr, std::size_t(2 * n) * std::size_t(cols), &ctx};
   double t = 0.0;
+  record(t);
   for (double t1 : ends) {
-    if (!(t1 > t)) continue;   // equal breakpoints: no segment (as monodromy_linear_periodic)
+    // equal breakpoints (contacts that switch at the same instant, e.g. the in-phase meshes
+    // of a planetary set) leave no segment between them: GSL refuses a zero first step
+    if (!(t1 > t)) continue;
+    // a fresh driver per segment: the step history must not straddle a jump of B
     gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * (t1 - t), tol, tol);
-    if (d == nullptr) throw std::runtime_error("monodromy_second_order: GSL could not allocate the driver");
+    if (d == nullptr) throw std::runtime_error("second_order_march: GSL could not allocate the driver");
     const int status = gsl_odeiv2_driver_apply(d, &t, t1, Y.data());
     gsl_odeiv2_driver_free(d);
     if (status != GSL_SUCCESS)
-      throw std::runtime_error(std::string("monodromy_second_order: GSL driver failed at t = ") + std::to_string(t) +
+      throw std::runtime_error(std::string("second_order_march: GSL driver failed at t = ") + std::to_string(t) +
                                ": " + gsl_strerror(status));
+    record(t);
   }
   return Y;
 }
 
-}  // namespace
-
-FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
-                                        const FloquetOptions& opt) {
-  const int H = hb.harmonics();
-  const double T = 2.0 * M_PI / omega;
-  const auto& sys = hb.system();
-  const Eigen::MatrixXd Minv = sys.M.inverse();
-  // penetration coefficients of every contact on the HB orbit, and its switch times
-  std::vector<Eigen::VectorXd> u;
+// The variational equation about the HB orbit (X, omega) itself: B(t) = M^-1 (K + sum_i
+// kc_i(t) [u_i(t) > 0] n_i n_i'), u_i the HB penetration, its contact switches as breakpoints
+// (the vector field is continuous in x, so no saltation).
+struct HbVariationalEquation {
+  double T;
+  Eigen::MatrixXd MinvK, MinvC;
+  std::vector<Eigen::VectorXd> u, Minv_n;
   std::vector<double> breakpoints;
-  const Aft aft(H);
-  for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
-    Eigen::VectorXd uc = hb.penetration(X, i);
-    for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
-      if (b - a < 2.0 * M_PI)
-        for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / omega);
-    u.push_back(std::move(uc));
+  const HarmonicBalance& hb;
+  double omega;
+
+  HbVariationalEquation(const HarmonicBalance& hb_, const Eigen::VectorXd& X, double omega_)
+      : T(2.0 * M_PI / omega_), hb(hb_), omega(omega_) {
+    const auto& sys = hb.system();
+    const Eigen::MatrixXd Minv = sys.M.inverse();
+    // penetration coefficients of every contact on the HB orbit, and its switch times
+    const Aft aft(hb.harmonics());
+    for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
+      Eigen::VectorXd uc = hb.penetration(X, i);
+      for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
+        if (b - a < 2.0 * M_PI)
+          for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / omega);
+      u.push_back(std::move(uc));
+    }
+    // M^-1 K and M^-1 n_i once, the closed contacts' rank-one terms at each t
+    MinvK = Minv * sys.K;
+    MinvC = Minv * sys.C;
+    for (const auto& ct : hb.contacts()) Minv_n.push_back(Minv * ct.normal);
   }
-  // B(t) = M^-1 (K + sum_i kc_i(t) [u_i(t) > 0] n_i n_i'): M^-1 K and M^-1 n_i once, the
-  // closed contacts' rank-one terms at each t
-  const Eigen::MatrixXd MinvK = Minv * sys.K, MinvC = Minv * sys.C;
-  std::vector<Eigen::VectorXd> Minv_n;
-  for (const auto& ct : hb.contacts()) Minv_n.push_back(Minv * ct.normal);
-  auto B = [&](double t, Eigen::MatrixXd& out) {
+  void B(double t, Eigen::MatrixXd& out) const {
     const double th = omega * t;
     out = MinvK;
     for (std::size_t i = 0; i < u.size(); ++i) {
@@ -417,13 +437,32 @@ FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::
       const auto& ct = hb.contacts()[i];
       out.noalias() += stiffness_at(ct, th) * Minv_n[i] * ct.normal.transpose();
     }
-  };
+  }
+  Eigen::MatrixXd march(const Eigen::MatrixXd& Y0, double tol, const std::vector<double>& samples = {},
+                        Eigen::MatrixXd* xs = nullptr) const {
+    return second_order_march([this](double t, Eigen::MatrixXd& out) { B(t, out); }, MinvC, Y0, T, breakpoints, tol,
+                              samples, xs);
+  }
+};
+
+}  // namespace
+
+FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                        const FloquetOptions& opt) {
+  const HbVariationalEquation eq(hb, X, omega);
   FloquetResult r;
-  r.monodromy = monodromy_second_order(B, MinvC, T, breakpoints, opt.variational_tolerance);
+  r.monodromy = eq.march(Eigen::MatrixXd::Identity(2 * hb.dofs(), 2 * hb.dofs()), opt.variational_tolerance);
   r.orbit_error = NAN;   // the HB orbit is not corrected on this path
   hb_initial_state(hb, X, omega, r.x0, r.v0);
   set_multipliers(r, r.monodromy, opt, omega);
   return r;
+}
+
+Eigen::MatrixXd variational_solution(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                     const Eigen::VectorXd& y0, const std::vector<double>& nodes, double tol) {
+  Eigen::MatrixXd xs;
+  HbVariationalEquation(hb, X, omega).march(y0, tol, nodes, &xs);
+  return xs;
 }
 
 namespace {

@@ -198,6 +198,14 @@ FloquetResult floquet_of_hb_shooting_gsl(const HarmonicBalance& hb, const Eigen:
 FloquetResult floquet_of_hb_variational(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                                         const FloquetOptions& opt = {});
 
+// One solution of that variational equation about the HB orbit (X, omega): from y0 = (dx0,
+// dv0) at phase 0, dx at the times `nodes` (ascending, in [0, 2 pi / omega), 0 first; columns,
+// n x nodes), GSL rk8pd at relative and absolute tolerance `tol`, restarted at every contact
+// switch and node. The eigen-solution of a multiplier where no exact flow exists (a
+// time-varying contact stiffness; period_doubling.hpp's switch).
+Eigen::MatrixXd variational_solution(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
+                                     const Eigen::VectorXd& y0, const std::vector<double>& nodes, double tol);
+
 // Monodromy matrix of y' = A(t) y over [0, T] (dimension dim), from the identity,
 // by GSL rk8pd (relative and absolute tolerance `tol`), restarted at every
 // breakpoint in (0, T) where A(t) may be discontinuous. A(t, out) fills out (dim x dim).

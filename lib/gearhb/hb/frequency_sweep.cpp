@@ -437,6 +437,82 @@ void locate_crossings(const HarmonicBalance& hb, const SweepOptions& opt, double
   }
 }
 
+// The real multiplier below zero nearest -1 (in |log |mu||), NaN if none.
+std::complex<double> negative_real_nearest_minus_one(const FloquetResult& r) {
+  std::complex<double> best(NAN, NAN);
+  double d = INFINITY;
+  for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
+    const auto m = r.multipliers[i];
+    if (is_real(m) && m.real() < 0.0 && std::fabs(std::log(std::abs(m))) < d) d = std::fabs(std::log(std::abs(m))), best = m;
+  }
+  return best;
+}
+
+// Step 5b: the period doublings the count of step 5 misses. det(I + M) has the sign
+// (-1)^(real multipliers below -1) (a complex pair contributes |1 + mu|^2 > 0, a real multiplier
+// above -1 a positive factor), so it changes sign between two points exactly where an odd number
+// of real multipliers crossed -1, whatever else crossed in the same step. Step 5 sees a change
+// of the number outside the circle and locates one crossing: a period doubling in the same step
+// as a crossing the other way (count unchanged: a fold, the Kahraman-Singh oscillator near
+// Omega = 0.3148) or as a Neimark-Sacker pair (count 2 -> 1: ch. 6 Fig. 40 near 9.16 krad/s,
+// where a period-2 branch merged "where no PD was located") is not listed. Here every step whose
+// parity of real multipliers below -1 changes and that lists no period doubling gets one: the
+// change of that parity located on the chord as step 5 locates the count (indicator log |mu| of
+// the real multiplier below zero nearest -1), `smooth` as there (a multiplier that jumps across
+// -1, at a grazing orbit, gives smooth = 0). Costs nothing where no such step exists.
+void add_period_doublings_by_parity(const HarmonicBalance& hb, const SweepOptions& opt, double corrector_tolerance,
+                                    const std::vector<FloquetResult>& fr, FrequencyCurve& c) {
+  const auto& P = c.branch.points;
+  const std::size_t listed = c.bifurcations.size();
+  for (std::size_t i = 1; i < P.size(); ++i) {
+    if (c.floquet[i - 1].outside_real_negative % 2 == c.floquet[i].outside_real_negative % 2) continue;
+    bool has_pd = false;
+    for (std::size_t k = 0; k < listed; ++k)
+      has_pd = has_pd || (c.bifurcations[k].after_point == int(i) - 1 &&
+                          c.bifurcations[k].type == BifurcationType::period_doubling);
+    if (has_pd) continue;
+    report(opt, "bifurcations", c, i);
+    FloquetMemo memo(hb, c.scaling.x[0], opt.floquet);
+    memo.add(P[i - 1], fr[i - 1]);
+    memo.add(P[i], fr[i]);
+    // the multiplier below -1 of the last trial on the odd side: the one that crossed, where it
+    // jumps across -1 (the located point, on the even side, may have no real multiplier below 0)
+    std::complex<double> odd_side(NAN, NAN);
+    auto probe = [&memo, &opt, &c, i, &odd_side](const Eigen::VectorXd& X, double omega) {
+      const FloquetResult& r = memo.at(X, omega, [&] { report(opt, "bifurcations", c, i, omega); });
+      const int parity = point_floquet(r).outside_real_negative % 2;
+      const std::complex<double> m = negative_real_nearest_minus_one(r);
+      if (parity == 1) odd_side = m;
+      return StateProbe{parity, std::log(std::abs(m))};
+    };
+    // of the located point's and the odd side's real multiplier below 0, the one nearest -1
+    auto crossing = [&odd_side](const FloquetResult& r) {
+      const std::complex<double> m = negative_real_nearest_minus_one(r);
+      if (!std::isfinite(m.real())) return std::isfinite(odd_side.real()) ? odd_side : std::complex<double>(0.0);
+      if (!std::isfinite(odd_side.real())) return m;
+      return std::fabs(std::log(std::abs(m))) <= std::fabs(std::log(std::abs(odd_side))) ? m : odd_side;
+    };
+    Bifurcation bf;
+    bf.type = BifurcationType::period_doubling;
+    bf.after_point = int(i) - 1;
+    try {
+      const BranchPoint at = locate_state_change(hb, P[i - 1], P[i], c.scaling, probe, 1e-9, corrector_tolerance);
+      bf.omega = at.omega;
+      bf.X = at.X;
+      bf.multiplier = crossing(memo.at(at.X, at.omega));
+    } catch (const std::exception&) {
+      bf.located = false;
+      bf.omega = P[i].omega;
+      bf.multiplier = crossing(fr[i]);
+    }
+    bf.smooth = bf.located && std::fabs(std::abs(bf.multiplier) - 1.0) <= 1e-2;
+    c.bifurcations.push_back(bf);
+  }
+  if (c.bifurcations.size() > listed)
+    std::stable_sort(c.bifurcations.begin(), c.bifurcations.end(),
+                     [](const Bifurcation& a, const Bifurcation& b) { return a.after_point < b.after_point; });
+}
+
 }  // namespace
 
 FrequencyCurve sweep_frequency(const HarmonicBalance& hb, const SweepOptions& opt,
@@ -461,6 +537,7 @@ void analyse_stability(const HarmonicBalance& hb, const SweepOptions& opt, Frequ
   if (!opt.locate_bifurcations || opt.natural) return;
   const double tolerance = opt.continuation.tolerance;
   locate_crossings(hb, opt, tolerance, fr, c);
+  add_period_doublings_by_parity(hb, opt, tolerance, fr, c);
   const bool parametric = std::any_of(hb.contacts().begin(), hb.contacts().end(),
                                       [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
   if (opt.narrow_bands == BandSearch::always || (opt.narrow_bands == BandSearch::parametric && parametric)) {

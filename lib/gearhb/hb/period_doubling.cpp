@@ -110,21 +110,30 @@ Eigen::VectorXd critical_eigenvector(const HarmonicBalance& hb, const FloquetRes
   return e;
 }
 
-// The eigen-solution over one forcing period by central differences of the exact flow, and
-// its odd harmonics k of Omega = omega / 2 (Omega t_i = pi i / N; the antiperiodic extension
-// makes the integral over two periods twice that over one), on hbp's basis, unit norm.
-Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FloquetResult& fr,
-                                 const Eigen::VectorXd& e, double w, double xs, int N) {
+// The eigen-solution from e over one forcing period at the N nodes T i / N (columns): by central
+// differences of the exact flow from the corrected state +- delta e, or, on the variational
+// path (fr not corrected: a time-varying contact stiffness, or FloquetOptions::correct_orbit
+// false), by the variational equation about the HB orbit whose monodromy gave e.
+Eigen::MatrixXd eigen_solution(const HarmonicBalance& hb, const Eigen::VectorXd& X, const FloquetResult& fr,
+                               const Eigen::VectorXd& e, double w, double xs, int N, const FloquetOptions& fo) {
   const int n = hb.dofs();
   const double T = 2.0 * M_PI / w, delta = 1e-6 * xs;
   std::vector<double> nodes(static_cast<std::size_t>(N));
   for (int i = 0; i < N; ++i) nodes[std::size_t(i)] = T * i / N;
+  if (!fr.corrected) return variational_solution(hb, X, w, e, nodes, fo.variational_tolerance);
   PiecewiseLinearFlow flow(hb);
   Eigen::VectorXd xT, vT;
   Eigen::MatrixXd Phi, xp, xm;
   flow.period_map(fr.x0 + delta * e.head(n), fr.v0 + delta * e.tail(n), w, nodes, xT, vT, Phi, &xp);
   flow.period_map(fr.x0 - delta * e.head(n), fr.v0 - delta * e.tail(n), w, nodes, xT, vT, Phi, &xm);
-  const Eigen::MatrixXd D = (xp - xm) / (2.0 * delta);
+  return (xp - xm) / (2.0 * delta);
+}
+
+// The odd harmonics k of Omega = omega / 2 of the eigen-solution D at Omega t_i = pi i / N (the
+// antiperiodic extension makes the integral over two periods twice that over one), on hbp's
+// basis, unit norm.
+Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalance& hbp, const Eigen::MatrixXd& D) {
+  const int n = hb.dofs(), N = int(D.cols());
   Eigen::VectorXd phi = Eigen::VectorXd::Zero(hbp.size());
   for (int k = 1; k <= hbp.harmonics(); k += 2) {
     Eigen::VectorXd ck = Eigen::VectorXd::Zero(n), sk = Eigen::VectorXd::Zero(n);
@@ -180,8 +189,6 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
 
 SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
                                const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp) {
-  for (const auto& ct : hb.contacts())
-    if (ct.stiffness_profile) throw Failed("a time-varying contact stiffness has no exact flow for the eigen-solution");
   if (!bf.located || bf.X.size() != hb.size()) throw Failed("the PD was not located (a corrector failed on its chord)");
   // the located point itself (a point re-derived from omega on the chord misses it where the
   // branch turns within the chord: beside a fold)
@@ -189,9 +196,24 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   sp.at.X = bf.X;
   sp.at.omega = bf.omega;
   const double xs = c.scaling.x[0], w = sp.at.omega;
-  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, opt.floquet);
-  if (!fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
-  sp.phi_floquet = odd_harmonics_of(hb, hbp, fr, critical_eigenvector(hb, fr, w), w, xs, pdo.samples);
+  if (!bf.smooth) {
+    // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
+    std::ostringstream os;
+    os << "a non-smooth PD: a multiplier jumps across -1 (to " << bf.multiplier.real();
+    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
+    os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
+    throw Failed(os.str());
+  }
+  // the corrected orbit on the exact flow where there is one and the sweep corrects its orbits;
+  // else the variational equation about the HB orbit (its monodromy and eigen-solution)
+  bool profile = false;
+  for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
+  FloquetOptions fo = opt.floquet;
+  fo.correct_orbit = fo.correct_orbit && !profile;
+  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
+  if (fo.correct_orbit && !fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
+  const Eigen::VectorXd e = critical_eigenvector(hb, fr, w);
+  sp.phi_floquet = odd_harmonics_of(hb, hbp, eigen_solution(hb, sp.at.X, fr, e, w, xs, pdo.samples, fo));
   std::vector<int> odd;
   sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
   // its null vector by inverse iteration from the Floquet direction
@@ -355,42 +377,87 @@ struct Period2Continuation {
   }
 };
 
-// The PD of c other than the i-th nearest to the forcing frequencies [lo, hi], -1 where none lies
-// within 1e-3 hi of them (P: forcing frequency per c's omega).
-int nearest_pd(const FrequencyCurve& c, std::size_t i, double P, double lo, double hi) {
+// The merge point of a branch on hb's basis: a period-2 point whose odd harmonics vanish is the
+// period-1 orbit X1 (harmonic 2k of Omega -> k of omega), at c's omega 2 Omega.
+Eigen::VectorXd period1_part(const HarmonicBalance& hb, const HarmonicBalance& hbp, const Eigen::VectorXd& Xp) {
+  const int n = hb.dofs();
+  Eigen::VectorXd X = Eigen::VectorXd::Zero(hb.size());
+  X.head(n) = Xp.head(n);
+  for (int k = 1; k <= hb.harmonics() && 2 * k <= hbp.harmonics(); ++k) {
+    X.segment(hb.index(2 * k - 1, 0), n) = Xp.segment(hbp.index(4 * k - 1, 0), n);
+    X.segment(hb.index(2 * k, 0), n) = Xp.segment(hbp.index(4 * k, 0), n);
+  }
+  return X;
+}
+
+// Where on c a branch met it: the chord (points j, j + 1) of c nearest the period-1 orbit (X1, w)
+// in the scaled unknowns. Not the nearest omega: a branch with folds passes one omega several
+// times (ch. 6 Fig. 40: three times at 8654 rad/s, on chords with and without a PD).
+int nearest_chord(const FrequencyCurve& c, const Eigen::VectorXd& X1, double w) {
+  const auto& P = c.branch.points;
+  const Scaling& s = c.scaling;
+  auto scaled = [&s](const Eigen::VectorXd& X, double omega) {
+    Eigen::VectorXd z(X.size() + 1);
+    z.head(X.size()) = X.array() / s.x.array();
+    z[X.size()] = omega / s.omega;
+    return z;
+  };
+  const Eigen::VectorXd z = scaled(X1, w);
+  int best = -1;
+  double dmin = INFINITY;
+  for (std::size_t j = 0; j + 1 < P.size(); ++j) {
+    const Eigen::VectorXd a = scaled(P[j].X, P[j].omega), d = scaled(P[j + 1].X, P[j + 1].omega) - a;
+    const double t = d.squaredNorm() > 0.0 ? std::clamp((z - a).dot(d) / d.squaredNorm(), 0.0, 1.0) : 0.0;
+    const double dist = (z - a - t * d).norm();
+    if (dist < dmin) dmin = dist, best = int(j);
+  }
+  return best;
+}
+
+// The PD of c other than the i-th located on chord j of c or on a chord next to it (the period-2
+// model's branch point, where the HB branch meets c, lies beside the PD of the exact orbit by the
+// truncation error: ch. 6 Fig. 40 at H = 10, 19 rad/s from the PD at 8674.3 rad/s, 2.2e-3
+// relative; the bilinear oscillator at H = 3, 1.4e-3), the one nearest w; -1 where none.
+int pd_on_chord(const FrequencyCurve& c, std::size_t i, int j, double w) {
   int to = -1;
   double dmin = INFINITY;
   for (std::size_t k = 0; k < c.bifurcations.size(); ++k) {
-    const double w = P * c.bifurcations[k].omega, dk = std::max({lo - w, w - hi, 0.0});
-    if (c.bifurcations[k].type == BifurcationType::period_doubling && k != i && dk < dmin) dmin = dk, to = int(k);
+    const Bifurcation& bf = c.bifurcations[k];
+    if (bf.type != BifurcationType::period_doubling || k == i || std::abs(bf.after_point - j) > 1) continue;
+    if (std::fabs(bf.omega - w) < dmin) dmin = std::fabs(bf.omega - w), to = int(k);
   }
-  return dmin <= 1e-3 * std::fabs(hi) ? to : -1;
+  return to;
 }
 
 // The merge of a branch that crossed the period-1 branch: refined on its last chord (merge_point).
-void end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const FrequencyCurve& c,
-                     std::size_t i, double P) {
+// Returns the chord of c where it met c.
+int end_at_crossing(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& p2, const HarmonicBalance& hb,
+                    const FrequencyCurve& c, std::size_t i, double P) {
   try {
     b.points.back() = merge_point(p2.hbp, b.points[b.points.size() - 2], b.points.back(), p2.s, p2.prev_odd,
                                   p2.co.tolerance);
   } catch (const std::exception&) {
     b.points.pop_back();   // a corrector failed on the last chord: the branch ends before it
   }
-  r.omega_end = 2.0 * P * b.points.back().omega;
-  r.to = nearest_pd(c, i, P, r.omega_end, r.omega_end);
+  const BranchPoint& e = b.points.back();
+  r.omega_end = 2.0 * P * e.omega;
+  const int j = nearest_chord(c, period1_part(hb, p2.hbp, e.X), 2.0 * e.omega);
+  r.to = pd_on_chord(c, i, j, 2.0 * e.omega);
+  return j;
 }
 
 // The merge of a branch that joined the period-1 branch: its last point lies on that branch past
 // the merge and is dropped; the merge is the period-2 model's branch point beside the PD of c
-// nearest the last chord (where the switch would start a branch), or, where no PD was located
-// near it, the branch ends at the point before.
-void end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
-                 const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
-  const double wa = 2.0 * P * b.points[b.points.size() - 2].omega, wb = 2.0 * P * b.points.back().omega;
+// on the chord where it joined (where the switch would start a branch), or, where no PD was
+// located there, the branch ends at the point before. Returns the chord of c where it joined.
+int end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, const HarmonicBalance& hbp,
+                const FrequencyCurve& c, std::size_t i, const SweepOptions& opt, double P) {
+  const BranchPoint on = b.points.back();   // on the period-1 branch
   b.points.pop_back();
-  r.to = nearest_pd(c, i, P, std::min(wa, wb), std::max(wa, wb));
-  r.omega_end = wa;
-  if (r.to < 0) return;
+  const int j = nearest_chord(c, period1_part(hb, hbp, on.X), 2.0 * on.omega);
+  r.to = pd_on_chord(c, i, j, 2.0 * on.omega);
+  r.omega_end = 2.0 * P * b.points.back().omega;
+  if (r.to < 0) return j;
   try {
     std::vector<int> odd;
     const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
@@ -399,6 +466,31 @@ void end_at_join(PeriodDoubledBranch& r, Branch& b, const HarmonicBalance& hb, c
   } catch (const std::exception&) {
     // no branch point of the period-2 model there: the branch ends at the point before
   }
+  return j;
+}
+
+// What the period-1 sweep says about chord j of c (points j, j + 1) where a branch met c, for the
+// end's line: whether their orbits' shooting correction converged, and, where both did and the
+// parity of their real multipliers below -1 is the same (no PD in between, frequency_sweep.cpp
+// step 5b), that no multiplier crossed -1 there: the period-2 HB branch then ends at a branch
+// point of its own truncation, not at a PD of the exact orbit.
+bool has_chord_floquet(const FrequencyCurve& c, int j) {
+  return j >= 0 && std::size_t(j) + 1 < c.branch.points.size() && c.floquet.size() == c.branch.points.size();
+}
+bool chord_unresolved(const FrequencyCurve& c, int j) {
+  return has_chord_floquet(c, j) && (!c.floquet[std::size_t(j)].corrected || !c.floquet[std::size_t(j) + 1].corrected);
+}
+std::string chord_evidence(const FrequencyCurve& c, int j, double P) {
+  const auto& Q = c.branch.points;
+  std::ostringstream os;
+  if (!has_chord_floquet(c, j)) return "";
+  const PointFloquet &a = c.floquet[std::size_t(j)], &b = c.floquet[std::size_t(j) + 1];
+  os << "between its points at omega = " << P * Q[std::size_t(j)].omega << " and " << P * Q[std::size_t(j) + 1].omega;
+  if (chord_unresolved(c, j))
+    os << ", where the shooting correction of the period-" << int(P) << " orbit did not converge: multipliers unresolved";
+  else if (a.outside_real_negative % 2 == b.outside_real_negative % 2)
+    os << ", whose corrected orbits show no multiplier crossing -1";
+  return os.str();
 }
 
 // How the branch ends: failed (where and why), merged with the period-1 branch (at which of its
@@ -413,13 +505,20 @@ void classify_end(PeriodDoubledBranch& r, Branch& b, const Period2Continuation& 
     r.end = PeriodDoubledBranch::End::failed;
     r.omega_end = 2.0 * P * f.omega;
   } else if (m != Merge::none) {
-    if (m == Merge::crossed) end_at_crossing(r, b, p2, c, i, P);
-    else end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
+    const int j = m == Merge::crossed ? end_at_crossing(r, b, p2, hb, c, i, P) : end_at_join(r, b, hb, p2.hbp, c, i, opt, P);
     r.end = PeriodDoubledBranch::End::merged;
     const int period = int(P);
     os << "merges with the period-" << period << " branch at omega = " << r.omega_end;
-    if (r.to >= 0) os << " (the PD located at " << P * c.bifurcations[std::size_t(r.to)].omega << ")";
-    else os << " where no PD of the period-" << period << " branch was located";
+    if (r.to >= 0) {
+      const Bifurcation& bf = c.bifurcations[std::size_t(r.to)];
+      os << " (the PD located at " << P * bf.omega << (bf.smooth ? "" : ", non-smooth: a multiplier jumps across -1");
+      if (chord_unresolved(c, bf.after_point)) os << "; " << chord_evidence(c, bf.after_point, P);
+      os << ")";
+    } else {
+      os << " where no PD of the period-" << period << " branch was located";
+      const std::string e = chord_evidence(c, j, P);
+      if (!e.empty()) os << " (" << e << ")";
+    }
   } else {
     r.end = PeriodDoubledBranch::End::left_range;
     r.omega_end = 2.0 * P * last.omega;

@@ -26,7 +26,11 @@
 //  2. its Floquet multipliers on the corrected orbit (floquet.hpp) and the real eigenvector
 //     e = (dx0, dv0) of the multiplier nearest -1;
 //  3. the eigen-solution dx(t) over one forcing period, by central differences of the
-//     exact flow (PiecewiseLinearFlow) from the corrected state +- delta e; it is
+//     exact flow (PiecewiseLinearFlow) from the corrected state +- delta e, or, where the
+//     orbit is not corrected (a time-varying contact stiffness has no exact flow; or the
+//     sweep's FloquetOptions::correct_orbit is false, as gearhb_planetary's), steps 2-3 on
+//     the variational equation about the HB orbit (floquet.hpp floquet_of_hb_variational,
+//     variational_solution): the direction only starts step 4's inverse iteration; it is
 //     antiperiodic (dx(t + T) = -dx(t) for mu = -1), so it lives on the odd harmonics of
 //     Omega, and its coefficients are the trapezoid sums over one period (spectrally
 //     accurate: the integrand dx(t) cos(k Omega t), k odd, is T-periodic);
@@ -45,12 +49,20 @@
 //     (arc_length_continuation_from);
 //  5. it ends where its odd harmonics change sign (it crossed the period-1 branch: it
 //     merged at another PD; the crossing is refined by secant iterations on the chord to
-//     |odd| ~ 0 and matched to the nearest located PD of c), or where its odd harmonics
-//     vanish (below 1e-8 of the branch's largest: the corrector turned onto the period-1
-//     branch, a solution of the period-2 model too; that point is dropped and the branch ends
-//     at the period-2 model's branch point beside the nearest located PD), where it leaves the
-//     range (complete), or where the continuation fails (the reason kept; the rest of the run
-//     stands).
+//     |odd| ~ 0), or where its odd harmonics vanish (below 1e-8 of the branch's largest: the
+//     corrector turned onto the period-1 branch, a solution of the period-2 model too; that
+//     point is dropped and the branch ends at the period-2 model's branch point beside the PD
+//     it joined at), where it leaves the range (complete), or where the continuation fails
+//     (the reason kept; the rest of the run stands). The PD a merge ends at is the one located
+//     on the chord of c (or a chord next to it) nearest the merge point in the scaled
+//     unknowns: the HB branch point lies beside the PD of the exact orbit by the truncation
+//     error (ch. 6 Fig. 40 at H = 10: 8654.8 against 8674.3 rad/s; 8673.5 at H = 14), and a
+//     branch with folds passes one omega several times, so a window in omega alone missed it or
+//     could pick a PD of another pass. Where no PD lies there the line says between which
+//     points of c and what their Floquet data show (shooting not converged; no multiplier
+//     crossing -1); a PD located on orbits whose shooting did not converge is said so too. A
+//     non-smooth PD (smooth = 0, a multiplier jumping across -1) has no eigenvector at -1: its
+//     switch fails saying so.
 // The two directions +-e from the PD give the same orbits shifted by one forcing period
 // (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
 // a PD where an earlier branch merged is not switched again.
@@ -59,7 +71,8 @@
 // multipliers of the orbit corrected by shooting over two forcing periods, and its own
 // bifurcations (its PDs start period-4 branches: period_doubling_cascade, the same switch on
 // the period-2 model as hb, PeriodDoublingOptions::period = 2).
-// Models with a time-varying contact stiffness have no exact flow: the switch reports it.
+// Models with a time-varying contact stiffness (a planetary set's meshes) take the variational
+// path of step 3; their period-2 points' multipliers are those of the sweep's FloquetOptions.
 #include <memory>
 #include <string>
 #include <utility>

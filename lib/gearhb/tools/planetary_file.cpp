@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/json_file.hpp"
 #include "gearhb/hb/contact.hpp"
 #include "gearhb/tools/planetary_stiffness.hpp"
@@ -282,7 +283,7 @@ PlanetaryFile read_planetary_file(const std::string& path,
                                   const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "planets", "planet_angles_deg", "teeth", "module", "addendum", "pressure_angle_deg",
-                          "sun", "ring", "carrier", "planet", "mesh", "response", "campbell"});
+                          "sun", "ring", "carrier", "planet", "mesh", "response", "campbell", "period_doubling"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   PlanetaryFile f;
   f.resolved = j;
@@ -304,6 +305,9 @@ PlanetaryFile read_planetary_file(const std::string& path,
   if (p.contains("pin_errors"))
     f.meshes.pin_errors = per_planet(p, path, "planet", "pin_errors", s.planets(), false, -1e-3, 1e-3, "[-1e-3, 1e-3] m");
   read_response(f, j, path);
+  f.period_doubling_depth = read_period_doubling_depth(j, path);
+  if (j.contains("period_doubling") && !f.response.present)
+    fail_key(path, "period_doubling", "needs the response over mesh frequency (response)");
   if (f.tooth_model && !f.response.present)
     fail_key(path, "mesh.stiffness", "tooth_model needs a response section (its torque is the meshes' static load)");
   if (j.contains("campbell")) {
@@ -358,7 +362,9 @@ std::string planetary_file_help() {
          "  response                 optional: input (sun | ring | carrier), torque [N m] > 0, output,\n"
          "                           output_shaft [N/m] added to its torsional stiffness, f_mesh_hz.from/to,\n"
          "                           zeta (0.02), harmonics (8), stability (1: every point's)\n"
-         "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n"
+         "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n" +
+         period_doubling_help() +
+         "                        (with response.stability: the PDs located on the curve)\n"
          "Checks (exit 2 naming the key): z_r = z_s + 2 z_p, (z_s + z_r) / N whole (equal spacing) or\n"
          "(z_s + z_r) psi_n / 360 whole (given angles), tip circles of neighbouring planets apart.\n";
 }

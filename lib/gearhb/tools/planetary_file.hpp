@@ -85,6 +85,9 @@ struct PlanetaryFile {
   PlanetaryResponseInput response;
   double campbell_rpm_to = 0.0;   // campbell.carrier_rpm_to (0: no Campbell diagram)
   int campbell_points = 0;
+  // period_doubling.depth (app/bifurcation_input.hpp, as gearhb_gear): the period-2 (and 4)
+  // branches switched at the located period doublings of the response (tools/planetary_sweep.hpp)
+  int period_doubling_depth = 1;
   nlohmann::json resolved;      // the file after overrides (params.json)
 };
 

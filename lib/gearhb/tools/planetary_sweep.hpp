@@ -19,7 +19,11 @@
 //    axis beyond 0.75, which a lightly damped set has everywhere) and found none there.
 #include <cmath>
 
+#include <string>
+#include <vector>
+
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/tools/planetary_file.hpp"
 
 namespace gearhb {
@@ -41,6 +45,29 @@ inline SweepOptions planetary_stability_options(SweepOptions o) {
   o.floquet.correct_orbit = false;
   o.narrow_bands = BandSearch::never;
   return o;
+}
+
+// The curve over the range of o (planetary_sweep_options) and the stability of every point with
+// its bifurcations: the program's two steps in one, for its benchmark and tests (throws if the
+// curve is incomplete).
+inline FrequencyCurve planetary_response_with_stability(const HarmonicBalance& hb, const SweepOptions& o,
+                                                        const std::string& label) {
+  FrequencyCurve c = require_complete(sweep_frequency(hb, o, label), label);
+  c.stable.clear();
+  c.floquet.clear();
+  analyse_stability(hb, planetary_stability_options(o), c);
+  return c;
+}
+
+// The period-doubled branches from the located period doublings of the response c (o: the
+// sweep's options, whose range bounds them), as the pair programs switch them
+// (hb/period_doubling.hpp period_doubling_cascade, to period 2^depth) with the stability options
+// above: the switch's eigen-solution and the branches' multipliers from the variational equation
+// about the HB orbit (the meshes' stiffness varies: no exact flow), over two mesh periods.
+inline std::vector<PeriodDoubledBranch> planetary_period_doubled_branches(const HarmonicBalance& hb,
+                                                                          const FrequencyCurve& c,
+                                                                          const SweepOptions& o, int depth) {
+  return period_doubling_cascade(hb, c, planetary_stability_options(o), depth);
 }
 
 }  // namespace gearhb
