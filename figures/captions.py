@@ -352,7 +352,9 @@ FRC_CAPTIONS = {
                "marked, the contact state as a rug at the bottom (one row per branch, named by a tick in its "
                "colour at the left). Where the file asks for them: the period-2 "
                "branches switched at the period doublings (colours of their own, x_min close up on the right), a "
-               "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right), the Poincare "
+               "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right; the points whose "
+               "stability the time integration tested by two Lyapunov exponents filled where stable, open where "
+               "unstable, grey where unresolved), the Poincare "
                "points of the bifurcation diagram by time integration (below); the frequencies with no stable "
                "period-1 orbit shaded.",
     "bifurcation_diagram.png": "The bifurcation diagram by time integration (GSL, exact contact switching): the "

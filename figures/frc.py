@@ -9,9 +9,10 @@ period 2 in frc.csv, one per branch id) in their own colour (x_max and x_min ove
 forcing periods); the contact rug and the bifurcation markers are those of the period-1
 branch (branch 0) and of each period-2 branch on its own curve. Torus branches (torus.csv,
 gearhb_frc's torus key: quasi-periodic motion past a Neimark-Sacker point by two-frequency
-harmonic balance) in black dash-dot (x_max and x_min over the torus), with a panel of their
-second frequency as the rotation omega2 / omega, the Floquet value angle / 2 pi of each NS
-point marked."""
+harmonic balance) in black dash-dot (x_max and x_min over the torus), the points whose
+stability the flow tested (torus.csv `stable`) filled where stable, open where unstable, grey
+where unresolved, with a panel of their second frequency as the rotation omega2 / omega, the
+Floquet value angle / 2 pi of each NS point marked."""
 import json
 import pathlib
 import sys
@@ -165,6 +166,23 @@ def torus_curves(ax, t, lo="x_min", hi="x_max", label="torus (two-frequency HB):
         ax.plot(r["omega"], r[lo], "k-.", lw=1)
 
 
+def torus_stability_marks(ax, t, lo="x_min", hi="x_max", labelled=True):
+    """The torus points whose stability the flow tested (torus.csv `stable`, `lyapunov1`): filled
+    where stable, open where unstable (as the period-1 curve's solid and dashed), grey where
+    unresolved; one legend entry per kind drawn."""
+    if "stable" not in t:
+        return
+    kinds = [("stable", "o", "k", "k", "torus stable (flow: Lyapunov exponents)"),
+             ("unstable", "o", "k", "none", "torus unstable (flow: Lyapunov exponents)"),
+             ("unresolved", "d", "0.55", "0.55", "torus stability unresolved (flow)")]
+    for kind, marker, colour, face, label in kinds:
+        idx = [i for i, s in enumerate(t["stable"]) if t["lyapunov1"][i] == t["lyapunov1"][i] and
+               (s == 1.0 if kind == "stable" else s == 0.0 if kind == "unstable" else s != s)]
+        for n, y in enumerate((hi, lo)):
+            ax.plot([t["omega"][i] for i in idx], [t[y][i] for i in idx], ls="none", marker=marker, ms=4.5,
+                    color=colour, mfc=face, zorder=4, label=label if labelled and n == 0 and idx else None)
+
+
 def contact_rugs(ax, full, ids):
     """One rug row per branch (period 1 at the bottom, then each period-2 branch in its colour):
     on coexisting branches the reader sees which one loses contact."""
@@ -209,6 +227,7 @@ def poincare_below(axp, r, handles):
     if r["torus"] is not None:   # the torus' section theta1 = 0: where its Poincare points lie
         torus_curves(axp, r["torus"], "section_min", "section_max", "torus (HB): least, largest q'x on the section")
         more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
+        torus_stability_marks(axp, r["torus"], "section_min", "section_max", labelled=False)
     axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
     axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2,
                frameon=False)
@@ -226,6 +245,7 @@ def main():
         period2_closeup(axes["closeup"], r["full"], r["d"], r["ids"])
     if r["torus"] is not None:
         torus_curves(ax, r["torus"])
+        torus_stability_marks(ax, r["torus"])
         torus_panel(axes["torus"], r["torus"], r["bif"])
     if r["bif"] is not None:
         bifurcation_markers(ax, r["full"], r["bif"])

@@ -40,6 +40,8 @@ using namespace gearhb;
 
 namespace {
 
+void torus_stability_key_numbers(KeyNumbers& key, const TorusBranch& b, const std::string& id);
+
 class FrequencyResponseFromFile {
  public:
   explicit FrequencyResponseFromFile(Study& study);
@@ -252,7 +254,20 @@ std::vector<TorusBranch> FrequencyResponseFromFile::torus_branches(Run& run, con
                                                                    int first_id) const {
   const TorusOptions& to = model_.torus;
   const TorusBalance tb(hb, to.harmonics1, to.harmonics2, to.lines);
-  const std::vector<TorusBranch> br = run.timed("torus branches", [&] { return gearhb::torus_branches(tb, c, o, to); });
+  std::vector<TorusBranch> br = run.timed("torus branches", [&] { return gearhb::torus_branches(tb, c, o, to); });
+  TorusStabilityOptions so = model_.torus_stability;
+  so.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  // skipped, said in one line, where the explicit integration is stiff (as ch. 6's diagram)
+  const double stiff = fastest_rate(hb) * 2.0 * M_PI / std::min(model_.omega_from, model_.omega_to);
+  if (stiff > 1e4 && so.every > 0) {
+    run.say(model_.name + ": no torus stability: the time integration is stiff (fastest rate x period " +
+            std::to_string(stiff) + " > 1e4)");
+    so.every = 0;
+  }
+  run.timed("torus stability", [&] {
+    for (TorusBranch& b : br) add_torus_stability(tb, b, so);
+    return 0;
+  });
   run.write("torus.csv", torus_table(tb, br, model_.output, first_id));
   KeyNumbers& key = run.key_numbers();
   key.add("torus_branches", double(br.size()), "-");
@@ -265,8 +280,20 @@ std::vector<TorusBranch> FrequencyResponseFromFile::torus_branches(Run& run, con
     if (br[k].points.empty()) continue;
     key.add("torus_omega_end_" + id, br[k].omega_end, "rad/s");
     key.add("torus_omega2_end_" + id, br[k].points.back().omega2, "rad/s");
+    torus_stability_key_numbers(key, br[k], id);
   }
   return br;
+}
+
+// A torus branch's points by the flow's verdict (hb/quasi_periodic.hpp torus_stability):
+// torus_stable_points_<id>, torus_unstable_points_<id>, torus_unresolved_points_<id>.
+void torus_stability_key_numbers(KeyNumbers& key, const TorusBranch& b, const std::string& id) {
+  int count[3] = {0, 0, 0};
+  for (const TorusPoint& p : b.points)
+    if (p.stability.computed) ++count[int(p.stability.verdict)];
+  key.add("torus_stable_points_" + id, count[int(TorusStability::Verdict::stable)], "-");
+  key.add("torus_unstable_points_" + id, count[int(TorusStability::Verdict::unstable)], "-");
+  key.add("torus_unresolved_points_" + id, count[int(TorusStability::Verdict::unresolved)], "-");
 }
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).

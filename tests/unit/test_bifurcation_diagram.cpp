@@ -195,6 +195,27 @@ TEST(BifurcationDiagram, KahramanSinghChaosHasAConvergedPositiveLyapunovExponent
   EXPECT_NEAR(rate_sum / 10.0, lambda, 0.25 * lambda);
 }
 
+// The exponents by re-orthonormalisation (lyapunov_exponents) against Liouville's formula: the
+// contact force depends on x alone and is continuous, so the divergence of the flow is
+// -tr(M^-1 C) in every contact state and det Phi = exp(-tr(M^-1 C) T) over each period, exactly;
+// the sum of all 2n exponents per period (the log of the volume growth) must be -tr(M^-1 C) T
+// whatever the orbit (here chaotic, Kahraman-Singh at Omega = 1.0: -0.1 x 2 pi). The first
+// exponent is largest_lyapunov_exponent's (the same first tangent vector) and the second is
+// below it.
+TEST(BifurcationDiagram, LyapunovExponentsSumToTheVolumeContraction) {
+  const HarmonicBalance hb = kahraman_singh(0.5);
+  const TimeIntegrator ti(hb);
+  const TimeIntegrationOptions to;
+  const VectorXd x0 = VectorXd::Constant(1, 1.1), v0 = VectorXd::Zero(1);
+  VectorXd x, v;
+  largest_lyapunov_exponent(ti, x0, v0, 1.0, 100, to, &x, &v);   // onto the chaotic attractor
+  const std::vector<double> l = lyapunov_exponents(ti, x, v, 1.0, 200, 2, to);
+  EXPECT_NEAR(l[0] + l[1], -0.1 * 2.0 * M_PI, 1e-6);
+  EXPECT_NEAR(l[0], largest_lyapunov_exponent(ti, x, v, 1.0, 200, to), 1e-12);
+  EXPECT_GT(l[0], 0.3);
+  EXPECT_LT(l[1], l[0]);
+}
+
 // The classifier's period test on made-up Poincare sequences: a 2-cycle is period 2 (not 1),
 // a sequence that never repeats (an irrational rotation) is period 0.
 TEST(BifurcationDiagram, PoincarePeriodOfKnownSequences) {

@@ -9,7 +9,10 @@
 //    amplitude against alpha omega / (2 pi), alpha the angle of the critical Floquet
 //    multiplier of the exact (shooting-corrected) orbit - an independent method;
 //  - the torus against a long GSL time integration at three omegas: the second frequency
-//    from the rotation of the Poincare points (theta1 = 0 mod 2 pi) and the largest q1.
+//    from the rotation of the Poincare points (theta1 = 0 mod 2 pi) and the largest q1;
+//  - its stability by the flow (torus_stability): stable where that integration settles on
+//    it, unstable where the bifurcation diagram's integration is chaotic;
+//  - both NS points start a branch (the lower, grazing one at a fifth of the amplitude).
 #include <cmath>
 #include <map>
 #include <sstream>
@@ -184,7 +187,8 @@ static std::vector<std::map<std::string, std::string>> csv_rows(const Table& t) 
 
 // One branch numbering per run (gearhb_frc): the torus branches after P period-doubled ones
 // are P + 1, P + 2, ... (here P = 2), in torus.csv's `branch` and in bifurcations.csv's
-// `starts_branch` of the NS point each starts; a start that fails keeps its id with no rows.
+// `starts_branch` of the NS point each starts. The lower NS point, where the orbit grazes the
+// contact, starts at a fifth of the default amplitude (the default's first points do not converge).
 TEST(QuasiPeriodic, TorusBranchIdsFollowThePeriodDoubledBranches) {
   const TorusCase& t = torus_case();
   TorusOptions to;
@@ -192,54 +196,80 @@ TEST(QuasiPeriodic, TorusBranchIdsFollowThePeriodDoubledBranches) {
   to.max_points = 2;
   const TorusBalance tb(t.hb, to.harmonics1, to.harmonics2);
   const std::vector<TorusBranch> br = torus_branches(tb, t.c, t.o, to);
-  ASSERT_EQ(br.size(), 2u);   // the lower NS point (its start fails), then the upper
-  ASSERT_TRUE(br[0].points.empty()) << br[0].why;
+  ASSERT_EQ(br.size(), 2u);   // the lower NS point, then the upper
+  ASSERT_EQ(br[0].points.size(), 2u) << br[0].why;
   ASSERT_EQ(br[1].points.size(), 2u) << br[1].why;
+  EXPECT_LT(br[0].omega_ns, br[1].omega_ns);
   const int first_id = 3;
   std::vector<int> starts(t.c.bifurcations.size(), -1);
   add_torus_starts(starts, br, first_id);
   const auto bif = csv_rows(bifurcation_table(t.c, {}, starts));
   const auto torus = csv_rows(torus_table(tb, br, e1(), first_id));
-  ASSERT_EQ(torus.size(), 2u);
+  ASSERT_EQ(torus.size(), 4u);
   int named = 0;
   for (const auto& b : bif) {
     if (b.at("starts_branch").empty()) continue;
     ++named;
     EXPECT_EQ(b.at("type"), "neimark_sacker");
-    EXPECT_EQ(b.at("starts_branch"), "4");   // the upper NS point's branch: first_id + 1
-    for (const auto& r : torus) {
-      EXPECT_EQ(r.at("branch"), "4");
-      EXPECT_EQ(r.at("omega_ns"), b.at("omega"));
-    }
+    // the lower NS point's branch first_id, the upper's first_id + 1; their rows name the NS point
+    const std::string id = b.at("starts_branch");
+    EXPECT_TRUE(id == "3" || id == "4") << id;
+    int rows = 0;
+    for (const auto& r : torus)
+      if (r.at("branch") == id) {
+        ++rows;
+        EXPECT_EQ(r.at("omega_ns"), b.at("omega"));
+      }
+    EXPECT_EQ(rows, 2);
   }
-  EXPECT_EQ(named, 1);
+  EXPECT_EQ(named, 2);
 }
+
+namespace {
+// The upper NS point's torus branch down to omega = 0.61, computed once.
+const TorusBranch& upper_branch(const TorusBalance& tb, const TorusOptions& to) {
+  static const TorusBranch b = [&] {
+    const TorusCase& t = torus_case();
+    SweepOptions o = t.o;
+    o.omega_min = 0.6100;
+    return torus_branch(tb, t.c, t.upper, o, to);
+  }();
+  return b;
+}
+TorusOptions torus_options() {
+  TorusOptions to;
+  to.harmonics1 = 21;
+  return to;
+}
+// The torus at omega corrected from the branch point nearest it.
+TorusPoint torus_near(const TorusBalance& tb, const TorusBranch& b, double omega, const TorusOptions& to) {
+  const TorusPoint* near = &b.points.front();
+  for (const TorusPoint& q : b.points)
+    if (std::abs(q.omega - omega) < std::abs(near->omega - omega)) near = &q;
+  return torus_point_at(tb, *near, omega, torus_case().c.scaling, to);
+}
+TorusStabilityOptions stability_options() {
+  TorusStabilityOptions so;
+  so.integration.x_scale = torus_case().c.scaling.x.cwiseAbs().maxCoeff();
+  return so;
+}
+}  // namespace
 
 TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {
   const TorusCase& t = torus_case();
-  TorusOptions to;
-  to.harmonics1 = 21;
-  SweepOptions o = t.o;
-  o.omega_min = 0.6100;   // the branch leaves this range below the last omega checked
+  const TorusOptions to = torus_options();
   const TorusBalance tb(t.hb, to.harmonics1, to.harmonics2);
-  const TorusBranch b = torus_branch(tb, t.c, t.upper, o, to);
+  const TorusBranch& b = upper_branch(tb, to);   // it leaves the range below the last omega checked
   ASSERT_EQ(b.end, TorusBranch::End::left_range) << b.why;
   const TimeIntegrator ti(t.hb);
   const TimeIntegrationOptions io;
   const int n = 2, periods = 2000;
   int checked = 0;
   for (const double omega : {0.6137, 0.6124, 0.6107}) {
-    // the torus at omega, corrected from the branch point nearest it
-    const TorusPoint* near = &b.points.front();
-    for (const TorusPoint& q : b.points)
-      if (std::abs(q.omega - omega) < std::abs(near->omega - omega)) near = &q;
-    const TorusPoint p = torus_point_at(tb, *near, omega, t.c.scaling, to);
+    const TorusPoint p = torus_near(tb, b, omega, to);
     // start on the HB torus at (theta1, theta2) = (0, 0); 200 periods of transient
-    Eigen::VectorXd x0 = p.X.head(n), v0 = Eigen::VectorXd::Zero(n);
-    for (int k = 1; k <= tb.pairs(); ++k) {
-      x0 += p.X.segment((2 * k - 1) * n, n);
-      v0 += (tb.k1(k) * p.omega + tb.k2(k) * p.omega2) * p.X.segment(2 * k * n, n);
-    }
+    Eigen::VectorXd x0, v0;
+    torus_state(tb, p.X, p.omega, p.omega2, 0.0, 0.0, x0, v0);
     Eigen::MatrixXd xs, vs;
     ti.poincare(x0, v0, p.omega, 200, periods, io, xs, vs);
     Eigen::MatrixXd Z(xs.rows(), 2 * n);
@@ -274,4 +304,48 @@ TEST(QuasiPeriodic, TorusAgreesWithLongTimeIntegration) {
     EXPECT_LT(std::abs(torus_measures(fine, q.X, e1()).x_max - m.x_max), 2.5e-4);
   }
   EXPECT_EQ(checked, 3);
+}
+
+
+// Where a long time integration settles on the torus (TorusAgreesWithLongTimeIntegration:
+// 200 transient periods from the HB torus, then the Poincare points rotate at HB's omega2 and
+// reach its x_max; gearhb_frc's bifurcation diagram calls 0.611-0.614 quasi-periodic), the
+// flow's test must call it stable: lambda1 within the threshold of 0 (the invariant circle),
+// lambda2 below -threshold, the orbit within drift_tol of the HB section. Measured (400 periods,
+// the default): lambda1 1.2e-3 and 6.3e-3, lambda2 -0.37 and -0.43, drift 0.11 and 0.17 at
+// 0.6137 and 0.6124; lambda1 falls as 1 / periods (0.6124: 0.0156, 6.3e-3, 4.6e-3, 1.4e-3 at
+// 200, 400, 800, 1600 periods: the finite-time error of a zero exponent), lambda2 stays.
+TEST(QuasiPeriodicStability, TorusTheIntegrationSettlesOnIsStable) {
+  const TorusOptions to = torus_options();
+  const TorusBalance tb(torus_case().hb, to.harmonics1, to.harmonics2);
+  const TorusBranch& b = upper_branch(tb, to);
+  ASSERT_EQ(b.end, TorusBranch::End::left_range) << b.why;
+  const TorusStabilityOptions so = stability_options();
+  for (const double omega : {0.6137, 0.6124}) {
+    const TorusStability s = torus_stability(tb, torus_near(tb, b, omega, to), so);
+    ASSERT_TRUE(s.failure.empty()) << s.failure;
+    EXPECT_EQ(s.verdict, TorusStability::Verdict::stable) << "omega " << omega;
+    EXPECT_LT(std::abs(s.lyapunov1), so.threshold);
+    EXPECT_LT(s.lyapunov2, -so.threshold);
+    EXPECT_LT(s.drift, so.drift_tol);
+  }
+}
+
+// Where the time integration is chaotic (the bifurcation diagram of nlvib_ex03_torus.json:
+// chaotic at 0.600-0.610, lambda 0.06-0.26 per period), the HB torus continued there must not be
+// called stable: the flow started on it leaves it or stretches. Measured (400 periods): lambda1
+// 0.203 (the diagram's largest exponent at 0.605: 0.21), lambda2 -0.39, drift 0.69 at omega 0.6050.
+TEST(QuasiPeriodicStability, TorusInTheChaoticRegionIsNotStable) {
+  const TorusOptions to = torus_options();
+  const TorusBalance tb(torus_case().hb, to.harmonics1, to.harmonics2);
+  const TorusBranch& b = upper_branch(tb, to);
+  ASSERT_FALSE(b.points.empty()) << b.why;
+  // natural continuation in omega from the branch's last point (the branch is monotone in
+  // omega down to 0.6014, torus.csv of the example)
+  TorusPoint p = torus_near(tb, b, 0.6100, to);
+  for (double omega = 0.6095; omega >= 0.6049; omega -= 0.0005) p = torus_point_at(tb, p, omega, torus_case().c.scaling, to);
+  const TorusStabilityOptions so = stability_options();
+  const TorusStability s = torus_stability(tb, p, so);
+  ASSERT_TRUE(s.failure.empty()) << s.failure;
+  EXPECT_EQ(s.verdict, TorusStability::Verdict::unstable);
 }

@@ -150,7 +150,8 @@ void read_torus(const json& j, const std::string& path, ModelFile& m) {
   if (!j.contains("torus")) return;
   const json& t = j["torus"];
   if (!t.is_object()) fail(path, "torus", "must be an object of options ({} for the defaults)");
-  only_keys(t, path, "torus", {"harmonics1", "harmonics2", "lines", "amplitude", "max_points"});
+  only_keys(t, path, "torus",
+            {"harmonics1", "harmonics2", "lines", "amplitude", "max_points", "stability_every", "stability_periods"});
   TorusOptions& o = m.torus;
   o.harmonics1 = std::min(o.harmonics1, m.harmonics);
   if (t.contains("harmonics1")) o.harmonics1 = whole(t["harmonics1"], path, "torus.harmonics1", 1, m.harmonics);
@@ -158,6 +159,10 @@ void read_torus(const json& j, const std::string& path, ModelFile& m) {
   if (t.contains("lines")) o.lines = whole(t["lines"], path, "torus.lines", 0, 1024);
   if (t.contains("amplitude")) o.amplitude = number(t["amplitude"], path, "torus.amplitude");
   if (t.contains("max_points")) o.max_points = whole(t["max_points"], path, "torus.max_points", 2, 10000);
+  TorusStabilityOptions& so = m.torus_stability;
+  if (t.contains("stability_every")) so.every = whole(t["stability_every"], path, "torus.stability_every", 0, 10000);
+  if (t.contains("stability_periods"))
+    so.periods = whole(t["stability_periods"], path, "torus.stability_periods", 10, 10000);
   std::string why;
   const std::string key = check_torus_options(o, m.harmonics, &why);
   if (!key.empty()) fail(path, "torus." + key, why);
@@ -259,7 +264,10 @@ std::string model_file_help() {
          "                        n (2 (H2 + H1 (2 H2 + 1)) + 1) <= 3000 unknowns)\n"
          "  torus.lines           lines in the second angle for the contact forces (default 0 = 4 (2 H2 + 1))\n"
          "  torus.amplitude       first point's quasi-periodic part over the orbit's size (default 0.005; (0, 0.5])\n"
-         "  torus.max_points      most points per torus branch (default 200)\n" +
+         "  torus.max_points      most points per torus branch (default 200)\n"
+         "  torus.stability_every the torus' stability by the flow's two largest Lyapunov exponents at every\n"
+         "                        k-th point of a branch and its last (default 5; 0 = none; 0..10000)\n"
+         "  torus.stability_periods  forcing periods of that variational integration (default 400; 10..10000)\n" +
          period_doubling_help() + bifurcation_diagram_help() +
          "--set PATH=VALUE overrides a number at a dotted path: harmonics=10, omega.to=0.4, contacts.0.kc=50\n"
          "Cost (README 'Cost of a run'): each Newton step of each continuation point factors the n(2H+1)\n"

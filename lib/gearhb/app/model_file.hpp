@@ -18,7 +18,8 @@
 //     "output":    {"direction": [1, 0]},                 the plotted coordinate q' x
 //     "solver":    {"exact_contact": 1, "ds_max": 0.02},
 //     "bifurcation_diagram": {"speeds": 200}               optional (app/bifurcation_input.hpp)
-//     "torus": {"harmonics1": 10, "harmonics2": 4}           optional (hb/quasi_periodic.hpp)
+//     "torus": {"harmonics1": 10, "harmonics2": 4,           optional (hb/quasi_periodic.hpp)
+//               "stability_every": 5, "stability_periods": 400}
 //   }
 //
 // Contact law of the library: F = max(kc (g + direction' x), 0); gap g < 0 a
@@ -64,6 +65,7 @@ struct ModelFile {
   // torus (optional object; absent = off): a torus branch by two-frequency HB from each NS point
   bool torus_on = false;
   TorusOptions torus;
+  TorusStabilityOptions torus_stability;     // torus.stability_every, torus.stability_periods
   nlohmann::json resolved;                   // the model after overrides (echoed as params.json)
 
   HarmonicBalance harmonic_balance() const;

@@ -165,12 +165,17 @@ Table time_integration_table(const TimeIntegrationCheck& check) {
 Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q,
                   int first_id) {
   Table t({"branch", "omega_ns", "omega", "omega2", "rotation", "x_max", "x_min", "x_qp_rms", "section_min",
-           "section_max", "residual"});
+           "section_max", "residual", "stable", "lyapunov1", "lyapunov2", "drift"});
   for (std::size_t k = 0; k < branches.size(); ++k)
     for (const TorusPoint& p : branches[k].points) {
       const TorusMeasures m = torus_measures(tb, p.X, q);
+      const TorusStability& st = p.stability;
+      const bool verdict = st.computed && st.verdict != TorusStability::Verdict::unresolved;
       t.add_row({long(first_id) + long(k), branches[k].omega_ns, p.omega, p.omega2, p.omega2 / p.omega, m.x_max, m.x_min,
-                 m.x_qp_rms, m.section_min, m.section_max, p.residual});
+                 m.x_qp_rms, m.section_min, m.section_max, p.residual,
+                 verdict ? Table::Cell(long(st.verdict == TorusStability::Verdict::stable ? 1 : 0)) : Table::Cell(std::string()),
+                 cell(std::isfinite(st.lyapunov1), st.lyapunov1), cell(std::isfinite(st.lyapunov2), st.lyapunov2),
+                 cell(std::isfinite(st.drift), st.drift)});
     }
   return t;
 }

@@ -101,7 +101,10 @@ Table time_integration_table(const TimeIntegrationCheck& check);
 // (omega2 / omega), x_max, x_min (the output coordinate q'x over the torus), x_qp_rms (RMS of
 // its quasi-periodic part, the pairs k2 != 0), section_min, section_max (q'x on the Poincare
 // section theta1 = 0 mod 2 pi, the closed curve the once-per-period states lie on), residual
-// (scaled, at convergence).
+// (scaled, at convergence), stable (1 stable, 0 unstable by the flow's test,
+// hb/quasi_periodic.hpp torus_stability; empty where not computed or unresolved), lyapunov1,
+// lyapunov2 (the two largest Lyapunov exponents per forcing period) and drift (of the flow's
+// Poincare points from the HB section curve, over its half-width), empty where not computed.
 Table torus_table(const TorusBalance& tb, const std::vector<TorusBranch>& branches, const Eigen::VectorXd& q,
                   int first_id = 1);
 

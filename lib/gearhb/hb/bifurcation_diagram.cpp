@@ -62,27 +62,47 @@ int poincare_period(const Eigen::MatrixXd& xs, const Eigen::MatrixXd& vs, double
 double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                  double omega, int periods, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end,
                                  Eigen::VectorXd* v_end) {
+  return lyapunov_exponents(ti, x0, v0, omega, periods, 1, opt, x_end, v_end)[0];
+}
+
+std::vector<double> lyapunov_exponents(
+    const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int periods,
+    int count, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end, Eigen::VectorXd* v_end,
+    const std::function<void(const Eigen::VectorXd&, const Eigen::VectorXd&)>& section, Eigen::MatrixXd* logs) {
   const Eigen::Index n = x0.size();
+  if (count < 1 || count > 2 * n) throw std::invalid_argument("Lyapunov exponents: count must be 1..2 dofs");
+  if (periods < 1) throw std::invalid_argument("Lyapunov exponents: periods must be >= 1");
   Eigen::VectorXd x = x0, v = v0, xT, vT;
   Eigen::MatrixXd Phi;
-  // The tangent vector in (x, v / omega), every component alike at the start.
-  Eigen::VectorXd w = Eigen::VectorXd::Ones(2 * n).normalized();
-  double sum = 0.0;
-  for (int k = 0; k < periods; ++k) {
+  // The tangent vectors in (x, v / omega): the first with every component alike, the others
+  // along the unit vectors, made orthonormal.
+  Eigen::MatrixXd W = Eigen::MatrixXd::Identity(2 * n, count);
+  W.col(0) = Eigen::VectorXd::Ones(2 * n).normalized();
+  Eigen::VectorXd sum = Eigen::VectorXd::Zero(count);
+  if (logs) logs->setZero(periods, count);
+  for (int k = 0; k <= periods; ++k) {
+    for (int j = 0; j < count; ++j) {   // modified Gram-Schmidt: W = Q R, Q into W
+      for (int i = 0; i < j; ++i) W.col(j) -= W.col(i).dot(W.col(j)) * W.col(i);
+      const double r = W.col(j).norm();
+      if (!(r > 0.0) || !std::isfinite(r))
+        throw std::runtime_error("Lyapunov exponents: a tangent vector vanished or diverged");
+      if (k > 0) sum[j] += std::log(r);
+      if (k > 0 && logs) (*logs)(k - 1, j) = std::log(r);
+      W.col(j) /= r;
+    }
+    if (k == periods) break;
     ti.period_map(x, v, omega, opt, xT, vT, Phi);
-    Eigen::VectorXd wv = w;   // to (x, v), through Phi, back to (x, v / omega)
-    wv.tail(n) *= omega;
-    Eigen::VectorXd u = Phi * wv;
-    u.tail(n) /= omega;
-    const double g = u.norm();
-    if (!(g > 0.0) || !std::isfinite(g)) throw std::runtime_error("Lyapunov exponent: the tangent vector vanished or diverged");
-    sum += std::log(g);
-    w = u / g;
+    W.bottomRows(n) *= omega;   // to (x, v), through Phi, back to (x, v / omega)
+    W = Phi * W;
+    W.bottomRows(n) /= omega;
     x = xT, v = vT;
+    if (section) section(x, v);
   }
   if (x_end) *x_end = x;
   if (v_end) *v_end = v;
-  return sum / periods;
+  std::vector<double> out(count);
+  for (int j = 0; j < count; ++j) out[j] = sum[j] / periods;
+  return out;
 }
 
 namespace {

@@ -121,4 +121,18 @@ double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd
                                  double omega, int periods, const TimeIntegrationOptions& opt,
                                  Eigen::VectorXd* x_end = nullptr, Eigen::VectorXd* v_end = nullptr);
 
+// The `count` (1..2 dofs) largest Lyapunov exponents per forcing period of the same orbit,
+// largest first, by the variational equations with re-orthonormalisation every period
+// (Benettin, Galgani, Giorgilli & Strelcyn, Meccanica 15 (1980) 9): the tangent vectors W (in
+// (x, v / omega)) mapped by Phi_k and made orthonormal again by modified Gram-Schmidt (W =
+// QR), lambda_j = (1 / periods) sum_k ln R_jj. The first tangent vector is the one above
+// (count = 1 gives largest_lyapunov_exponent's value); the others start along the unit
+// vectors. section (if given) is called with the state after every period; logs (if not null)
+// receives ln R_jj of every period (periods x count), to judge the estimate's convergence.
+std::vector<double> lyapunov_exponents(
+    const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int periods,
+    int count, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end = nullptr, Eigen::VectorXd* v_end = nullptr,
+    const std::function<void(const Eigen::VectorXd&, const Eigen::VectorXd&)>& section = {},
+    Eigen::MatrixXd* logs = nullptr);
+
 }  // namespace gearhb

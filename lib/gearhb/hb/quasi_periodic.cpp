@@ -10,6 +10,7 @@
 
 #include "gearhb/core/fourier.hpp"
 #include "gearhb/core/newton.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/contact.hpp"
 #include "gearhb/hb/floquet.hpp"
 
@@ -232,6 +233,69 @@ TorusMeasures torus_measures(const TorusBalance& tb, const Eigen::VectorXd& X, c
   return r;
 }
 
+void torus_state(const TorusBalance& tb, const Eigen::VectorXd& X, double omega, double omega2, double theta1,
+                 double theta2, Eigen::VectorXd& x, Eigen::VectorXd& v) {
+  const int n = tb.dofs();
+  x = X.head(n);
+  v = Eigen::VectorXd::Zero(n);
+  for (int p = 1; p <= tb.pairs(); ++p) {
+    const double phi = tb.k1(p) * theta1 + tb.k2(p) * theta2, w = tb.k1(p) * omega + tb.k2(p) * omega2;
+    const auto c = X.segment((2 * p - 1) * n, n), s = X.segment(2 * p * n, n);
+    x += std::cos(phi) * c + std::sin(phi) * s;
+    v += w * (std::cos(phi) * s - std::sin(phi) * c);
+  }
+}
+
+TorusStability torus_stability(const TorusBalance& tb, const TorusPoint& p, const TorusStabilityOptions& so) {
+  TorusStability r;
+  r.computed = true;
+  const int n = tb.dofs(), samples = 256;
+  // the HB section curve theta1 = 0 in (x, v / omega), its mean point and half-width
+  Eigen::MatrixXd curve(2 * n, samples);
+  Eigen::VectorXd x, v;
+  for (int l = 0; l < samples; ++l) {
+    torus_state(tb, p.X, p.omega, p.omega2, 0.0, 2.0 * M_PI * l / samples, x, v);
+    curve.col(l) << x, v / p.omega;
+  }
+  const Eigen::VectorXd mean = curve.rowwise().mean();
+  const double width = (curve.colwise() - mean).cwiseAbs().maxCoeff();
+  double drift = 0.0;
+  auto section = [&](const Eigen::VectorXd& xk, const Eigen::VectorXd& vk) {
+    Eigen::VectorXd S(2 * n);
+    S << xk, vk / p.omega;
+    drift = std::max(drift, (curve.colwise() - S).cwiseAbs().colwise().maxCoeff().minCoeff());
+  };
+  torus_state(tb, p.X, p.omega, p.omega2, 0.0, 0.0, x, v);
+  try {
+    const TimeIntegrator ti(tb.model());
+    Eigen::MatrixXd logs;
+    const std::vector<double> l = lyapunov_exponents(ti, x, v, p.omega, so.periods, 2, so.integration, nullptr,
+                                                     nullptr, section, &logs);
+    r.lyapunov1 = l[0], r.lyapunov2 = l[1];
+    const int h = so.periods / 2;   // the two halves' estimates
+    r.half1 = logs.topRows(h).colwise().mean().transpose();
+    r.half2 = logs.bottomRows(so.periods - h).colwise().mean().transpose();
+  } catch (const std::runtime_error& e) {
+    r.failure = e.what();
+    return r;
+  }
+  r.drift = width > 0.0 ? drift / width : INFINITY;
+  using V = TorusStability::Verdict;
+  const double t = so.threshold;
+  if (r.half1[0] > t && r.half2[0] > t) r.verdict = V::unstable;
+  else if (std::max(r.half1[0], r.half2[0]) <= t && std::max(r.half1[1], r.half2[1]) < -t && r.drift <= so.drift_tol)
+    r.verdict = V::stable;
+  else r.verdict = V::unresolved;
+  return r;
+}
+
+void add_torus_stability(const TorusBalance& tb, TorusBranch& b, const TorusStabilityOptions& so) {
+  if (so.every <= 0) return;
+  for (std::size_t i = 0; i < b.points.size(); ++i)
+    if (i % std::size_t(so.every) == 0 || i + 1 == b.points.size())
+      b.points[i].stability = torus_stability(tb, b.points[i], so);
+}
+
 void add_torus_starts(std::vector<int>& starts, const std::vector<TorusBranch>& br, int first_id) {
   for (std::size_t k = 0; k < br.size(); ++k)
     if (!br[k].points.empty() && br[k].from < starts.size()) starts[br[k].from] = first_id + int(k);
@@ -265,7 +329,7 @@ class TorusContinuation {
     return Y;
   }
   TorusPoint point(const Eigen::VectorXd& Y, int iterations, double residual) const {
-    return {Y[N_ + 1] * ws_, Y[N_] * ws_, Y.head(N_) * xs_, iterations, residual};
+    return {Y[N_ + 1] * ws_, Y[N_] * ws_, Y.head(N_) * xs_, iterations, residual, {}};
   }
   // Newton on [R = 0; phase; row' Y = b]; false if it does not converge.
   bool correct(Eigen::VectorXd& Y, const Eigen::VectorXd& row, double b, int& iterations, double& residual) const {
@@ -392,6 +456,22 @@ std::vector<Eigen::VectorXd> first_points(const TorusContinuation& tc, const NsS
   return Ys;
 }
 
+// first_points at amplitude, else at amplitude / 5 and / 25 (step 4 of the header: near a
+// grazing NS point the first-order shape holds only at amplitudes of the orbit's penetration).
+std::vector<Eigen::VectorXd> first_points_retried(const TorusContinuation& tc, const NsStart& s,
+                                                  const Eigen::VectorXd& Yns, double amplitude, TorusBranch& out) {
+  std::string first;
+  for (int k = 0; k < 3; ++k) {
+    try {
+      return first_points(tc, s, Yns, amplitude / std::pow(5.0, k), out);
+    } catch (const std::runtime_error& e) {
+      out.points.clear();
+      if (k == 0) first = e.what();
+    }
+  }
+  throw std::runtime_error(first + ", nor at a fifth and a 25th of that");
+}
+
 // Steps 4-5: the pseudo-arc-length continuation from the first two points until the branch
 // ends (out.end, out.why).
 void continue_torus(const TorusContinuation& tc, std::vector<Eigen::VectorXd> Ys, const SweepOptions& opt,
@@ -449,7 +529,7 @@ TorusBranch torus_branch(const TorusBalance& tb, const FrequencyCurve& c, std::s
     out.omega2_ns = s.alpha * s.omega / (2.0 * M_PI);
     const TorusContinuation tc(tb, c.scaling, to);
     const Eigen::VectorXd Yns = tc.scaled(tb.from_periodic(s.X1), out.omega2_ns, s.omega);
-    continue_torus(tc, first_points(tc, s, Yns, to.amplitude, out), opt, to, where, out);
+    continue_torus(tc, first_points_retried(tc, s, Yns, to.amplitude, out), opt, to, where, out);
   } catch (const std::exception& e) {
     out.end = TorusBranch::End::failed;
     out.why = where + "failed: " + e.what();

@@ -38,7 +38,12 @@
 //     omega2 = alpha omega / (2 pi) is the torus' first-order shape (pairs (k1, +-1));
 //  4. the first point: period-1 point + eps times that shape (eps: a fraction `amplitude` of
 //     the orbit's size), corrected with omega and omega2 free and the amplitude held (its
-//     projection on the shape); the second at 2 eps; then pseudo-arc-length continuation in
+//     projection on the shape); the second at 2 eps (if these fail, again at eps / 5 and eps /
+//     25: at an NS point where the orbit grazes the contact - the example's lower NS point at
+//     0.59939, contact onset at 0.59936, the orbit 1e-4 of the gap into contact - the
+//     first-order shape, the linearisation about an orbit that barely touches, holds only for
+//     tori that do not reach far past the contact's edge; there eps = 0.005 fails and eps / 5
+//     converges); then pseudo-arc-length continuation in
 //     the scaled unknowns [X / x_scale, omega2 / omega_scale, omega / omega_scale] with a
 //     secant predictor (a corrected point farther than half the step from its predictor is
 //     refused and the step halved: it jumped to another part of the solution set);
@@ -49,7 +54,8 @@
 //     follow it; the reason kept, the rest of the run stands).
 // Omega2 at the first point is not set from alpha: the corrector finds it from the 2-D
 // equations, so omega2 at small amplitude against alpha omega / (2 pi) checks both (tests).
-// Stability of the torus is not computed. Models with a time-varying contact stiffness or a
+// Stability of the torus (torus_stability, the section "Stability" below): by the flow, not by
+// HB. Models with a time-varying contact stiffness or a
 // forcing on another harmonic than the first are refused (the reason says so).
 #include <string>
 #include <vector>
@@ -58,6 +64,7 @@
 
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/time_integration.hpp"
 
 namespace gearhb {
 
@@ -125,11 +132,62 @@ struct TorusOptions {
   int max_iterations = 12;
 };
 
+// Stability. The test is the flow's, independent of HB: the two largest Lyapunov exponents
+// (per forcing period; bifurcation_diagram.hpp lyapunov_exponents: variational equations,
+// GSL rk8pd with exact contact switching, Gram-Schmidt re-orthonormalisation every period) of
+// the orbit started on the HB torus at (theta1, theta2) = (0, 0), and the drift of its Poincare
+// points from the HB torus' section curve. On the Poincare map an attracting torus is an
+// attracting invariant circle: lambda1 = 0 (along the circle) and lambda2 < 0; a tangent
+// vector that grows (lambda1 > 0) says the orbit from the torus is not attracted onto it. The
+// verdict, from the exponents of either half of the periods (lambda_j^a over the first, ^b over
+// the second; a verdict needs both halves to agree, so a transient - e.g. a chaotic one that
+// ends on a cycle - is not read as a torus):
+//  - unstable if lambda1^a and lambda1^b > threshold (a tangent vector keeps growing: a saddle
+//    torus, or the orbit left it for chaos);
+//  - stable if lambda1^a, lambda1^b <= threshold, lambda2^a, lambda2^b < -threshold and the
+//    drift is at most drift_tol (the orbit stays on the HB torus and its neighbourhood contracts
+//    onto it; lambda1 < -threshold as well: the flow on the torus locks onto a cycle on it);
+//  - unresolved otherwise: the halves disagree (a transient: measured on the example at omega
+//    0.6083, lambda1 0.12 over the first 200 periods and -0.14 over the next 200, where the
+//    bifurcation diagram's sweep sees chaos), lambda2 >= -threshold (a second neutral direction
+//    within the finite-time error: near the NS point, where the torus attracts weakly), or a
+//    drift above drift_tol (the flow settles, but not on the HB torus: near the NS point the HB
+//    torus' own error, e.g. its NS point off the exact one by 2.3e-4 rad/s at H1 = 21 on the
+//    example, is of the order of the torus' size).
+// Finite-time error: the estimate of a zero exponent along the circle is O(1 / periods) (the
+// log of the ratio of tangent lengths at two points of the circle over the periods; measured on
+// the example's torus at omega 0.6124: lambda1 = 0.0156, 6.3e-3, 4.6e-3, 1.4e-3 at 200, 400, 800,
+// 1600 periods, lambda2 -0.435, -0.430, -0.432, -0.433), that of a nonzero one converges as
+// O(1 / sqrt(periods)) where the motion is chaotic. 400 periods put the example's tori within a
+// third of the threshold 0.02 (the bifurcation diagram's lyapunov_threshold).
+struct TorusStabilityOptions {
+  int every = 5;              // every k-th point of a branch (0, k, 2k, ...) and its last; 0: none
+  int periods = 400;          // forcing periods of the variational integration (gearhb_frc: 10..10000)
+  double threshold = 0.02;    // per forcing period; stated, not derived (see above)
+  // the drift: the largest distance (max norm in (x, v / omega)) of the orbit's Poincare points
+  // from the HB section curve (sampled at 256 values of theta2), over that curve's half-width
+  // (its largest distance from its mean point). 0.5: the orbit stays within half the torus' size
+  // of the HB torus; HB's own error (H1 = 21, H2 = 4) on the example's stable tori gives 0.11
+  // and 0.17 (test_quasi_periodic), a margin of 3
+  double drift_tol = 0.5;
+  TimeIntegrationOptions integration;   // tolerances; x_scale: the curve's displacement scale
+};
+
+struct TorusStability {
+  bool computed = false;
+  enum class Verdict { stable, unstable, unresolved } verdict = Verdict::unresolved;
+  double lyapunov1 = NAN, lyapunov2 = NAN;   // per forcing period
+  Eigen::Vector2d half1 = Eigen::Vector2d::Constant(NAN), half2 = Eigen::Vector2d::Constant(NAN);   // per half
+  double drift = NAN;                         // over the section curve's half-width
+  std::string failure;                        // the integration failed: why (verdict unresolved)
+};
+
 struct TorusPoint {
   double omega = 0.0, omega2 = 0.0;   // [rad/s]
   Eigen::VectorXd X;
   int iterations = 0;
   double residual = 0.0;              // scaled, at convergence
+  TorusStability stability;           // computed on a subset (add_torus_stability)
 };
 
 struct TorusBranch {
@@ -161,6 +219,18 @@ TorusPoint torus_point_at(const TorusBalance& tb, const TorusPoint& guess, doubl
 // where an earlier branch merged (`to`) is not switched again (the same torus).
 std::vector<TorusBranch> torus_branches(const TorusBalance& tb, const FrequencyCurve& c, const SweepOptions& opt,
                                         const TorusOptions& to);
+
+// The state (x, v) of the torus X at the angles (theta1, theta2): v = omega dx/dtheta1 +
+// omega2 dx/dtheta2.
+void torus_state(const TorusBalance& tb, const Eigen::VectorXd& X, double omega, double omega2, double theta1,
+                 double theta2, Eigen::VectorXd& x, Eigen::VectorXd& v);
+
+// The stability of the torus point p (the section "Stability" above). Never throws for a
+// failed integration: failure says why, the verdict stays unresolved.
+TorusStability torus_stability(const TorusBalance& tb, const TorusPoint& p, const TorusStabilityOptions& so);
+
+// torus_stability at the points 0, every, 2 every, ... and the last of b (none if every = 0).
+void add_torus_stability(const TorusBalance& tb, TorusBranch& b, const TorusStabilityOptions& so);
 
 // Branch ids (one numbering with the period-doubled branches: frc.csv's and bifurcations.csv's
 // `branch`): the torus branch br[k] is branch first_id + k (gearhb_frc: first_id = the number of
