@@ -299,13 +299,14 @@ BranchPoint merge_point(const HarmonicBalance& hbp, const BranchPoint& a, const 
 // The first chord, from the branch point, is corrected in the hyperplane normal to the null
 // vector, which holds the whole omega axis: the branch's own curvature may move it several steps
 // in omega, so it counts as a jump only where it leaves the range [omega_min, omega_max] (base
-// frequencies).
+// frequencies) from a branch point inside it.
 void end_before_jump(Branch& b, const Scaling& s, double factor, double omega_min, double omega_max) {
   for (std::size_t k = 1; k < b.points.size(); ++k) {
     const BranchPoint &a = b.points[k - 1], &z = b.points[k];
     const double dw = (z.omega - a.omega) / s.omega;
     const double chord = std::sqrt(((z.X - a.X).array() / s.x.array()).square().sum() + dw * dw);
-    const bool jumped = k == 1 ? !(z.omega >= omega_min && z.omega <= omega_max) : chord > 5.0 * z.ds && z.ds > 0.0;
+    auto inside = [omega_min, omega_max](const BranchPoint& q) { return q.omega >= omega_min && q.omega <= omega_max; };
+    const bool jumped = k == 1 ? inside(a) && !inside(z) : chord > 5.0 * z.ds && z.ds > 0.0;
     if (!jumped) continue;
     std::ostringstream os;
     os << "the corrector jumped from omega = " << factor * a.omega << " to " << factor * z.omega << " (a chord "
@@ -637,6 +638,16 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
     r.omega_start = pdo.period * bf.omega;
     std::ostringstream os;
     os << "period-" << r.period << " branch from the PD at omega = " << r.omega_start << ": ";
+    if (!(bf.omega >= opt.omega_min && bf.omega <= opt.omega_max)) {
+      // on a stretch the curve took beyond its range (a fold pair beside the start: start_excursion)
+      os << "not switched: the PD lies outside the range [" << pdo.period * opt.omega_min << ", "
+         << pdo.period * opt.omega_max << "]";
+      r.end = PeriodDoubledBranch::End::left_range;
+      r.omega_end = r.omega_start;
+      r.why = os.str();
+      out.push_back(std::move(r));
+      continue;
+    }
     try {
       switch_branch(r, hb, c, i, opt, pdo, os);
     } catch (const std::exception& e) {
