@@ -229,7 +229,7 @@ def poincare_below(axp, r, handles):
         more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
         torus_stability_marks(axp, r["torus"], "section_min", "section_max", labelled=False)
     axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-    axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.2), ncol=2,
+    axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.27), ncol=2,
                frameon=False)
 
 

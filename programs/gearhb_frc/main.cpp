@@ -298,8 +298,6 @@ void torus_stability_key_numbers(KeyNumbers& key, const TorusBranch& b, const st
 
 // Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
-  // the script reads the key numbers (the frame rewrites the same file when the steps are done)
-  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
 

@@ -882,9 +882,6 @@ void GearPairFromFile::time_integration_check(Run& run, std::size_t i, const Har
 
 // Step 9: DIR/*.png by figures/gearhb_gear.py (the project's figure style).
 void GearPairFromFile::draw(Run& run) const {
-  // The script reads the key numbers too: the frame writes them once the steps are
-  // done, so write them into the staging folder now (the frame rewrites the same).
-  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/gearhb_gear.py",
                    "figures");
 }

@@ -233,7 +233,10 @@ void file_program(Study& study, const std::string& what, bool* plot, std::functi
   study.check([read = std::move(read)](const Selection&) { read(); });
 }
 
-void draw_with_script(const Run& run, const std::string& script, const std::string& what) {
+void draw_with_script(Run& run, const std::string& script, const std::string& what) {
+  // the script reads the key numbers too: written into the staging folder now (the frame
+  // rewrites the same file once the steps are done)
+  run.write_text("key_numbers.json", run.key_numbers().json().dump(2) + "\n");
   if (script.empty() || !run_program_quietly({"/usr/bin/python3", script, run.staging_path()}))
     run.say(what + " not drawn (needs /usr/bin/python3 with matplotlib; --set plot=0 skips it)");
 }

@@ -128,15 +128,16 @@ class Study {
 // exits 2 before anything is written.
 void file_program(Study& study, const std::string& what, bool* plot, std::function<void()> read);
 
-// Draw the figures of a run: /usr/bin/python3 SCRIPT STAGING (the script writes its
-// PNGs into the staging folder). Says `what` was not drawn when the script is empty
-// or fails; never fails the run.
 // A message as one line of valid UTF-8, whatever the user's input held: a control
 // character (a newline in a value) and a byte that is not UTF-8 (RFC 3629: overlong
 // forms, surrogates and code points beyond U+10FFFF are not) are shown escaped as
 // \n and \xNN. Every error line of the frame passes through it.
 std::string one_line(const std::string& message);
 
-void draw_with_script(const Run& run, const std::string& script, const std::string& what);
+// Draw the figures of a run: /usr/bin/python3 SCRIPT STAGING (the script writes its
+// PNGs into the staging folder), after writing the key numbers so far into it (scripts read
+// them: the ranges with no stable period-1 orbit; gearhb_planetary's figures lacked them).
+// Says `what` was not drawn when the script is empty or fails; never fails the run.
+void draw_with_script(Run& run, const std::string& script, const std::string& what);
 
 }  // namespace gearhb
