@@ -82,6 +82,25 @@ Eigen::MatrixXd odd_block(const HarmonicBalance& hbp, const Eigen::VectorXd& X, 
   return Jo;
 }
 
+// A bracket [lo, hi] of a sign change of f on the chord fraction, for regula falsi (Illinois):
+// a trial (t, f(t)) replaces the end of its sign, and the value at the end kept twice in a row
+// is halved (so the bracket shrinks from both sides).
+struct Illinois {
+  double lo, hi, f_lo, f_hi;
+  int side = 0;
+  void update(double t, double ft) {
+    if ((ft > 0.0) == (f_lo > 0.0)) {
+      lo = t, f_lo = ft;
+      if (side == -1) f_hi *= 0.5;
+      side = -1;
+    } else {
+      hi = t, f_hi = ft;
+      if (side == 1) f_lo *= 0.5;
+      side = 1;
+    }
+  }
+};
+
 // The sign of det A and log |det A| (from the LU's pivots: det itself over- or underflows).
 struct SignedLogDet {
   int sign = 1;
@@ -195,23 +214,14 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
   const SignedLogDet &da = at[std::size_t(best - lo_i)], &db = at[std::size_t(best - lo_i + 1)];
   const double log_ref = std::max(da.log_abs, db.log_abs);
   auto relative = [log_ref](const SignedLogDet& d) { return d.sign * std::exp(d.log_abs - log_ref); };
-  double tl = 0.0, th = 1.0, hl = relative(da), hh = relative(db);
-  int side = 0;   // Illinois: the value of the end kept twice in a row is halved
+  Illinois br{0.0, 1.0, relative(da), relative(db)};
   BranchPoint q = pa;
-  for (int it = 0; it < 60 && th - tl > 1e-12; ++it) {
+  for (int it = 0; it < 60 && br.hi - br.lo > 1e-12; ++it) {
     // the secant point, kept inside the bracket's inner 98 % (so the bracket shrinks)
-    const double tm = std::clamp(tl + (th - tl) * hl / (hl - hh), tl + 0.01 * (th - tl), th - 0.01 * (th - tl));
+    const double w = br.hi - br.lo;
+    const double tm = std::clamp(br.lo + w * br.f_lo / (br.f_lo - br.f_hi), br.lo + 0.01 * w, br.hi - 0.01 * w);
     q = point_on_chord(hb, pa, pb, c.scaling, tm, opt.continuation.tolerance);
-    const double hm = relative(det_at(q));
-    if ((hm > 0.0) == (hl > 0.0)) {
-      tl = tm, hl = hm;
-      if (side == -1) hh *= 0.5;
-      side = -1;
-    } else {
-      th = tm, hh = hm;
-      if (side == 1) hl *= 0.5;
-      side = 1;
-    }
+    br.update(tm, relative(det_at(q)));
   }
   return q;
 }
@@ -270,22 +280,12 @@ namespace {
 BranchPoint merge_point(const HarmonicBalance& hbp, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
                         const Eigen::VectorXd& phi, double tolerance) {
   auto f = [&](const Eigen::VectorXd& X) { return subharmonic_part(hbp, 2, X).dot(phi) / s.x[0]; };
-  double t0 = 0.0, t1 = 1.0, f0 = f(a.X), f1 = f(b.X);
-  BranchPoint best = std::fabs(f0) < std::fabs(f1) ? a : b;
-  int side = 0;
+  Illinois br{0.0, 1.0, f(a.X), f(b.X)};
+  BranchPoint best = std::fabs(br.f_lo) < std::fabs(br.f_hi) ? a : b;
   for (int it = 0; it < 40 && std::fabs(f(best.X)) > 1e-9; ++it) {
-    const double t = (t0 * f1 - t1 * f0) / (f1 - f0);
+    const double t = (br.lo * br.f_hi - br.hi * br.f_lo) / (br.f_hi - br.f_lo);
     best = point_on_chord(hbp, a, b, s, t, tolerance);
-    const double ft = f(best.X);
-    if ((ft > 0) == (f0 > 0)) {
-      t0 = t, f0 = ft;
-      if (side == -1) f1 *= 0.5;
-      side = -1;
-    } else {
-      t1 = t, f1 = ft;
-      if (side == 1) f0 *= 0.5;
-      side = 1;
-    }
+    br.update(t, f(best.X));
   }
   return best;
 }
