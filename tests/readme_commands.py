@@ -7,7 +7,8 @@ words), not an argument. Commands with placeholders (an argument in capitals suc
 GEAR.json, MODEL.json, DIR, or a `[...]` / `chNN_name` synopsis) are usage lines and are
 skipped. Each command runs from the repository root with its `--out` replaced by a folder
 under OUT_DIR (added when it has none) and `--quiet`; it must exit 0. Prints each command
-with its exit status and time; fails listing the commands that did not exit 0.
+with its exit status and time; fails listing the commands that did not exit 0. A command
+shown again (the same text, in the same or another README) runs once.
 """
 import pathlib
 import re
@@ -42,13 +43,17 @@ def runnable(words):
 
 def main():
     build, out_root = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
-    failed, n = [], 0
+    failed, n, seen = [], 0, set()
     for readme in sys.argv[3:]:
         for text in commands(pathlib.Path(readme)):
             words = shlex.split(text)
             if not runnable(words):
                 print("skip (usage line): %s" % text)
                 continue
+            if text in seen:
+                print("skip (run above): %s" % text)
+                continue
+            seen.add(text)
             n += 1
             exe = build / "bin" / words[0].split("/")[-1]
             args = words[1:]
