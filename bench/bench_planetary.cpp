@@ -123,3 +123,20 @@ static void BM_planetary_period_doubling_switch(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(planetary_period_doubled_branches(hb, c, o, f.period_doubling_depth));
 }
 BENCHMARK(BM_planetary_period_doubling_switch)->Unit(benchmark::kSecond)->Iterations(1);
+
+// The Floquet multipliers of one point of the star set with its meshes from the teeth
+// (examples/gtf_star_five_planets_teeth.json: 24 DOFs, 20 contacts whose stiffness is a
+// Fourier series of the loaded teeth): the variational equation about the HB orbit, as the
+// program's stability step runs it at each of its points (Arg: the mesh frequency, Hz).
+static void BM_planetary_teeth_floquet_point(benchmark::State& state) {
+  const PlanetaryFile f = read_planetary_file(
+      std::string(GEARHB_SOURCE_DIR) + "/programs/gearhb_planetary/examples/gtf_star_five_planets_teeth.json", {});
+  const HarmonicBalance hb = planetary_response_model(f);
+  SweepOptions o = planetary_sweep_options(f);
+  o.omega_max = 2.0 * M_PI * double(state.range(0));
+  o.omega_min = 0.99 * o.omega_max;
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+  const BranchPoint& p = c.branch.points.back();
+  for (auto _ : state) benchmark::DoNotOptimize(floquet_of_hb_variational(hb, p.X, p.omega));
+}
+BENCHMARK(BM_planetary_teeth_floquet_point)->Arg(1310)->Arg(1400)->Arg(1490)->Unit(benchmark::kMillisecond);

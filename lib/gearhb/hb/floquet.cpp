@@ -337,17 +337,20 @@ bool has_stiffness_profile(const HarmonicBalance& hb) {
 }  // namespace
 
 namespace {
+// B(t, mid, out): B at t of the segment whose midpoint is mid (see second_order_march).
+using SegmentMatrix = std::function<void(double, double, Eigen::MatrixXd&)>;
 struct SecondOrderContext {
-  const std::function<void(double, Eigen::MatrixXd&)>* B;
+  const SegmentMatrix* B;
   const Eigen::MatrixXd* C;
   int n;
   Eigen::MatrixXd Bt;
-  int cols = 0;   // columns of the state Y carried
+  int cols = 0;     // columns of the state Y carried
+  double mid = 0;   // the midpoint of the segment being integrated
 };
 // Y = [X; V] (2n x cols, column-major): X' = V, V' = -B(t) X - C V.
 int second_order_rhs(double t, const double y[], double dydt[], void* params) {
   auto* c = static_cast<SecondOrderContext*>(params);
-  (*c->B)(t, c->Bt);
+  (*c->B)(t, c->mid, c->Bt);
   const int n = c->n;
   Eigen::Map<const Eigen::MatrixXd> Y(y, 2 * n, c->cols);
   Eigen::Map<Eigen::MatrixXd> dY(dydt, 2 * n, c->cols);
@@ -362,7 +365,11 @@ int second_order_rhs(double t, const double y[], double dydt[], void* params) {
 // a fresh driver at every breakpoint, where B may jump, and at every sample time), half the
 // cost of a first-order step on A = [0 I; -B -C]: its zero and identity blocks are not
 // multiplied. `samples` (ascending, in [0, T)): the x rows of Y there, side by side into *xs.
-Eigen::MatrixXd second_order_march(const std::function<void(double, Eigen::MatrixXd&)>& B, const Eigen::MatrixXd& C,
+// B receives the midpoint of the segment it is evaluated on: a jump of B at a breakpoint is
+// the model's to place by it (GSL evaluates the first stage of a step at the breakpoint itself,
+// where a pointwise test of the switching function meets rounding: a stage on the wrong side
+// made every segment's first step shrink to 1e-11 of a period, 18 rejections a segment).
+Eigen::MatrixXd second_order_march(const SegmentMatrix& B, const Eigen::MatrixXd& C,
                                    Eigen::MatrixXd Y, double T, const std::vector<double>& breakpoints, double tol,
                                    const std::vector<double>& samples = {}, Eigen::MatrixXd* xs = nullptr) {
   const int n = int(C.rows()), cols = int(Y.cols());
@@ -387,6 +394,7 @@ Eigen::MatrixXd second_order_march(const std::function<void(double, Eigen::Matri
     // equal breakpoints (contacts that switch at the same instant, e.g. the in-phase meshes
     // of a planetary set) leave no segment between them: GSL refuses a zero first step
     if (!(t1 > t)) continue;
+    ctx.mid = 0.5 * (t + t1);
     // a fresh driver per segment: the step history must not straddle a jump of B
     gsl_odeiv2_driver* d = gsl_odeiv2_driver_alloc_y_new(&sys, gsl_odeiv2_step_rk8pd, 1e-3 * (t1 - t), tol, tol);
     if (d == nullptr) throw std::runtime_error("second_order_march: GSL could not allocate the driver");
@@ -402,7 +410,8 @@ Eigen::MatrixXd second_order_march(const std::function<void(double, Eigen::Matri
 
 // The variational equation about the HB orbit (X, omega) itself: B(t) = M^-1 (K + sum_i
 // kc_i(t) [u_i(t) > 0] n_i n_i'), u_i the HB penetration, its contact switches as breakpoints
-// (the vector field is continuous in x, so no saltation).
+// (the vector field is continuous in x, so no saltation); between two breakpoints no contact
+// switches, so [u_i > 0] is taken at the segment's midpoint.
 struct HbVariationalEquation {
   double T;
   Eigen::MatrixXd MinvK, MinvC;
@@ -429,18 +438,19 @@ struct HbVariationalEquation {
     MinvC = Minv * sys.C;
     for (const auto& ct : hb.contacts()) Minv_n.push_back(Minv * ct.normal);
   }
-  void B(double t, Eigen::MatrixXd& out) const {
+  void B(double t, double mid, Eigen::MatrixXd& out) const {
     const double th = omega * t;
     out = MinvK;
     for (std::size_t i = 0; i < u.size(); ++i) {
-      if (!(trig_series(u[i], th) > 0.0)) continue;   // open: contact_stiffness 0
+      if (!(trig_series(u[i], omega * mid) > 0.0)) continue;   // open: contact_stiffness 0
       const auto& ct = hb.contacts()[i];
       out.noalias() += stiffness_at(ct, th) * Minv_n[i] * ct.normal.transpose();
     }
   }
   Eigen::MatrixXd march(const Eigen::MatrixXd& Y0, double tol, const std::vector<double>& samples = {},
                         Eigen::MatrixXd* xs = nullptr) const {
-    return second_order_march([this](double t, Eigen::MatrixXd& out) { B(t, out); }, MinvC, Y0, T, breakpoints, tol,
+    return second_order_march([this](double t, double mid, Eigen::MatrixXd& out) { B(t, mid, out); }, MinvC, Y0, T,
+                              breakpoints, tol,
                               samples, xs);
   }
 };
