@@ -146,7 +146,7 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     extra = {}
     for ax, i in zip(axes[2:], unstable):
         for hd in diagram_panel(ax, torque_rows(diagram[0], i), torque_rows(diagram[1], i), ("up", "down"),
-                                "%s: diagram by time integration %s (up and down)"
+                                "%s: bifurcation diagram by time integration (sweeps up and down)\n%s"
                                 % (torque_label(torques[i]), bands_text(torque_rows(diagram[0], i), "speed_rpm", "rpm"))):
             extra.setdefault(hd.get_label(), hd)
     shaded = mark_no_stable_period1(axes, kn, torques)
