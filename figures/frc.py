@@ -12,7 +12,10 @@ gearhb_frc's torus key: quasi-periodic motion past a Neimark-Sacker point by two
 harmonic balance) in black dash-dot (x_max and x_min over the torus), the points whose
 stability the flow tested (torus.csv `stable`) filled where stable, open where unstable, grey
 where unresolved, with a panel of their second frequency as the rotation omega2 / omega, the
-Floquet value angle / 2 pi of each NS point marked."""
+Floquet value angle / 2 pi of each NS point marked. Where the run wrote bifurcation_diagram.csv (by
+default every run with a range with no stable period-1 orbit, over a band around each), a panel of
+its Poincare points under the response (the whole range) and bifurcation_diagram.png (the bands'
+window; poincare.py)."""
 import json
 import pathlib
 import sys
