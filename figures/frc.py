@@ -12,7 +12,10 @@ gearhb_frc's torus key: quasi-periodic motion past a Neimark-Sacker point by two
 harmonic balance) in black dash-dot (x_max and x_min over the torus), the points whose
 stability the flow tested (torus.csv `stable`) filled where stable, open where unstable, grey
 where unresolved, with a panel of their second frequency as the rotation omega2 / omega, the
-Floquet value angle / 2 pi of each NS point marked."""
+Floquet value angle / 2 pi of each NS point marked. Where the run wrote bifurcation_diagram.csv (by
+default every run with a range with no stable period-1 orbit, over a band around each), a panel of
+its Poincare points under the response (the whole range) and bifurcation_diagram.png (the bands'
+window; poincare.py)."""
 import json
 import pathlib
 import sys
@@ -23,7 +26,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
                    legend_styles, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
                    shade_no_stable_period1, unstable_period1_ranges)
-from poincare import draw_hb_section, draw_poincare  # noqa: E402
+from poincare import bands_text, draw_hb_section, draw_poincare, value_limits, window, within  # noqa: E402
 
 
 
@@ -68,14 +71,20 @@ def poincare_panel(ax, p, h, direction, sweeps=("up", "down"), title=None):
 def diagram_figure(d_dir, model, p, h):
     """bifurcation_diagram.png: the up sweep above, the down sweep below."""
     fig, axes = plt.subplots(2, 1, figsize=(6.8, 6.8), sharex=True)
+    lo, hi = window(p, "omega")
+    ylim = value_limits(p, h, "omega", "x", lo, hi)
+    h = within(h, "omega", lo, hi)
     labels = {}
     for ax, sweep in zip(axes, ("up", "down")):
         for hd in poincare_panel(ax, p, h, model["output"]["direction"], (sweep,),
                                  "sweep %s (each speed starts from the previous speed's final state)" % sweep):
             labels.setdefault(hd.get_label(), hd)
+    axes[-1].set_xlim(lo, hi)
+    for ax in axes:
+        ax.set_ylim(*ylim)
     axes[-1].set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-    fig.suptitle("%s\nbifurcation diagram by time integration (Poincare section at phase 0)"
-                 % model.get("name", "model"), fontsize=9)
+    fig.suptitle("%s\nbifurcation diagram by time integration %s (Poincare section at phase 0)"
+                 % (model.get("name", "model"), bands_text(p, "omega", "rad/s")), fontsize=9)
     axes[-1].legend(handles=list(labels.values()), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2),
                     ncol=2, frameon=False)
     save_whole(fig, d_dir / "bifurcation_diagram.png")
@@ -229,6 +238,7 @@ def poincare_below(axp, r, handles):
         more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
         torus_stability_marks(axp, r["torus"], "section_min", "section_max", labelled=False)
     axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
+    axp.set_title("bifurcation diagram by time integration %s" % bands_text(r["diagram"], "omega", "rad/s"), fontsize=8)
     axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.27), ncol=2,
                frameon=False)
 

@@ -10,10 +10,11 @@ Writes into DIR:
                     torque's period-1 curve and each period-2 branch) as a thin band under the
                     panel (drive-flank loss gold, back-flank impact purple), ISO 6336-1 method B's
                     K_v dotted where iso_kv.csv exists;
-                    with bifurcation_diagram.csv (the file's bifurcation_diagram key) one more
-                    panel per torque whose period-1 branch has an unstable stretch: the Poincare
-                    DTE (once per mesh period) over the HB branch at the same phase (poincare.py);
-  bifurcation_diagram.png  the diagram of every torque, sweep up (left) and down (right);
+                    with bifurcation_diagram.csv (by default over the speed bands around each range
+                    with no stable period-1 orbit, column band) one more panel per torque whose
+                    period-1 branch has an unstable stretch and a diagram: the Poincare DTE (once
+                    per mesh period) over the HB branch at the same phase (poincare.py);
+  bifurcation_diagram.png  the diagram of every torque that has one, sweep up (left) and down (right);
   campbell.png      mesh orders 1..4 against speed with the closed-contact natural frequencies;
   time_history.png  DTE and flank forces over two mesh periods at one impact / loss point;
   dte_spectrum.png  the DTE per mesh order at three speeds, per torque.
@@ -24,7 +25,7 @@ from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
 from style import CONTACT_COLOURS, PERIOD2_COLOURS, branch_ids, plot_branch, read_csv, rows_of, save, torque_colour
-from poincare import draw_hb_section, draw_poincare
+from poincare import bands_text, draw_hb_section, draw_poincare, value_limits, window, within
 
 # The drive flank opening is the mesh's intermittent contact (the rug colour of every chapter).
 CONTACT_COLOUR = {"drive_loss": CONTACT_COLOURS["intermittent"], "back_impact": CONTACT_COLOURS["back_impact"],
@@ -120,7 +121,8 @@ def read_diagram(d_dir):
 
 def response_figure(d_dir, params, kn, torques, frc, bif):
     diagram = read_diagram(d_dir)
-    unstable = [i for i, d in enumerate(frc) if diagram and any(int(s) == 0 for s in rows_of(d, 0)["stable"])]
+    unstable = [i for i, d in enumerate(frc) if diagram and torque_rows(diagram[0], i)["speed_rpm"]
+                and any(int(s) == 0 for s in rows_of(d, 0)["stable"])]
     curves = branches(torques, frc)
     fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
@@ -144,8 +146,8 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     extra = {}
     for ax, i in zip(axes[2:], unstable):
         for hd in diagram_panel(ax, torque_rows(diagram[0], i), torque_rows(diagram[1], i), ("up", "down"),
-                                "%s: bifurcation diagram by time integration (sweeps up and down)"
-                                % torque_label(torques[i])):
+                                "%s: bifurcation diagram by time integration (sweeps up and down)\n%s"
+                                % (torque_label(torques[i]), bands_text(torque_rows(diagram[0], i), "speed_rpm", "rpm"))):
             extra.setdefault(hd.get_label(), hd)
     shaded = mark_no_stable_period1(axes, kn, torques)
     axes[-1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
@@ -176,16 +178,25 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
 
 
 def diagram_figure(d_dir, params, torques, diagram):
-    """bifurcation_diagram.png: one row per torque, sweep up (left) and down (right)."""
-    fig, grid = plt.subplots(len(torques), 2, figsize=(12.0, 3.4 * len(torques) + 1.2), sharex=True, sharey="row",
+    """bifurcation_diagram.png: one row per torque with a diagram, sweep up (left) and down (right)."""
+    drawn = [i for i in range(len(torques)) if torque_rows(diagram[0], i)["speed_rpm"]]
+    fig, grid = plt.subplots(len(drawn), 2, figsize=(12.0, 3.4 * len(drawn) + 1.2), sharex=True, sharey="row",
                              squeeze=False)
+    lo, hi = window({c: [v[k] for k in range(len(v)) if int(diagram[0]["torque_index"][k]) - 1 in drawn]
+                     for c, v in diagram[0].items()}, "speed_rpm")
     labels = {}
-    for i, T in enumerate(torques):
+    for row, i in enumerate(drawn):
+        T = torques[i]
         p, h = torque_rows(diagram[0], i), torque_rows(diagram[1], i)
-        for ax, sweep in zip(grid[i], ("up", "down")):
-            for hd in diagram_panel(ax, p, h, (sweep,), "%s, sweep %s" % (torque_label(T), sweep)):
+        ylim = value_limits(p, h, "speed_rpm", "dte_um", lo, hi)
+        h = within(h, "speed_rpm", lo, hi)
+        grid[row][0].set_ylim(*ylim)   # the row shares y
+        for ax, sweep in zip(grid[row], ("up", "down")):
+            for hd in diagram_panel(ax, p, h, (sweep,), "%s, sweep %s, %s" % (
+                    torque_label(T), sweep, bands_text(p, "speed_rpm", "rpm"))):
                 labels.setdefault(hd.get_label(), hd)
     for ax in grid[-1]:
+        ax.set_xlim(lo, hi)
         ax.set_xlabel("speed of gear 1 n1 [rpm]")
     fig.suptitle("%s: bifurcation diagram by time integration\n(each speed starts from the previous speed's "
                  "final state; the DTE once per mesh period, at phase 0)" % params.get("name", "gear pair"),

@@ -4,7 +4,9 @@ of bifurcation_diagram.csv over the HB branch at the same phase (bifurcation_dia
 solid where stable, dashed where unstable).
 
 One convention: the motion's colour (MOTION_COLOURS), the sweep's marker (up: dot, down:
-small x); a period-n speed draws its n points, any other speed its whole cloud."""
+small x); a period-n speed draws its n points, any other speed its whole cloud. The diagram covers
+its bands (column band: by default the ranges with no stable period-1 orbit, padded), the HB
+section the whole branch."""
 from matplotlib.lines import Line2D
 
 from style import plot_branch
@@ -55,3 +57,47 @@ def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at
     plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb")
     return [Line2D([], [], color=colour, ls="-", label=label + " (stable)"),
             Line2D([], [], color=colour, ls="--", label=label + " (unstable)")]
+
+
+def band_spans(d, x):
+    """[(lo, hi)] of the diagram's x per band (column band, 1, 2, ...; one span without it)."""
+    bands = d["band"] if "band" in d else [1] * len(d[x])
+    spans = {}
+    for b, v in zip(bands, d[x]):
+        lo, hi = spans.get(b, (v, v))
+        spans[b] = (min(lo, v), max(hi, v))
+    return [spans[b] for b in sorted(spans)]
+
+
+def number(v):
+    """4 digits, whole numbers from 1000 up (no exponent)."""
+    return "%.0f" % v if abs(v) >= 1000 else "%.4g" % v
+
+
+def bands_text(d, x, unit):
+    """'over 0.33-0.41 rad/s' or 'over 2 bands: 0.33-0.41, 0.9-1.2 rad/s': where the diagram was computed."""
+    spans = band_spans(d, x)
+    text = ", ".join("%s-%s" % (number(a), number(b)) for a, b in spans)
+    return "over %s%s %s" % ("%d bands: " % len(spans) if len(spans) > 1 else "", text, unit)
+
+
+def within(h, x, lo, hi):
+    """The rows of table h with x in [lo, hi] and their neighbours (the HB section over a diagram's own
+    window: its line runs on to the window's edges, where the axis clips it)."""
+    inside = [lo <= v <= hi for v in h[x]]
+    keep = [i for i in range(len(inside)) if any(inside[max(i - 1, 0):i + 2])]
+    return {c: [v[i] for i in keep] for c, v in h.items()}
+
+
+def window(d, x, margin=0.02):
+    """(lo, hi): the diagram's span of x (all its bands), widened by margin of it on either side."""
+    lo, hi = min(d[x]), max(d[x])
+    return lo - margin * (hi - lo), hi + margin * (hi - lo)
+
+
+def value_limits(d, h, x, y, lo, hi, margin=0.05):
+    """y limits that hold the diagram's points and the HB section's values with x in [lo, hi]."""
+    ys = list(d[y]) + [v for u, v in zip(h[x], h[y]) if lo <= u <= hi]
+    a, b = min(ys), max(ys)
+    pad = margin * (b - a) if b > a else 0.05 * abs(a) + 1e-12
+    return a - pad, b + pad

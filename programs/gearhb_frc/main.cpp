@@ -180,7 +180,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
   curve_key_numbers(run, hb, c);
-  if (model_.diagram.on) bifurcation_diagram(run, hb, c);
+  bifurcation_diagram(run, hb, c);
 }
 
 // How many period-2 branches, how many merged, their points, where each starts and ends.
@@ -226,22 +226,37 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
   }
 }
 
-// Step 3b (with the file's bifurcation_diagram key): the diagram by time integration over the
-// same range, up then down, from the HB orbit at the lowest frequency (bifurcation_diagram.csv:
-// omega, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov; and
-// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath).
+// Step 3c: the diagram by time integration (app/bifurcation_input.hpp), up then down over each
+// band of the file's bifurcation_diagram key - by default each range with no stable period-1
+// orbit, padded to show period 1 on both sides; none where every range is stable or the key is
+// false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
+// omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;
+// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath.
 void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+  if (!model_.diagram.on) return;
   const double lo = std::min(model_.omega_from, model_.omega_to), hi = std::max(model_.omega_from, model_.omega_to);
-  const BifurcationDiagram d = diagram_of_curve(run, hb, c, lo, hi, model_.diagram.options, "bifurcation_diagram", "");
-  auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
-  Table t(bifurcation_columns({"omega"}, "x"));
-  add_bifurcation_rows(t, d, model_.output, 1.0, lead);
+  const std::vector<DiagramBand> bands = input_bands(model_.diagram, c, lo, hi, hb.dofs());
+  if (bands.empty()) {
+    run.say(model_.name + ": no bifurcation diagram: a stable period-1 orbit over the whole range");
+    return;
+  }
+  const std::string stiff = diagram_stiffness(hb, bands.front().omega_lo);
+  if (!stiff.empty()) {
+    run.say(model_.name + ": " + stiff);
+    return;
+  }
+  auto rad_s = [](double w) { return w; };
+  run.say(model_.name + ": " + diagram_bands_text(bands, rad_s, "rad/s"));
+  const BifurcationDiagram d = diagram_of_bands(run, hb, c, bands, model_.diagram.options, "bifurcation_diagram", "");
+  Table t(bifurcation_columns({"omega", "band"}, "x"));
+  add_bifurcation_rows(t, d, model_.output, 1.0, [&](double w) { return std::vector<Table::Cell>{w, band_of(bands, w)}; });
   run.write("bifurcation_diagram.csv", t);
   Table h(hb_section_columns({"omega"}, "x"));
-  add_hb_section_rows(h, hb, c, d, model_.output, 1.0, lead);
+  add_hb_section_rows(h, hb, c, d, model_.output, 1.0, [](double w) { return std::vector<Table::Cell>{w}; });
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
-  run.say(model_.name + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
+  run.key_numbers().add("diagram_bands", double(bands.size()), "-");
+  run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
 }
 
 // Step 3b (with the file's torus key): quasi-periodic motion past each Neimark-Sacker point,
@@ -310,8 +325,9 @@ int main(int argc, char** argv) {
               "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches: columns\n"
               "period, branch), bifurcations.csv,\n"
               "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
-              "and frc.png; with the bifurcation_diagram key also bifurcation_diagram.csv and\n"
-              "bifurcation_diagram.png; with the torus key also torus.csv (quasi-periodic branches).\n\n" +
+              "and frc.png; where some range has no stable period-1 orbit (or with bifurcation_diagram.range\n"
+              "whole) also bifurcation_diagram.csv, bifurcation_diagram_hb.csv and bifurcation_diagram.png;\n"
+              "with the torus key also torus.csv (quasi-periodic branches).\n\n" +
                   model_file_help());
   FrequencyResponseFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

@@ -206,8 +206,8 @@ class GearPairFromFile {
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void axial_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
-  BifurcationDiagram bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
-                                         Table& t, Table& hb_section) const;
+  bool bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r, BifurcationDiagram& d,
+                           Table& t, Table& hb_section) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * hz(omega) / file_.pair.gear1.teeth; }
@@ -503,7 +503,10 @@ void GearPairFromFile::dynamics(Run& run) const {
   Table history({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
   double history_kv = 0.0;
   const std::vector<std::string> lead{"torque_index", "torque_Nm", "f_mesh_hz", "speed_rpm"};
-  Table diagram(bifurcation_columns(lead, "dte_um")), diagram_hb(hb_section_columns(lead, "dte_um"));
+  std::vector<std::string> banded = lead;
+  banded.emplace_back("band");
+  Table diagram(bifurcation_columns(banded, "dte_um")), diagram_hb(hb_section_columns(lead, "dte_um"));
+  bool drawn = false;
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
     const DteGear mesh = mesh_at(i);
     const HarmonicBalance hb = gear_mesh_model(mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
@@ -514,8 +517,9 @@ void GearPairFromFile::dynamics(Run& run) const {
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
     BifurcationDiagram bd;
-    if (file_.diagram.on) bd = bifurcation_diagram(run, i, hb, r, diagram, diagram_hb);
-    any_motion_key_numbers(run, i, hb, r, file_.diagram.on ? &bd : nullptr);
+    const bool has = bifurcation_diagram(run, i, hb, r, bd, diagram, diagram_hb);
+    drawn = drawn || has;
+    any_motion_key_numbers(run, i, hb, r, has ? &bd : nullptr);
     const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
     for (std::size_t k = 0; k < f.size(); ++k)
       modes.add_row({long(i + 1), file_.torques[i], long(k + 1), f[k], speed_rpm(2.0 * M_PI * f[k])});
@@ -523,30 +527,46 @@ void GearPairFromFile::dynamics(Run& run) const {
   run.write("modes.csv", modes);
   run.write("dte_spectrum.csv", spectrum);
   if (history.rows() > 0) run.write("time_history.csv", history);
-  if (file_.diagram.on) {
+  if (drawn) {
     run.write("bifurcation_diagram.csv", diagram);
     run.write("bifurcation_diagram_hb.csv", diagram_hb);
   }
 }
 
-// With the file's bifurcation_diagram key: the diagram by time integration over the speed
-// range, up then down, from the HB orbit at the lowest speed (rows of bifurcation_diagram.csv:
-// the DTE at phase 0 of each mesh period, um; bifurcation_diagram_hb.csv: the HB branch's).
-BifurcationDiagram GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb,
-                                                         const Response& r, Table& t, Table& hb_section) const {
+// The diagram by time integration of torque i (app/bifurcation_input.hpp) into d, up then down
+// over each band of the file's bifurcation_diagram key - by default each speed range with no
+// stable period-1 orbit, padded to show period 1 on both sides; false (said in one line) where
+// there is none (every range stable, the key false) or the integration is stiff. Rows of
+// bifurcation_diagram.csv: the DTE at phase 0 of each mesh period, um, and the band (1, 2, ...);
+// bifurcation_diagram_hb.csv: the HB branch's.
+bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+                                           BifurcationDiagram& d, Table& t, Table& hb_section) const {
+  if (!file_.diagram.on) return false;
   const std::string n = std::to_string(i + 1);
   const double lo = 2.0 * M_PI * file_.dynamics.f_min_hz, hi = 2.0 * M_PI * file_.dynamics.f_max_hz;
-  const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, file_.diagram.options,
-                                                "bifurcation_diagram_" + n, torque_label(i) + ": ");
+  const std::vector<DiagramBand> bands = input_bands(file_.diagram, r.curve, lo, hi, hb.dofs());
+  const std::string stiff = bands.empty() ? "" : diagram_stiffness(hb, bands.front().omega_lo);
+  if (bands.empty() || !stiff.empty()) {
+    run.say(torque_label(i) + ": " + (bands.empty() ? "no bifurcation diagram: a stable period-1 orbit over the whole speed range" : stiff));
+    return false;
+  }
+  auto rpm = [&](double w) { return speed_rpm(w); };
+  run.say(torque_label(i) + ": " + diagram_bands_text(bands, rpm, "rpm"));
+  d = diagram_of_bands(run, hb, r.curve, bands, file_.diagram.options, "bifurcation_diagram_" + n, torque_label(i) + ": ");
   auto lead = [&](double w) {
     return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
-  add_bifurcation_rows(t, d, q, 1e6, lead);
+  add_bifurcation_rows(t, d, q, 1e6, [&](double w) {
+    std::vector<Table::Cell> row = lead(w);
+    row.emplace_back(band_of(bands, w));
+    return row;
+  });
   add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
-  run.say(torque_label(i) + ": " + diagram_summary(d, [&](double w) { return speed_rpm(w); }, "rpm"));
-  return d;
+  run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
+  run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));
+  return true;
 }
 
 // Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
@@ -897,7 +917,9 @@ int main(int argc, char** argv) {
               "key_numbers.json, params.json (the resolved file), timings.csv, *.png; with a speed range\n"
               "also frc_<i>.csv (with the period-2 and period-4 branches: columns period, branch), bifurcations_<i>.csv,\n"
               "check_time_integration_<i>.csv, modes.csv,\n"
-              "dte_spectrum.csv, time_history.csv, iso_kv.csv; with model.method fe also root_stress_<i>.csv,\n"
+              "dte_spectrum.csv, time_history.csv, iso_kv.csv; where a torque has a speed range with no stable\n"
+              "period-1 orbit (or with bifurcation_diagram.range whole) bifurcation_diagram.csv, bifurcation_diagram_hb.csv;\n"
+              "with model.method fe also root_stress_<i>.csv,\n"
               "fillet_stress_<i>.csv, contact_<i>.csv; a helical or lead-modified face also load_map_<i>.csv.\n\n" +
                   gear_file_help());
   GearPairFromFile program(study);

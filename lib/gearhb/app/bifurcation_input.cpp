@@ -6,6 +6,7 @@
 
 #include "gearhb/app/json_file.hpp"
 #include "gearhb/core/newton.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
 namespace gearhb {
@@ -15,11 +16,26 @@ BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, con
   if (!root.is_object() || !root.contains("bifurcation_diagram")) return in;
   const nlohmann::json& j = root["bifurcation_diagram"];
   const std::string where = "bifurcation_diagram";
-  if (!j.is_object()) fail_key(file, where, "must be an object of options ({} for the defaults)");
+  in.given = true;
+  if (j.is_boolean()) {
+    in.on = j.get<bool>();
+    return in;
+  }
+  if (!j.is_object()) fail_key(file, where, "must be true, false or an object of options ({} for the defaults)");
   only_keys(j, file, where,
-            {"speeds", "transient_periods", "periods", "max_period", "period_tol", "lyapunov_periods",
-             "lyapunov_threshold"});
-  in.on = true;
+            {"range", "margin", "speeds", "transient_periods", "periods", "max_period", "period_tol",
+             "lyapunov_periods", "lyapunov_threshold"});
+  if (j.contains("range")) {
+    const nlohmann::json& r = j["range"];
+    if (!r.is_string() || (r.get<std::string>() != "unstable" && r.get<std::string>() != "whole"))
+      fail_key(file, where + ".range", "must be \"unstable\" or \"whole\"");
+    in.whole_range = r.get<std::string>() == "whole";
+  }
+  if (j.contains("margin")) {
+    in.bands.margin = json_number(j["margin"], file, where + ".margin");
+    if (!(in.bands.margin >= 0.0 && in.bands.margin <= 10.0))
+      fail_key(file, where + ".margin", "must be in [0, 10] (a fraction of each range's width)");
+  }
   BifurcationDiagramOptions& o = in.options;
   auto whole = [&](const char* key, int& v, int lo, int hi) {   // the ranges of check_bifurcation_options
     if (j.contains(key)) v = json_whole(j[key], file, where + "." + key, lo, hi);
@@ -28,6 +44,7 @@ BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, con
     if (j.contains(key)) v = json_number(j[key], file, where + "." + key);
   };
   whole("speeds", o.speeds, 2, 100000);
+  if (j.contains("speeds")) in.speeds = o.speeds;
   whole("transient_periods", o.transient_periods, 0, 1000000);
   whole("periods", o.periods, 2, 100000);
   whole("max_period", o.max_period, 1, 64);
@@ -40,21 +57,80 @@ BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, con
   return in;
 }
 
+std::vector<DiagramBand> diagram_bands(const FrequencyCurve& c, double omega_min, double omega_max, int dofs,
+                                       const DiagramBandOptions& o, int speeds) {
+  const int n = std::max(dofs, 1), floor = std::max(o.least, o.floor / n);
+  const double cap = std::max(1.0, double(o.cap) / n);
+  const double full = omega_max - omega_min;
+  std::vector<DiagramBand> bands;
+  for (const auto& [a, b] : uncovered(omega_min, omega_max, stable_intervals(c))) {
+    const double pad = std::max(o.margin * (b - a), o.min_margin * full);
+    const double lo = std::max(omega_min, a - pad), hi = std::min(omega_max, b + pad);
+    if (!bands.empty() && lo <= bands.back().omega_hi)
+      bands.back().omega_hi = std::max(bands.back().omega_hi, hi);
+    else
+      bands.push_back({lo, hi, 0});
+  }
+  long total = 0;
+  for (DiagramBand& d : bands) {
+    d.speeds = speeds > 0 ? speeds : std::max(floor, int(std::ceil(o.density * (d.omega_hi - d.omega_lo) / full)));
+    total += d.speeds;
+  }
+  if (speeds <= 0 && double(total) > cap)
+    for (DiagramBand& d : bands) d.speeds = std::max(floor, int(double(d.speeds) * cap / double(total)));
+  return bands;
+}
+
+long band_of(const std::vector<DiagramBand>& bands, double omega) {
+  for (std::size_t k = 0; k < bands.size(); ++k)
+    if (bands[k].omega_lo <= omega && omega <= bands[k].omega_hi) return long(k + 1);
+  return 0;
+}
+
+std::vector<DiagramBand> input_bands(const BifurcationDiagramInput& in, const FrequencyCurve& c, double omega_min,
+                                     double omega_max, int dofs) {
+  if (!in.on) return {};
+  if (in.whole_range) return {{omega_min, omega_max, in.options.speeds}};
+  return diagram_bands(c, omega_min, omega_max, dofs, in.bands, in.speeds);
+}
+
+std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo) {
+  const double stiff = fastest_rate(hb) * 2.0 * M_PI / omega_lo;
+  if (!(stiff > 1e4)) return "";
+  char line[160];
+  std::snprintf(line, sizeof line, "no bifurcation diagram: the time integration is stiff (fastest rate x period %.3g > 1e4)",
+                stiff);
+  return line;
+}
+
 std::string bifurcation_diagram_help() {
   const BifurcationDiagramOptions d;
+  const DiagramBandOptions b;
   auto num = [](double v) {
     char s[32];
     std::snprintf(s, sizeof s, "%g", v);
     return std::string(s);
   };
-  return "  bifurcation_diagram   optional (absent: not computed): the diagram by time integration, an object of\n"
-         "                        speeds (" + std::to_string(d.speeds) + " per sweep, up then down), transient_periods (" +
+  return "  bifurcation_diagram   optional: the diagram by time integration. Absent or true: over each range with no\n"
+         "                        stable period-1 orbit, padded by margin (" + num(b.margin) + ") x its width (at least " +
+         num(b.min_margin) + " x the whole range)\n"
+         "                        on either side, clipped to the range, overlapping bands merged; speeds per sweep " +
+         num(b.density) + " x band / range,\n"
+         "                        at least " + std::to_string(b.floor) + " / n a band (n the DOFs; at least " +
+         std::to_string(b.least) + "), at most " + std::to_string(b.cap) +
+         " / n over all bands; none where every range is stable.\n"
+         "                        false: none. An object: range (\"unstable\": those bands, default; \"whole\": the whole range, speeds " +
+         std::to_string(d.speeds) + "), margin,\n"
+         "                        speeds (per sweep of each band, up then down), transient_periods (" +
          std::to_string(d.transient_periods) + ", at most), periods (" + std::to_string(d.periods) +
-         " Poincare points), max_period (" + std::to_string(d.max_period) + "),\n"
-         "                        period_tol (" + num(d.period_tol) + " of the typical displacement), lyapunov_periods (" +
-         std::to_string(d.lyapunov_periods) + "), lyapunov_threshold (" + num(d.lyapunov_threshold) +
-         " per forcing period);\n"
-         "                        writes bifurcation_diagram.csv and bifurcation_diagram.png\n";
+         " Poincare points),\n"
+         "                        max_period (" + std::to_string(d.max_period) + "), period_tol (" + num(d.period_tol) +
+         " of the typical displacement), lyapunov_periods (" + std::to_string(d.lyapunov_periods) +
+         "),\n"
+         "                        lyapunov_threshold (" + num(d.lyapunov_threshold) + " per forcing period); skipped, said in one "
+         "line, where the integration is stiff;\n"
+         "                        writes bifurcation_diagram.csv (column band: 1, 2, ...), bifurcation_diagram_hb.csv and "
+         "bifurcation_diagram.png\n";
 }
 
 int read_period_doubling_depth(const nlohmann::json& root, const std::string& file) {
@@ -105,19 +181,67 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
   return lead;
 }
 
+namespace {
+
+// The diagram over [lo, hi] from the HB orbit of point `start` of c, progress lines per speed.
+BifurcationDiagram diagram_from(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t start,
+                                double lo, double hi, const BifurcationDiagramOptions& o, const std::string& label) {
+  const auto& p0 = c.branch.points[start];
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(hb, p0.X, p0.omega, x0, v0);
+  return bifurcation_diagram(hb, lo, hi, x0, v0, o, [&](const DiagramPoint& p, int k) {
+    run.progress(label + "bifurcation diagram, sweep " + (p.up ? "up, " : "down, ") + to_string(p.motion), long(k),
+                 p.omega, (hi - lo) / (o.speeds - 1));
+  });
+}
+
+}  // namespace
+
+BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                    const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
+                                    const std::string& step, const std::string& label) {
+  o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  const auto& P = c.branch.points;
+  return run.timed(step, [&] {
+    BifurcationDiagram all;
+    for (const DiagramBand& b : bands) {
+      std::size_t start = 0;   // nearest b.omega_lo, a stable point first
+      auto better = [&](std::size_t i, std::size_t j) {
+        const bool si = i < c.stable.size() && c.stable[i], sj = j < c.stable.size() && c.stable[j];
+        if (si != sj) return si;
+        return std::abs(P[i].omega - b.omega_lo) < std::abs(P[j].omega - b.omega_lo);
+      };
+      for (std::size_t i = 1; i < P.size(); ++i)
+        if (better(i, start)) start = i;
+      o.speeds = b.speeds;
+      BifurcationDiagram d = diagram_from(run, hb, c, start, b.omega_lo, b.omega_hi, o, label);
+      all.points.insert(all.points.end(), std::make_move_iterator(d.points.begin()),
+                        std::make_move_iterator(d.points.end()));
+    }
+    return all;
+  });
+}
+
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
                                     BifurcationDiagramOptions o, const std::string& step, const std::string& label) {
   o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
   const auto& P = c.branch.points;
   const auto lowest = std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; });
-  Eigen::VectorXd x0, v0;
-  hb_initial_state(hb, lowest->X, lowest->omega, x0, v0);
-  return run.timed(step, [&] {
-    return bifurcation_diagram(hb, lo, hi, x0, v0, o, [&](const DiagramPoint& p, int k) {
-      run.progress(label + "bifurcation diagram, sweep " + (p.up ? "up, " : "down, ") + to_string(p.motion), long(k),
-                   p.omega, (hi - lo) / (o.speeds - 1));
-    });
-  });
+  return run.timed(step, [&] { return diagram_from(run, hb, c, std::size_t(lowest - P.begin()), lo, hi, o, label); });
+}
+
+std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std::function<double(double)>& speed,
+                               const std::string& unit) {
+  std::string text = "bifurcation diagram over " + std::to_string(bands.size()) + (bands.size() == 1 ? " band: " : " bands: ");
+  auto num = [](double v) {   // 4 digits, whole numbers from 1000 up (no exponent)
+    char s[40];
+    std::snprintf(s, sizeof s, std::abs(v) >= 1000.0 ? "%.0f" : "%.4g", v);
+    return std::string(s);
+  };
+  for (std::size_t k = 0; k < bands.size(); ++k)
+    text += (k ? ", " : "") + num(speed(bands[k].omega_lo)) + "-" + num(speed(bands[k].omega_hi)) + " " + unit + " (" +
+            std::to_string(bands[k].speeds) + " speeds)";
+  return text;
 }
 
 void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std::string& suffix) {

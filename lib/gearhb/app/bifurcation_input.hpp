@@ -1,12 +1,23 @@
 #pragma once
 // The `bifurcation_diagram` key that gearhb_frc's model file and gearhb_gear's gear file
-// share (issue 34 §3): absent, the diagram is not computed (existing runs unchanged);
-// present, an object of the options of hb/bifurcation_diagram.hpp, each optional with the
-// library's default:
+// share (issue 34 §3, §4): the diagram by time integration is drawn by default under every
+// frequency response with a stretch where no period-1 orbit is stable.
 //
-//   "bifurcation_diagram": {"speeds": 200, "transient_periods": 400, "periods": 64,
-//                           "max_period": 8, "period_tol": 1e-6,
-//                           "lyapunov_periods": 200, "lyapunov_threshold": 0.02}
+//   absent or true   the automatic bands (diagram_bands): each range with no stable period-1
+//                    orbit, padded by a margin, speeds from a density with a floor and a cap;
+//                    no diagram where every range is stable
+//   false            no diagram
+//   an object        the options of hb/bifurcation_diagram.hpp, each optional with the
+//                    library's default, and two of its own:
+//
+//   "bifurcation_diagram": {"range": "unstable" | "whole", "margin": 0.25, "speeds": 200,
+//                           "transient_periods": 400, "periods": 64, "max_period": 8,
+//                           "period_tol": 1e-6, "lyapunov_periods": 200, "lyapunov_threshold": 0.02}
+//
+//   range   "unstable" (default): the automatic bands; "whole": one band over the file's whole
+//           range (speeds default 200), with or without unstable stretches
+//   margin  the bands' margin as a fraction of each range's width (DiagramBandOptions)
+//   speeds  per sweep of each band (given: instead of the density rule)
 //
 // An option out of range is a UsageError naming the key (exit 2). And the table both
 // programs write, bifurcation_diagram.csv: one row per Poincare point.
@@ -23,8 +34,46 @@
 
 namespace gearhb {
 
+// How the automatic bands are laid out (diagram_bands). Each range [a, b] with no stable
+// period-1 orbit is padded by max(margin (b - a), min_margin (omega_max - omega_min)) on either
+// side, so that the diagram shows the period-1 motion on both sides, and clipped to [omega_min,
+// omega_max]; padded ranges that overlap become one band. Speeds per sweep of a band: density x
+// its width / (omega_max - omega_min), at least floor / n (n the model's DOFs, and at least
+// `least`); where the bands together would take more than cap / n, each is scaled down to its
+// share of it, still at least that floor (so bands x floor bounds the cost when there are many).
+// Why per DOF: one speed of one sweep (a transient, 64 Poincare points, a Lyapunov exponent where
+// not periodic) cost 30-110 ms for one or two DOFs and 280-350 ms for six on the examples (the
+// loaded 2-core machine), about in proportion to n; the cap keeps a diagram to a few seconds
+// (the measured costs: gearhb_frc's README, gearhb_gear's NOTES).
+struct DiagramBandOptions {
+  double margin = 0.25;       // of the range's width, on either side
+  double min_margin = 0.02;   // of the whole range, on either side (a narrow range still shows its sides)
+  double density = 300.0;     // speeds per sweep over the whole range's width
+  int floor = 12;             // fewest speeds per sweep of a band, for one DOF (divided by n)
+  int least = 4;              // ... and never fewer
+  int cap = 40;               // most speeds per sweep of all bands together, for one DOF (divided by n)
+};
+
+struct DiagramBand {
+  double omega_lo = 0.0, omega_hi = 0.0;   // rad/s
+  int speeds = 0;                          // per sweep
+};
+
+// The bands of the diagram over the curve c's ranges with no stable period-1 orbit within
+// [omega_min, omega_max] (uncovered(omega_min, omega_max, stable_intervals(c)), as
+// add_unstable_period1_ranges counts them), in increasing omega; empty where every range is
+// stable. dofs: the model's n. speeds > 0: every band gets that many speeds instead of the density rule.
+std::vector<DiagramBand> diagram_bands(const FrequencyCurve& c, double omega_min, double omega_max, int dofs,
+                                       const DiagramBandOptions& o = {}, int speeds = 0);
+// The band (1-based) that holds omega, 0 if none.
+long band_of(const std::vector<DiagramBand>& bands, double omega);
+
 struct BifurcationDiagramInput {
-  bool on = false;
+  bool on = true;               // false: "bifurcation_diagram": false
+  bool given = false;           // the key is in the file (true, false or an object)
+  bool whole_range = false;     // "range": "whole"
+  int speeds = 0;               // the object's speeds (0: not given; then the density rule)
+  DiagramBandOptions bands;     // margin from the object; the rest as stated
   BifurcationDiagramOptions options;
 };
 
@@ -59,11 +108,34 @@ void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCur
                          const std::function<std::vector<Table::Cell>(double)>& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
 
+// The bands a program draws its diagram over for the curve c on [omega_min, omega_max]: the one
+// band of the whole range ("range": "whole": speeds given or the library's 200), else
+// diagram_bands; none when the input is off.
+std::vector<DiagramBand> input_bands(const BifurcationDiagramInput& in, const FrequencyCurve& c, double omega_min,
+                                     double omega_max, int dofs);
+
+// The one line saying why no diagram is computed where the explicit time integration would be
+// stiff, "" where it is not: fastest_rate(hb) x the longest period 2 pi / omega_lo above 1e4
+// (about 2000 rk8pd steps a period; chapter 6's rule).
+std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
+
+// The diagram of every band (their points concatenated: band 1 up and down, band 2 up and down,
+// ...), each band swept from the HB orbit of c nearest its lower end among the stable points
+// (the nearest of all if none is stable), as one timed step.
+BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                    const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
+                                    const std::string& step, const std::string& label);
+
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
 // frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning
 // with `label`.
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
                                     BifurcationDiagramOptions o, const std::string& step, const std::string& label);
+
+// One line for the console: "bifurcation diagram over N band(s): lo-hi unit (n speeds), ...",
+// in the program's unit (speed(omega)).
+std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std::function<double(double)>& speed,
+                               const std::string& unit);
 
 // Key numbers of a diagram, each name ending in `suffix` ("" or "_<i>"): the speeds (both
 // sweeps counted) of each motion, diagram_<motion>_speeds, and the largest period seen,

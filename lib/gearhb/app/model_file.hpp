@@ -17,7 +17,7 @@
 //     "omega":     {"from": 0.8, "to": 0.5},              [rad/s], either direction
 //     "output":    {"direction": [1, 0]},                 the plotted coordinate q' x
 //     "solver":    {"exact_contact": 1, "ds_max": 0.02},
-//     "bifurcation_diagram": {"speeds": 200}               optional (app/bifurcation_input.hpp)
+//     "bifurcation_diagram": {"range": "whole"}           optional (app/bifurcation_input.hpp)
 //     "torus": {"harmonics1": 10, "harmonics2": 4,           optional (hb/quasi_periodic.hpp)
 //               "stability_every": 5, "stability_periods": 400}
 //   }
@@ -58,7 +58,7 @@ struct ModelFile {
   Eigen::VectorXd output;                    // the plotted coordinate
   bool exact_contact = true;
   double ds_max = 0.02;
-  BifurcationDiagramInput diagram;           // the bifurcation diagram by time integration (off if absent)
+  BifurcationDiagramInput diagram;           // the bifurcation diagram by time integration (over the unstable ranges if absent)
   // period_doubling.depth: 0 = none, 1 = a period-2 branch from each located PD of the
   // period-1 branch (the default; period-4 branches from their PDs are not computed yet)
   int period_doubling_depth = 1;

@@ -500,7 +500,7 @@ GearFile read_gear_json(const nlohmann::json& j, const std::string& path) {
   read_dynamics(f, j, path);
   check_pair(f, j, model, path);
   f.diagram = read_bifurcation_diagram(j, path);
-  if (f.diagram.on && !f.dynamics.present)
+  if (f.diagram.given && f.diagram.on && !f.dynamics.present)
     fail_key(path, "bifurcation_diagram", "needs the speed range of the dynamics (speed)");
   f.period_doubling_depth = read_period_doubling_depth(j, path);
   if (j.contains("period_doubling") && !f.dynamics.present)

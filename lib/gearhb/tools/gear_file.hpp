@@ -107,7 +107,7 @@ struct GearFile {
   double harris_from = 0, harris_to = 0;   // [N m]
   int harris_points = 0;
   GearDynamicsInput dynamics;
-  BifurcationDiagramInput diagram;  // bifurcation_diagram (app/bifurcation_input.hpp): off if absent
+  BifurcationDiagramInput diagram;  // bifurcation_diagram (app/bifurcation_input.hpp): over the unstable ranges if absent
   int period_doubling_depth = 1;    // period_doubling.depth (app/bifurcation_input.hpp): 0 | 1
   nlohmann::json resolved;         // the file after overrides (params.json)
 };
