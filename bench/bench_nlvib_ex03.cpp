@@ -77,6 +77,7 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   const FrequencyCurve c = sweep_frequency(hb, o, "ex03");
   PeriodDoublingOptions pdo;
   pdo.fast_iterations = int(st.range(0));
+  pdo.curvature_predictor = st.range(1) != 0;
   std::size_t points = 0;
   int rejected = 0, iterations = 0;
   for (auto _ : st) {
@@ -92,8 +93,10 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   st.counters["iterations"] = double(iterations);           // corrector iterations of the accepted points
 }
 // fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 3, the default: the
-// period-2 corrector takes 4 iterations a step, so the step never grows; 4 lets it grow).
-BENCHMARK(BM_Ex03Period2Branch)->Arg(3)->Arg(4)->ArgNames({"fast_iterations"})->Unit(benchmark::kMillisecond);
+// period-2 corrector takes 4 iterations a step, so the step grows only now and then; 4 lets it
+// grow); curvature: PeriodDoublingOptions::curvature_predictor (0, the default: off).
+BENCHMARK(BM_Ex03Period2Branch)->ArgsProduct({{3, 4}, {0, 1}})->ArgNames({"fast_iterations", "curvature"})
+    ->Unit(benchmark::kMillisecond);
 
 // One corrector iteration of that branch at its middle point: the period-2 model's
 // linearization (residual, product matrix, condensed system) and one bordered solve.

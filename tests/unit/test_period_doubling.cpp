@@ -92,6 +92,33 @@ TEST(PeriodDoubling, Ex03BranchNeverStepsOntoThePeriodOneBranch) {
   }
 }
 
+// PeriodDoublingOptions::curvature_predictor (off by default; bench_nlvib_ex03.cpp: 57 points
+// instead of 87): the same branch. Its ends against the exact-flow PDs (independent of HB), no
+// point on the period-1 branch, and its own bifurcations those of the default sampling (each
+// located on the exact flow to 1e-9 of its chord, so two samplings agree to ~1e-10 in omega).
+TEST(PeriodDoubling, Ex03BranchWithTheCurvaturePredictorIsTheSameBranch) {
+  const auto& e = ex03();
+  ASSERT_EQ(e.br.size(), 1u);
+  PeriodDoublingOptions pdo;
+  pdo.curvature_predictor = true;
+  const auto br = period_doubled_branches(e.hb, e.c, e.o, pdo);
+  ASSERT_EQ(br.size(), 1u);
+  const PeriodDoubledBranch &b = br[0], &d = e.br[0];
+  EXPECT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+  EXPECT_NEAR(b.omega_start, kPdHigh, 1e-9);
+  EXPECT_NEAR(b.omega_end, kPdLow, 5e-6) << b.why;
+  EXPECT_LT(b.curve.branch.points.size(), d.curve.branch.points.size());
+  const auto& P = b.curve.branch.points;
+  for (std::size_t k = 1; k + 1 < P.size(); ++k)
+    EXPECT_GT(odd_norm(b, P[k]), 1e-6) << "point " << k << " at omega " << 2.0 * P[k].omega;
+  EXPECT_GE(d.curve.bifurcations.size(), 2u);   // the branch's two folds, at least
+  ASSERT_EQ(b.curve.bifurcations.size(), d.curve.bifurcations.size());
+  for (std::size_t k = 0; k < d.curve.bifurcations.size(); ++k) {
+    EXPECT_EQ(b.curve.bifurcations[k].type, d.curve.bifurcations[k].type) << k;
+    EXPECT_NEAR(b.curve.bifurcations[k].omega, d.curve.bifurcations[k].omega, 1e-8) << k;
+  }
+}
+
 TEST(PeriodDoubling, Ex03StablePointsAreSeenByTimeIntegration) {
   const auto& e = ex03();
   ASSERT_EQ(e.br.size(), 1u);

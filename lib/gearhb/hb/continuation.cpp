@@ -154,10 +154,12 @@ struct Step {
   std::uint64_t regime = 0;
 };
 bool predict_correct(Scaled& S, const ContinuationOptions& opt, const Eigen::VectorXd& y, const Eigen::VectorXd& t,
-                     std::uint64_t regime, double& ds, Branch& b, Step& out, Failure& failure) {
+                     const Eigen::VectorXd& curvature, std::uint64_t regime, double& ds, Branch& b, Step& out,
+                     Failure& failure) {
   const double cos_turn = std::cos(opt.max_turn_deg * M_PI / 180.0);
   for (;;) {
     out.y = y + ds * t;
+    if (curvature.size() == y.size()) out.y += 0.5 * ds * ds * curvature;
     bool converged = correct(S, out.y, t, opt.corrector_max_iterations, opt.tolerance, out.iterations, out.residual);
     std::string why = converged ? "" : "corrector did not converge";
     if (converged) {
@@ -213,6 +215,7 @@ void march(Scaled& S, const ContinuationOptions& opt, Eigen::VectorXd y, Eigen::
   NewtonOptions nopt{opt.tolerance, opt.endpoint_iterations};
   double ds = std::min(opt.ds_initial, opt.ds_max);
   std::uint64_t regime = opt.regime ? opt.regime(S.X(y)) : 0;
+  Eigen::VectorXd curvature;   // ContinuationOptions::curvature_predictor: empty until the second point
   for (int step = 0;; ++step) {
     if (step >= opt.max_steps) {
       b.failures.push_back({S.omega(y), 0.0, ds, "step cap reached (max_steps = " +
@@ -222,7 +225,7 @@ void march(Scaled& S, const ContinuationOptions& opt, Eigen::VectorXd y, Eigen::
     // 2. Predictor and corrector (predict_correct).
     Step st;
     Failure failure;
-    if (!predict_correct(S, opt, y, t, regime, ds, b, st, failure)) {
+    if (!predict_correct(S, opt, y, t, curvature, regime, ds, b, st, failure)) {
       b.failures.push_back(failure);
       return;
     }
@@ -259,6 +262,10 @@ void march(Scaled& S, const ContinuationOptions& opt, Eigen::VectorXd y, Eigen::
     if (opt.progress) opt.progress({int(b.points.size()) - 1, w_new, ds});
     // 5. The next step.
     ds = next_step(opt, ds, st.iterations, t, st.t);
+    if (opt.curvature_predictor) {
+      const double h = (st.y - y).norm();
+      if (h > 0.0) curvature = (st.t - t) / h;
+    }
     y = st.y;
     t = st.t;
     regime = st.regime;

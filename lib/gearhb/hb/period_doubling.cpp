@@ -353,6 +353,7 @@ struct Period2Continuation {
     s.x = Eigen::VectorXd::Constant(hbp.size(), c.scaling.x[0]);
     s.omega = c.scaling.omega / 2.0;
     co.fast_iterations = pdo.fast_iterations;
+    co.curvature_predictor = pdo.curvature_predictor;
     co.regime = hbp.contacts().empty() ? nullptr : contact_regime(hbp);
     end.omega_min = opt.omega_min / 2.0;
     end.omega_max = opt.omega_max / 2.0;

@@ -108,13 +108,23 @@ struct PeriodDoublingOptions {
   int period = 1;
   // The step growth of the branch's continuation: ContinuationOptions::fast_iterations (the
   // step grows by `grow` after a corrector of at most this many iterations). A contact model's
-  // period-2 corrector takes 4 Newton iterations at any step (ex. 03: steps 1e-5, 1e-6, 7e-10,
-  // 1e-14 - the first moves the contact intervals, then it converges quadratically), so at the
-  // sweep's 3 the step never grows (ex. 03: 87 points, 0.37 s). 4 lets it grow (33 points,
-  // 0.23 s) but is not the default: on ch. 6 Fig. 43's check curve the longer steps leave the
-  // branch point along a small loop (odd part 7e-5, 10716 -> 10616 -> 10716 rad/s) back to it and
-  // miss the period-2 branch that the default finds.
+  // period-2 corrector takes 4 Newton iterations at almost any step, however good the predictor
+  // (ex. 03 with the curvature predictor: steps 2.3e-6, 1.7e-6, 4e-10, 5e-15 - the second as long
+  // as the first, then quadratic), so at the sweep's 3 the step grows only after the odd
+  // 3-iteration point (ex. 03: 87 points). 4 lets it grow
+  // (33 points) but is not the default: ch. 6's period2_hb_within_orbit_error_fig43 then fails.
+  // That check does not test the branch itself: on its check curve the branch from the PD at
+  // 10715.9 rad/s, at either setting, runs down to 10616 and back to 10715.9 (a loop, every point
+  // unstable), and the check's HB orbit at 10820.9 rad/s is a Newton solve from the point of the
+  // branch nearest in omega, 105 rad/s away, which lands on the time-integrated orbit at the
+  // default sampling and on another solution of the period-2 model at others (fast_iterations 4,
+  // curvature_predictor, refine_overshoot's factor 0.5 in place of 0.1: each 0.298 of the half
+  // amplitude off the time integration).
   int fast_iterations = 3;
+  // ContinuationOptions::curvature_predictor for the branch (off by default, for the same
+  // check): ex. 03's branch then takes 57 points, not 87, with the same ends, stable points and
+  // shooting agreement (PeriodDoubling.* pass with it on, and with fast_iterations 4 too).
+  bool curvature_predictor = false;
 };
 
 // Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
