@@ -23,6 +23,7 @@
 
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/core/newton.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;
@@ -266,4 +267,39 @@ TEST(BifurcationDiagram, PoincarePeriodOfKnownSequences) {
   EXPECT_EQ(poincare_period(r, v, 1.0, 8, 1e-6), 0);
   x(16, 0) += 1e-3;   // the last point off the cycle
   EXPECT_EQ(poincare_period(x, v, 1.0, 8, 1e-6), 0);
+}
+
+// Ch. 6 draws Fig. 45's diagram as Fig. 43's times 100 (the pair with zero gap is homogeneous
+// in the loads: (Fi, Fa) x c gives every orbit x c). Checked by integrating both: Fig. 43's
+// and Fig. 45's loads over 10.0-10.4 krad/s (HB's period-1 orbit stable there, chapter key
+// numbers), from rest and from the closed-mesh static deflection times the ratio: every speed
+// of both sweeps is period 1 in both, with the Poincare states 100 times apart within
+// period_tol (1e-6 of x_scale, the classifier's own resolution).
+TEST(BifurcationDiagram, GearPairDiagramScalesWithTheLoads) {
+  const GearPairParameters g;
+  auto model = [&](double c) {
+    Eigen::VectorXd F(6);
+    F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
+    return HarmonicBalance(gear_pair_system(g), {gear_pair_mesh(g)},
+                           Excitation{gear_pair_static_torque(g, -1e6 * c), c * F, VectorXd::Zero(6)}, 10);
+  };
+  const HarmonicBalance hb1 = model(1.0), hb100 = model(100.0);
+  const MatrixXd Kc = gear_pair_support_stiffness(g) + gear_pair_mesh_stiffness(g);
+  const VectorXd x1 = Kc.ldlt().solve(gear_pair_static_torque(g, -1e6)), v = VectorXd::Zero(6);
+  BifurcationDiagramOptions o;
+  o.speeds = 2;
+  o.integration.x_scale = 1e-5;   // the order of Fig. 43's Delta
+  const BifurcationDiagram d1 = bifurcation_diagram(hb1, 10000.0, 10400.0, x1, v, o);
+  o.integration.x_scale *= 100.0;
+  const BifurcationDiagram d100 = bifurcation_diagram(hb100, 10000.0, 10400.0, 100.0 * x1, v, o);
+  ASSERT_EQ(d1.points.size(), d100.points.size());
+  for (std::size_t k = 0; k < d1.points.size(); ++k) {
+    const DiagramPoint &a = d1.points[k], &b = d100.points[k];
+    ASSERT_EQ(a.motion, Motion::periodic) << k;
+    ASSERT_EQ(b.motion, Motion::periodic) << k;
+    EXPECT_EQ(a.n, 1);
+    EXPECT_EQ(b.n, 1);
+    EXPECT_LE((b.x.row(0) - 100.0 * a.x.row(0)).cwiseAbs().maxCoeff(), o.period_tol * o.integration.x_scale) << k;
+    EXPECT_LE((b.v.row(0) - 100.0 * a.v.row(0)).cwiseAbs().maxCoeff() / a.omega, o.period_tol * o.integration.x_scale) << k;
+  }
 }
