@@ -423,8 +423,10 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   } else {
     diagrams[cs.label] = from->second;
     run.key_numbers().add("diagram_scaled_by_" + cs.label, scale, "-");
-    run.say(cs.label + ": bifurcation diagram: " + b.scaled_from + "'s, Delta times " + std::to_string(scale) +
-            " (homogeneous in the loads)");
+    std::ostringstream os;
+    os << cs.label << ": bifurcation diagram: " << b.scaled_from << "'s, Delta times " << scale
+       << " (homogeneous in the loads)";
+    run.say(os.str());
   }
   const BifurcationDiagram& d = diagrams[cs.label];
   const double times = from == diagrams.end() || !(scale > 0.0) ? 1.0 : scale;
