@@ -91,7 +91,7 @@ enum class Measure {
 // A bifurcation diagram's band [rad/s] and speeds (each sweep), or the case whose diagram this
 // one is by the model's homogeneity in the loads (chapter README): that case's Poincare points
 // times the load ratio, if it ran before in the same run (else computed).
-struct DiagramBand {
+struct CaseDiagram {
   double lo = 0.0, hi = 0.0;
   int speeds = 0;
   const char* scaled_from = nullptr;
@@ -108,7 +108,7 @@ struct Case {
   // Its bifurcation diagram by time integration (issue 34 §3: the speeds with no stable
   // period-1 orbit and what the gear does there; speeds 0: none). The whole chapter only: not
   // in --case quick.
-  DiagramBand diagram = {};
+  CaseDiagram diagram = {};
 };
 
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
@@ -403,7 +403,7 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
 // Fig. 43 at the thesis values: 32; with rayleigh_beta = 1 s: 1.6e6).
 void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           std::map<std::string, BifurcationDiagram>& diagrams) const {
-  const DiagramBand& b = cs.diagram;
+  const CaseDiagram& b = cs.diagram;
   const double stiff = fastest_rate(hb) * 2.0 * M_PI / b.lo;
   if (stiff > 1e4) {
     std::ostringstream os;
