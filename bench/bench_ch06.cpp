@@ -5,7 +5,10 @@
 //   build/bin/gearhb_bench --benchmark_filter=ch06
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+
 #include "gearhb/gears/pair/gear_pair.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;
@@ -83,3 +86,41 @@ static void BM_ch06_bordered_solve(benchmark::State& state) {
 }
 BENCHMARK(BM_ch06_bordered_solve)->ArgsProduct({{5, 10, 20, 40}, {0, 1}})->ArgNames({"H", "condensed"})
     ->Unit(benchmark::kMicrosecond);
+
+// The bifurcation diagram by time integration (hb/bifurcation_diagram.hpp, default options)
+// on Fig. 40's case over 10.0-10.8 krad/s, 6 speeds each way: chaos up to the end of the
+// unstable stretch at 10.66 krad/s (the chapter's key numbers), a stable period-1 orbit at
+// 10.8 krad/s. down_from_hb: 0 the down sweep from the up sweep's end (one thread), 1 from the
+// HB orbit at 10.8 krad/s (the two sweeps on two threads); sequential_stop: 0 every Lyapunov
+// estimate over lyapunov_periods (the default), 1 lyapunov_min_periods = 50 (as ch. 6). The HB sweep is outside
+// the timing. CPU time: the process' (both threads).
+static void BM_ch06_fig40_diagram(benchmark::State& state) {
+  const HarmonicBalance hb = fig40_model();
+  SweepOptions o = fig40_sweep(false);
+  o.omega_max = 10800.0;
+  const FrequencyCurve c = require_complete(sweep_frequency(hb, o, "bench"), "bench");
+  const auto lowest = std::min_element(c.branch.points.begin(), c.branch.points.end(),
+                                       [](const auto& a, const auto& b) { return a.omega < b.omega; });
+  const auto highest = std::max_element(c.branch.points.begin(), c.branch.points.end(),
+                                        [](const auto& a, const auto& b) { return a.omega < b.omega; });
+  Eigen::VectorXd x0, v0;
+  BifurcationDiagramOptions d;
+  d.speeds = 6;
+  d.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  hb_initial_state(hb, lowest->X, lowest->omega, x0, v0);
+  if (state.range(0)) hb_initial_state(hb, highest->X, highest->omega, d.down_x0, d.down_v0);
+  if (state.range(1)) d.lyapunov_min_periods = 50;
+  long chaotic = 0, periodic = 0, lyapunov_periods = 0;
+  for (auto _ : state) {
+    const BifurcationDiagram b = bifurcation_diagram(hb, 10000.0, 10800.0, x0, v0, d);
+    chaotic = periodic = lyapunov_periods = 0;
+    for (const DiagramPoint& p : b.points)
+      chaotic += p.motion == Motion::chaotic, periodic += p.motion == Motion::periodic,
+          lyapunov_periods += p.lyapunov_periods;
+  }
+  state.counters["chaotic_speeds"] = double(chaotic);
+  state.counters["periodic_speeds"] = double(periodic);
+  state.counters["lyapunov_periods"] = double(lyapunov_periods);
+}
+BENCHMARK(BM_ch06_fig40_diagram)->ArgsProduct({{0, 1}, {0, 1}})->ArgNames({"down_from_hb", "sequential_stop"})->Unit(benchmark::kSecond)
+    ->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();

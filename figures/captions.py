@@ -114,7 +114,29 @@ CHAPTERS = [
                          (44, "Fi = 1e7, 100x forcing"), (45, "Fi = -1e8, 100x forcing"))] + [
         ("figS46_*.png", "supplement S46", "Beyond Fig. 43's first period doubling. Notice the time-integrated orbit "
          "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
-        ("figS47_*.png", "supplement S47", "What the gear does where Fig. 43 has no stable period-1 orbit: the "
+        ("figS47_ch06_diagram_fig40.png", "supplement S47", "What the gear does where Fig. 40 has no stable "
+         "period-1 orbit below 11.2 krad/s: the bifurcation diagram by time integration (GSL rk8pd, the speed stepped "
+         "up then down over 7.5-11.2 krad/s, 75 speeds each way, the mesh deflection once per forcing period) under "
+         "the harmonic-balance branches. Notice chaotic motion (red) in both sweeps over 8.45-8.65, 8.8-9.0 and "
+         "9.3-10.1 krad/s and most of 10.35-10.65 krad/s, also at speeds where HB's period-1 orbit is stable (8.25, "
+         "8.65, 8.8, 9.3 krad/s: the sweeps stay on the chaotic attractor beside the HB orbit), periods 2-6 (blue) at "
+         "7.9-8.1, 8.7-8.75 and 10.2-10.3 krad/s, quasi-periodic points (green) at 10.15 and 10.95-11.05 krad/s, and "
+         "period 1 on HB's orbit again from 10.7 krad/s; the eight unstable stretches above 11.6 krad/s are not in "
+         "the band."),
+        ("figS47_ch06_diagram_fig41.png", "supplement S47", "What the gear does where Fig. 41 has no stable "
+         "period-1 orbit: the bifurcation diagram by time integration over 13.4-14.0 krad/s (41 speeds each way) "
+         "under the harmonic-balance branches. Notice the up sweep leaves HB's orbit at 13.595 krad/s for a period-1 "
+         "orbit that is not on the continuation's branch (Delta at phase 0 down to -2.6 mm, below every branch's "
+         "Delta_min, >= -1.3 mm) and stays on it to 13.85 krad/s; the down sweep is chaotic (red) at 13.715-13.79 "
+         "krad/s and on that orbit from 13.70 down to 13.52 krad/s: HB's stable stretch 13.61-13.75 krad/s is "
+         "visited by neither sweep."),
+        ("figS47_ch06_diagram_fig44.png", "supplement S47", "Fig. 44's case (Fig. 40 x 100): the diagram is Fig. "
+         "40's with every Poincare point times 100 (the model is homogeneous in the loads), under Fig. 44's own "
+         "harmonic-balance branches; notice they match Fig. 40's x 100."),
+        ("figS47_ch06_diagram_fig45.png", "supplement S47", "Fig. 45's case (Fig. 43 x 100): the diagram is Fig. "
+         "43's with every Poincare point times 100, under Fig. 45's own harmonic-balance branches; notice the "
+         "period-1 points lie on HB's stable orbit as in Fig. 43."),
+        ("figS47_ch06_diagram_fig43.png", "supplement S47", "What the gear does where Fig. 43 has no stable period-1 orbit: the "
          "bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over 10-15 krad/s, the "
          "mesh deflection once per forcing period) under the harmonic-balance branches. Notice the two views agree "
          "where HB's period-1 orbit is stable (the Poincare points on the grey line: CTest "

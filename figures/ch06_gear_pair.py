@@ -243,9 +243,13 @@ def diagram_figure(data_dir, fig_dir, label, row):
         ranges = unstable_period1_ranges(json.load(f), "_" + label)
     handles += shade_no_stable_period1((a1, a2), [r for r in ranges if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
                                        scale=1e-3, unit="krad/s")
-    a1.set_title("Fig. %d's case ($F_i$ = %g N m, F = %g): bifurcation diagram by time integration (GSL rk8pd,\n"
-                 "speed stepped up then down, %d speeds each way) under the harmonic-balance branches"
-                 % (int(row["figure"]), row["Fi"], row["Fa"], len(set(p["omega"]))), fontsize=9)
+    with open(data_dir / "key_numbers.json") as f:
+        scaled = json.load(f).get("diagram_scaled_by_" + label, {}).get("value")
+    how = ("time integration (GSL rk8pd,\nspeed stepped up then down, %d speeds each way)" % len(set(p["omega"]))
+           if scaled is None else "time integration: the smaller-load\ncase's points x %g (homogeneous in the loads)"
+           % scaled)
+    a1.set_title("Fig. %d's case ($F_i$ = %g N m, F = %g): bifurcation diagram by %s under the harmonic-balance "
+                 "branches" % (int(row["figure"]), row["Fi"], row["Fa"], how), fontsize=9)
     h1, _ = a1.get_legend_handles_labels()
     styles = [hd for hd in legend_styles() if "rug" not in hd.get_label()]   # no contact rug here
     fig.tight_layout()

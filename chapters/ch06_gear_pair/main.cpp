@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <cmath>
 #include <complex>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -87,6 +88,15 @@ enum class Measure {
   first_touch,   // first contact (a curve starting open)
 };
 
+// A bifurcation diagram's band [rad/s] and speeds (each sweep), or the case whose diagram this
+// one is by the model's homogeneity in the loads (chapter README): that case's Poincare points
+// times the load ratio, if it ran before in the same run (else computed).
+struct CaseDiagram {
+  double lo = 0.0, hi = 0.0;
+  int speeds = 0;
+  const char* scaled_from = nullptr;
+};
+
 struct Case {
   std::string label;       // --case LABEL; data file frc_<label>.csv
   std::string figure;      // thesis figure
@@ -95,21 +105,25 @@ struct Case {
   bool quick;              // part of the regression subset
   double quick_omega_max;  // end of its range in --case quick [rad/s]: just past the first change
   std::vector<Measure> measures;
-  // The band [rad/s] of its bifurcation diagram by time integration (issue 34 §3: the speeds
-  // with no stable period-1 orbit and what the gear does there; {0, 0}: none). The whole
-  // chapter only: not in --case quick.
-  std::pair<double, double> diagram = {0.0, 0.0};
+  // Its bifurcation diagram by time integration (issue 34 §3: the speeds with no stable
+  // period-1 orbit and what the gear does there; speeds 0: none). The whole chapter only: not
+  // in --case quick.
+  CaseDiagram diagram = {};
 };
 
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
 // chapter README); every figure again with the printed kc (suffix _kc_alt).
+// Diagram bands: each covers its figure's unstable stretches below 11.1 krad/s (Fig. 40: the
+// eight of 7.8-11.1 krad/s; its eight above 11.6 krad/s are left out for time) or all of
+// them (Figs. 41, 43); 44 and 45 are 40 and 43 scaled. Speeds: the chapter's diagrams within
+// ~60 s CPU (README, step 3b).
 const std::vector<Case> kCases = {
-    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}},
-    {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}},
+    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75}},
+    {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
-    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0}},
-    {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}},
-    {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}},
+    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
+    {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, "fig40"}},
+    {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}, {10000.0, 15000.0, 150, "fig43"}},
     {"fig40_kc_alt", "40", Mesh::kc_alt, {1e5, 1e4}, false, 0, {}},
     {"fig41_kc_alt", "41", Mesh::kc_alt, {1e7, 1e4}, false, 0, {}},
     {"fig42_kc_alt", "42", Mesh::kc_alt, {-1e8, 1e4}, false, 0, {}},
@@ -137,6 +151,30 @@ void check_finite_frequencies(const GearPairParameters& g) {
                         "parameter 'kc' times the base radii squared overflows");
 }
 
+// The load ratio of case `cs` to case `label` when both loads scale alike (cs = ratio x that
+// case, same mesh), else 0 (none, or not a scaling).
+double load_ratio(const Case& cs, const char* label) {
+  if (!label) return 0.0;
+  for (const Case& o : kCases)
+    if (o.label == label && o.mesh == cs.mesh && o.load.Fa != 0.0 && o.load.Fi != 0.0) {
+      const double r = cs.load.Fa / o.load.Fa;
+      return std::abs(cs.load.Fi / o.load.Fi - r) <= 1e-12 * std::abs(r) && r > 0.0 ? r : 0.0;
+    }
+  return 0.0;
+}
+
+// The down sweep's start (BifurcationDiagramOptions::down_x0, down_v0): the orbit of the
+// curve's point nearest the band's upper end hi, if it lies within one speed step of hi and
+// is stable; else none (the down sweep then follows the up sweep).
+void down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, double step, BifurcationDiagramOptions& o) {
+  const auto& P = c.branch.points;
+  std::size_t best = P.size();
+  for (std::size_t i = 0; i < P.size(); ++i)
+    if (best == P.size() || std::abs(P[i].omega - hi) < std::abs(P[best].omega - hi)) best = i;
+  if (best == P.size() || std::abs(P[best].omega - hi) > step || best >= c.stable.size() || !c.stable[best]) return;
+  hb_initial_state(hb, P[best].X, P[best].omega, o.down_x0, o.down_v0);
+}
+
 class GearPairChapter {
  public:
   explicit GearPairChapter(Study& study);
@@ -157,7 +195,8 @@ class GearPairChapter {
   void linear_responses(Run& run) const;
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                           std::map<std::string, BifurcationDiagram>& diagrams) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -307,6 +346,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
   Table index({"label", "figure", "mesh", "kc", "Fi", "Fa", "static_delta_open", "static_delta_closed", "points",
                "folds", "unstable_points", "bifurcations", "rejected_steps", "transitions", "start", "end",
                "changed_lo", "changed_hi", "delta_max", "delta_min"});
+  std::map<std::string, BifurcationDiagram> diagrams;   // by case label, for the scaled ones
   for (const Case& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.mesh, cs.load, sol_.H);
@@ -331,7 +371,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
                    cell(std::isfinite(h.changed_hi), h.changed_hi), h.x_max, h.x_min});
     run.key_numbers().add("transitions_" + cs.label, h.transitions, "-");
     measure(run, cs, hb, c);
-    if (cs.diagram.second > 0.0 && !run.quick()) bifurcation_diagram(run, cs, hb, c);
+    if (cs.diagram.speeds > 0 && !run.quick()) bifurcation_diagram(run, cs, hb, c, diagrams);
   }
   run.write("cases.csv", index);
 }
@@ -349,20 +389,22 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
 }
 
 // Step 3b (issue 34 §3): the case's bifurcation diagram by time integration over its band, up
-// then down, from the HB orbit at the band's lower end (hb/bifurcation_diagram.hpp: GSL rk8pd
-// with the contact switches located, 400 transient periods, 64 Poincare points per speed):
+// from the HB orbit at the band's lower end, down from the stable HB orbit at its upper end,
+// the two sweeps on two threads (hb/bifurcation_diagram.hpp: GSL rk8pd with the contact
+// switches located, 400 transient periods, 64 Poincare points per speed, the Lyapunov
+// estimate's sequential stop from 50 periods);
 // bifurcation_diagram_<label>.csv, Delta at phase 0 of each forcing period;
 // bifurcation_diagram_hb_<label>.csv, the HB branch at the same section (its stable stretches
-// under the Poincare points; tests/diagram_vs_hb.py compares the two views).
+// under the Poincare points; tests/diagram_vs_hb.py compares the two views). A band
+// scaled_from a case that ran before: that diagram's points times the load ratio (the model
+// is homogeneous in the loads: zero gap, contact force kc max(Delta, 0)), its own HB table.
 // Skipped, said in one line, where the explicit integration would be stiff: the fastest rate
 // times the longest period above 1e4 (about 2000 rk8pd steps a period, hours for the diagram;
 // Fig. 43 at the thesis values: 32; with rayleigh_beta = 1 s: 1.6e6).
-void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb,
-                                          const FrequencyCurve& c) const {
-  BifurcationDiagramOptions o;
-  o.speeds = 150;
-  const auto [lo, hi] = cs.diagram;
-  const double stiff = fastest_rate(hb) * 2.0 * M_PI / lo;
+void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          std::map<std::string, BifurcationDiagram>& diagrams) const {
+  const CaseDiagram& b = cs.diagram;
+  const double stiff = fastest_rate(hb) * 2.0 * M_PI / b.lo;
   if (stiff > 1e4) {
     std::ostringstream os;
     os << cs.label << ": no bifurcation diagram: the time integration is stiff (fastest rate x period " << stiff
@@ -370,11 +412,28 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
     run.say(os.str());
     return;
   }
-  const BifurcationDiagram d = diagram_of_curve(run, hb, c, lo, hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
+  const double scale = load_ratio(cs, b.scaled_from);
+  const auto from = b.scaled_from ? diagrams.find(b.scaled_from) : diagrams.end();
+  if (from == diagrams.end() || !(scale > 0.0)) {
+    BifurcationDiagramOptions o;
+    o.speeds = b.speeds;
+    o.lyapunov_min_periods = 50;   // the sequential stop (bifurcation_diagram.hpp)
+    down_start(hb, c, b.hi, (b.hi - b.lo) / (b.speeds - 1), o);
+    diagrams[cs.label] = diagram_of_curve(run, hb, c, b.lo, b.hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
+  } else {
+    diagrams[cs.label] = from->second;
+    run.key_numbers().add("diagram_scaled_by_" + cs.label, scale, "-");
+    std::ostringstream os;
+    os << cs.label << ": bifurcation diagram: " << b.scaled_from << "'s, Delta times " << scale
+       << " (homogeneous in the loads)";
+    run.say(os.str());
+  }
+  const BifurcationDiagram& d = diagrams[cs.label];
+  const double times = from == diagrams.end() || !(scale > 0.0) ? 1.0 : scale;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
   auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
   Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega"}, "delta"));
-  add_bifurcation_rows(t, d, T2, 1.0, lead);
+  add_bifurcation_rows(t, d, T2, times, lead);
   add_hb_section_rows(h, hb, c, d, T2, 1.0, lead);
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
   run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);

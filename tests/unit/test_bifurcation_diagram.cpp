@@ -23,6 +23,7 @@
 
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/core/newton.hpp"
+#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 
 using namespace gearhb;
@@ -99,21 +100,39 @@ TEST(BifurcationDiagram, StablePeriod1HbOrbitLiesOnThePoincarePoints) {
       if (c.stable[i] && std::fabs(P[i].omega - 0.45) < std::fabs(P[best].omega - 0.45)) best = i;
     hb_initial_state(hb, P[best].X, P[best].omega, x0, v0);
   }
-  const BifurcationDiagram d = bifurcation_diagram(hb, 0.45, 0.85, x0, v0, o);
-  ASSERT_EQ(d.points.size(), 18u);
-  int compared = 0;
-  for (const DiagramPoint& p : d.points) {
-    const std::vector<double> hb_x = stable_hb(p.omega);
-    if (hb_x.empty()) continue;
-    const std::string at = "Omega = " + std::to_string(p.omega) + (p.up ? " up" : " down");
-    EXPECT_EQ(p.motion, Motion::periodic) << at;
-    EXPECT_EQ(p.n, 1) << at;
-    double nearest = INFINITY;
-    for (double x : hb_x) nearest = std::min(nearest, std::fabs(x - p.x(0, 0)));
-    EXPECT_LT(nearest, 2e-4) << at << ": Poincare x " << p.x(0, 0);
-    ++compared;
+  const BifurcationDiagram one_thread = bifurcation_diagram(hb, 0.45, 0.85, x0, v0, o);
+  // Again with the down sweep from HB's stable orbit at 0.85 (two threads): the up sweep is the
+  // one-thread run's, bit for bit (the threads share nothing), and both views agree as before.
+  {
+    const auto& P = c.branch.points;
+    std::size_t top = 0;
+    for (std::size_t i = 0; i < P.size(); ++i)
+      if (c.stable[i] && std::fabs(P[i].omega - 0.85) < std::fabs(P[top].omega - 0.85)) top = i;
+    hb_initial_state(hb, P[top].X, P[top].omega, o.down_x0, o.down_v0);
   }
-  EXPECT_GE(compared, 16) << "the stable period-1 branch spans the range";
+  const BifurcationDiagram two_threads = bifurcation_diagram(hb, 0.45, 0.85, x0, v0, o);
+  for (const BifurcationDiagram* d : {&one_thread, &two_threads}) {
+    ASSERT_EQ(d->points.size(), 18u);
+    int compared = 0;
+    for (const DiagramPoint& p : d->points) {
+      const std::vector<double> hb_x = stable_hb(p.omega);
+      if (hb_x.empty()) continue;
+      const std::string at = "Omega = " + std::to_string(p.omega) + (p.up ? " up" : " down");
+      EXPECT_EQ(p.motion, Motion::periodic) << at;
+      EXPECT_EQ(p.n, 1) << at;
+      double nearest = INFINITY;
+      for (double x : hb_x) nearest = std::min(nearest, std::fabs(x - p.x(0, 0)));
+      EXPECT_LT(nearest, 2e-4) << at << ": Poincare x " << p.x(0, 0);
+      ++compared;
+    }
+    EXPECT_GE(compared, 16) << "the stable period-1 branch spans the range";
+  }
+  for (std::size_t k = 0; k < 9; ++k) {
+    EXPECT_TRUE(one_thread.points[k].up && two_threads.points[k].up);
+    EXPECT_EQ(one_thread.points[k].x, two_threads.points[k].x) << "up sweep, speed " << k;
+  }
+  for (std::size_t k = 9; k < 18; ++k) EXPECT_FALSE(two_threads.points[k].up);
+  EXPECT_DOUBLE_EQ(two_threads.points[9].omega, 0.85);
 }
 
 // The period-3 window at Omega = 1.25, reached from the chaos at 1.2 (sweep up) and at 1.3
@@ -195,6 +214,29 @@ TEST(BifurcationDiagram, KahramanSinghChaosHasAConvergedPositiveLyapunovExponent
   EXPECT_NEAR(rate_sum / 10.0, lambda, 0.25 * lambda);
 }
 
+// The sequential stop (BifurcationDiagramOptions::lyapunov_min_periods = 50) on the chaos at
+// Omega = 1.0: the estimate stops before its 200 periods, and what the stop claims holds: the
+// fixed-length estimate over 800 periods from the same state is above the threshold too (the
+// same class); with lyapunov_min_periods = 0 (off) it runs all 200.
+TEST(BifurcationDiagram, SequentialLyapunovStopOnlyWhereClearlyChaotic) {
+  const HarmonicBalance hb = kahraman_singh(0.5);
+  const TimeIntegrator ti(hb);
+  BifurcationDiagramOptions o;
+  o.speeds = 2;
+  o.lyapunov_min_periods = 50;
+  const BifurcationDiagram d = bifurcation_diagram(hb, 0.95, 1.0, VectorXd::Constant(1, 1.1), VectorXd::Zero(1), o);
+  const DiagramPoint& p = d.points[1];
+  ASSERT_EQ(p.motion, Motion::chaotic);
+  EXPECT_LT(p.lyapunov_periods, o.lyapunov_periods);
+  EXPECT_GE(p.lyapunov_periods, o.lyapunov_min_periods);
+  const VectorXd x = p.x.bottomRows(1).transpose(), v = p.v.bottomRows(1).transpose();
+  EXPECT_GT(p.lyapunov, o.lyapunov_threshold);
+  EXPECT_GT(largest_lyapunov_exponent(ti, x, v, 1.0, 800, TimeIntegrationOptions{}), o.lyapunov_threshold);
+  o.lyapunov_min_periods = 0;
+  const BifurcationDiagram full = bifurcation_diagram(hb, 0.95, 1.0, VectorXd::Constant(1, 1.1), VectorXd::Zero(1), o);
+  EXPECT_EQ(full.points[1].lyapunov_periods, o.lyapunov_periods);
+}
+
 // The exponents by re-orthonormalisation (lyapunov_exponents) against Liouville's formula: the
 // contact force depends on x alone and is continuous, so the divergence of the flow is
 // -tr(M^-1 C) in every contact state and det Phi = exp(-tr(M^-1 C) T) over each period, exactly;
@@ -225,4 +267,39 @@ TEST(BifurcationDiagram, PoincarePeriodOfKnownSequences) {
   EXPECT_EQ(poincare_period(r, v, 1.0, 8, 1e-6), 0);
   x(16, 0) += 1e-3;   // the last point off the cycle
   EXPECT_EQ(poincare_period(x, v, 1.0, 8, 1e-6), 0);
+}
+
+// Ch. 6 draws Fig. 45's diagram as Fig. 43's times 100 (the pair with zero gap is homogeneous
+// in the loads: (Fi, Fa) x c gives every orbit x c). Checked by integrating both: Fig. 43's
+// and Fig. 45's loads over 10.0-10.4 krad/s (HB's period-1 orbit stable there, chapter key
+// numbers), from rest and from the closed-mesh static deflection times the ratio: every speed
+// of both sweeps is period 1 in both, with the Poincare states 100 times apart within
+// period_tol (1e-6 of x_scale, the classifier's own resolution).
+TEST(BifurcationDiagram, GearPairDiagramScalesWithTheLoads) {
+  const GearPairParameters g;
+  auto model = [&](double c) {
+    Eigen::VectorXd F(6);
+    F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
+    return HarmonicBalance(gear_pair_system(g), {gear_pair_mesh(g)},
+                           Excitation{gear_pair_static_torque(g, -1e6 * c), c * F, VectorXd::Zero(6)}, 10);
+  };
+  const HarmonicBalance hb1 = model(1.0), hb100 = model(100.0);
+  const MatrixXd Kc = gear_pair_support_stiffness(g) + gear_pair_mesh_stiffness(g);
+  const VectorXd x1 = Kc.ldlt().solve(gear_pair_static_torque(g, -1e6)), v = VectorXd::Zero(6);
+  BifurcationDiagramOptions o;
+  o.speeds = 2;
+  o.integration.x_scale = 1e-5;   // the order of Fig. 43's Delta
+  const BifurcationDiagram d1 = bifurcation_diagram(hb1, 10000.0, 10400.0, x1, v, o);
+  o.integration.x_scale *= 100.0;
+  const BifurcationDiagram d100 = bifurcation_diagram(hb100, 10000.0, 10400.0, 100.0 * x1, v, o);
+  ASSERT_EQ(d1.points.size(), d100.points.size());
+  for (std::size_t k = 0; k < d1.points.size(); ++k) {
+    const DiagramPoint &a = d1.points[k], &b = d100.points[k];
+    ASSERT_EQ(a.motion, Motion::periodic) << k;
+    ASSERT_EQ(b.motion, Motion::periodic) << k;
+    EXPECT_EQ(a.n, 1);
+    EXPECT_EQ(b.n, 1);
+    EXPECT_LE((b.x.row(0) - 100.0 * a.x.row(0)).cwiseAbs().maxCoeff(), o.period_tol * o.integration.x_scale) << k;
+    EXPECT_LE((b.v.row(0) - 100.0 * a.v.row(0)).cwiseAbs().maxCoeff() / a.omega, o.period_tol * o.integration.x_scale) << k;
+  }
 }

@@ -1,8 +1,14 @@
 #include "gearhb/hb/bifurcation_diagram.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <deque>
+#include <exception>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
+
+#include "gearhb/core/gsl_errors.hpp"
 
 namespace gearhb {
 
@@ -31,6 +37,8 @@ std::string check_bifurcation_options(const BifurcationDiagramOptions& o, std::s
   if (!(o.period_tol >= 1e-14 && o.period_tol <= 0.1)) return bad("period_tol", "must be in [1e-14, 0.1]");
   if (o.lyapunov_periods < 10 || o.lyapunov_periods > 1000000)
     return bad("lyapunov_periods", "must be a whole number in [10, 1000000]");
+  if (o.lyapunov_min_periods != 0 && (o.lyapunov_min_periods < 30 || o.lyapunov_min_periods > 1000000))
+    return bad("lyapunov_min_periods", "must be 0 (off) or a whole number in [30, 1000000]");
   if (!(o.lyapunov_threshold > 0.0 && o.lyapunov_threshold <= 1.0))
     return bad("lyapunov_threshold", "must be in (0, 1]");
   return "";
@@ -68,7 +76,8 @@ double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd
 std::vector<double> lyapunov_exponents(
     const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int periods,
     int count, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end, Eigen::VectorXd* v_end,
-    const std::function<void(const Eigen::VectorXd&, const Eigen::VectorXd&)>& section, Eigen::MatrixXd* logs) {
+    const std::function<void(const Eigen::VectorXd&, const Eigen::VectorXd&)>& section, Eigen::MatrixXd* logs,
+    const std::function<bool(const Eigen::VectorXd&)>& stop, int* periods_done) {
   const Eigen::Index n = x0.size();
   if (count < 1 || count > 2 * n) throw std::invalid_argument("Lyapunov exponents: count must be 1..2 dofs");
   if (periods < 1) throw std::invalid_argument("Lyapunov exponents: periods must be >= 1");
@@ -79,18 +88,22 @@ std::vector<double> lyapunov_exponents(
   Eigen::MatrixXd W = Eigen::MatrixXd::Identity(2 * n, count);
   W.col(0) = Eigen::VectorXd::Ones(2 * n).normalized();
   Eigen::VectorXd sum = Eigen::VectorXd::Zero(count);
+  Eigen::VectorXd ln_r(count);
   if (logs) logs->setZero(periods, count);
+  int done = 0;
   for (int k = 0; k <= periods; ++k) {
     for (int j = 0; j < count; ++j) {   // modified Gram-Schmidt: W = Q R, Q into W
       for (int i = 0; i < j; ++i) W.col(j) -= W.col(i).dot(W.col(j)) * W.col(i);
       const double r = W.col(j).norm();
       if (!(r > 0.0) || !std::isfinite(r))
         throw std::runtime_error("Lyapunov exponents: a tangent vector vanished or diverged");
-      if (k > 0) sum[j] += std::log(r);
-      if (k > 0 && logs) (*logs)(k - 1, j) = std::log(r);
+      ln_r[j] = std::log(r);
+      if (k > 0) sum[j] += ln_r[j];
+      if (k > 0 && logs) (*logs)(k - 1, j) = ln_r[j];
       W.col(j) /= r;
     }
-    if (k == periods) break;
+    done = k;
+    if (k == periods || (k > 0 && stop && stop(ln_r))) break;
     ti.period_map(x, v, omega, opt, xT, vT, Phi);
     W.bottomRows(n) *= omega;   // to (x, v), through Phi, back to (x, v / omega)
     W = Phi * W;
@@ -100,8 +113,10 @@ std::vector<double> lyapunov_exponents(
   }
   if (x_end) *x_end = x;
   if (v_end) *v_end = v;
+  if (logs) logs->conservativeResize(done, count);
+  if (periods_done) *periods_done = done;
   std::vector<double> out(count);
-  for (int j = 0; j < count; ++j) out[j] = sum[j] / periods;
+  for (int j = 0; j < count; ++j) out[j] = sum[j] / done;
   return out;
 }
 
@@ -176,6 +191,101 @@ int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eige
   return n;
 }
 
+namespace {
+// The sequential stop of the Lyapunov estimate (the options' lyapunov_min_periods says why):
+// fed ln |Phi_k w_k| period by period; true once, at the end of a block of kLyapunovBlock
+// periods after at least lyapunov_min_periods, the mean of the block means after the first
+// (lambda') exceeds lyapunov_threshold by more than 3 standard errors of that mean (the
+// batch-means scatter: sd of the block means / sqrt(their number)).
+constexpr int kLyapunovBlock = 10;
+class LyapunovStop {
+ public:
+  explicit LyapunovStop(const BifurcationDiagramOptions& o) : min_(o.lyapunov_min_periods), threshold_(o.lyapunov_threshold) {}
+  bool operator()(const Eigen::VectorXd& ln_r) {
+    block_ += ln_r[0];
+    if (++k_ % kLyapunovBlock != 0) return false;
+    if (k_ > kLyapunovBlock) means_.push_back(block_ / kLyapunovBlock);   // the first block: the tangent vector aligning
+    block_ = 0.0;
+    if (min_ == 0 || k_ < min_ || means_.size() < 2) return false;
+    const Eigen::Map<const Eigen::VectorXd> b(means_.data(), Eigen::Index(means_.size()));
+    const double mean = b.mean();
+    const double sd = std::sqrt((b.array() - mean).square().sum() / double(b.size() - 1));
+    return mean - threshold_ > 3.0 * sd / std::sqrt(double(b.size()));
+  }
+
+ private:
+  int min_, k_ = 0;
+  double threshold_, block_ = 0.0;
+  std::vector<double> means_;
+};
+
+// One speed of a sweep: integrate from (x, v), record, classify (see the header); (x, v) become
+// the state the next speed starts from.
+void diagram_speed(const TimeIntegrator& ti, const BifurcationDiagramOptions& opt, double tol, DiagramPoint& p,
+                   Eigen::VectorXd& x, Eigen::VectorXd& v) {
+  // The transient ends once the Poincare point repeats after n <= max_period periods within
+  // period_tol / 100: a period-1 orbit approached with a multiplier mu near -1 repeats after 2
+  // periods |mu^2 - 1| / |mu - 1| times more closely than after 1, so a transient ended at
+  // period_tol would be read as period 2; at period_tol / 100 it is not unless |mu| > 0.99.
+  std::deque<Eigen::VectorXd> last;
+  auto settled = [&](const Eigen::VectorXd& xk, const Eigen::VectorXd& vk) {
+    const Eigen::VectorXd S = section_state(xk, vk, p.omega);
+    bool repeats = false;
+    for (std::size_t j = 0; j < last.size() && !repeats; ++j)
+      repeats = (S - last[last.size() - 1 - j]).cwiseAbs().maxCoeff() <= 0.01 * tol;
+    last.push_back(S);
+    if (int(last.size()) > opt.max_period) last.pop_front();
+    return repeats;
+  };
+  try {
+    ti.poincare(x, v, p.omega, opt.transient_periods, opt.periods, opt.integration, p.x, p.v, settled, &p.transient);
+    x = p.x.bottomRows(1).transpose();
+    v = p.v.bottomRows(1).transpose();
+    p.n = poincare_period(p.x, p.v, p.omega, opt.max_period, tol);
+    if (p.n > 0) {
+      p.motion = Motion::periodic;
+      return;
+    }
+    Eigen::VectorXd xe, ve;
+    LyapunovStop stop(opt);
+    p.lyapunov = lyapunov_exponents(ti, x, v, p.omega, opt.lyapunov_periods, 1, opt.integration, &xe, &ve, {}, nullptr,
+                                    std::ref(stop), &p.lyapunov_periods)[0];
+    if (p.lyapunov_periods < opt.lyapunov_periods) {   // stopped early: the rest of the dwell without the tangent
+      Eigen::MatrixXd xs, vs;
+      ti.poincare(xe, ve, p.omega, 0, opt.lyapunov_periods - p.lyapunov_periods, opt.integration, xs, vs);
+      x = xs.bottomRows(1).transpose(), v = vs.bottomRows(1).transpose();
+      // A chaotic transient that settled within the dwell: its last Poincare points repeat.
+      const Eigen::Index tail = std::min<Eigen::Index>(xs.rows(), 2 * opt.max_period + 1);
+      const int n = poincare_period(xs.bottomRows(tail), vs.bottomRows(tail), p.omega, opt.max_period, tol);
+      if (tail > 2 * n && n > 0) {
+        p.motion = Motion::periodic, p.n = n;
+        p.x = xs.bottomRows(tail), p.v = vs.bottomRows(tail);
+        return;
+      }
+      p.motion = Motion::chaotic;   // lambda' clearly above the threshold (LyapunovStop)
+      return;
+    }
+    x = xe, v = ve;
+    p.motion = p.lyapunov > opt.lyapunov_threshold    ? Motion::chaotic
+               : p.lyapunov >= -opt.lyapunov_threshold ? Motion::quasi_periodic
+                                                       : Motion::unsettled;
+    if (p.motion == Motion::chaotic) return;
+    Eigen::MatrixXd cx, cv;
+    const int n = attracting_cycle(ti, p, x, v, opt.max_period, tol, opt.integration, cx, cv);
+    if (n > 0) {
+      p.motion = Motion::periodic, p.n = n, p.by_shooting = true;
+      p.x = cx, p.v = cv;
+      x = cx.row(0).transpose(), v = cv.row(0).transpose();
+    }
+  } catch (const std::runtime_error& e) {   // this speed fails; the next starts from the last good state
+    p.motion = Motion::failed;
+    p.failure = e.what();
+    p.x.resize(0, x.size());
+    p.v.resize(0, x.size());
+  }
+}
+}  // namespace
+
 BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                        const BifurcationDiagramOptions& opt,
@@ -184,64 +294,54 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
   const std::string key = check_bifurcation_options(opt, &why);
   if (!key.empty()) throw std::invalid_argument("bifurcation diagram: " + key + " " + why);
   if (!(omega_min > 0.0 && omega_max > omega_min)) throw std::invalid_argument("bifurcation diagram: needs 0 < omega_min < omega_max");
+  const bool down_given = opt.down_x0.size() > 0 || opt.down_v0.size() > 0;
+  if (down_given && (opt.down_x0.size() != x0.size() || opt.down_v0.size() != x0.size()))
+    throw std::invalid_argument("bifurcation diagram: down_x0, down_v0 must be empty or hold one value per dof");
   const TimeIntegrator ti(hb);
   const double tol = opt.period_tol * opt.integration.x_scale;
-  BifurcationDiagram d;
-  Eigen::VectorXd x = x0, v = v0;
   const int N = opt.speeds;
-  for (int s = 0; s < 2 * N; ++s) {
-    const bool up = s < N;
-    const int k = up ? s : 2 * N - 1 - s;
-    DiagramPoint p;
-    p.omega = omega_min + (omega_max - omega_min) * double(k) / double(N - 1);
-    p.up = up;
-    // The transient ends once the Poincare point repeats after n <= max_period periods within
-    // period_tol / 100: a period-1 orbit approached with a multiplier mu near -1 repeats after 2
-    // periods |mu^2 - 1| / |mu - 1| times more closely than after 1, so a transient ended at
-    // period_tol would be read as period 2; at period_tol / 100 it is not unless |mu| > 0.99.
-    std::deque<Eigen::VectorXd> last;
-    auto settled = [&](const Eigen::VectorXd& xk, const Eigen::VectorXd& vk) {
-      const Eigen::VectorXd S = section_state(xk, vk, p.omega);
-      bool repeats = false;
-      for (std::size_t j = 0; j < last.size() && !repeats; ++j)
-        repeats = (S - last[last.size() - 1 - j]).cwiseAbs().maxCoeff() <= 0.01 * tol;
-      last.push_back(S);
-      if (int(last.size()) > opt.max_period) last.pop_front();
-      return repeats;
-    };
-    try {
-      ti.poincare(x, v, p.omega, opt.transient_periods, opt.periods, opt.integration, p.x, p.v, settled, &p.transient);
-      x = p.x.bottomRows(1).transpose();
-      v = p.v.bottomRows(1).transpose();
-      p.n = poincare_period(p.x, p.v, p.omega, opt.max_period, tol);
-      if (p.n > 0) {
-        p.motion = Motion::periodic;
-      } else {
-        Eigen::VectorXd xe, ve;
-        p.lyapunov = largest_lyapunov_exponent(ti, x, v, p.omega, opt.lyapunov_periods, opt.integration, &xe, &ve);
-        x = xe, v = ve;
-        p.motion = p.lyapunov > opt.lyapunov_threshold    ? Motion::chaotic
-                   : p.lyapunov >= -opt.lyapunov_threshold ? Motion::quasi_periodic
-                                                           : Motion::unsettled;
-        if (p.motion != Motion::chaotic) {
-          Eigen::MatrixXd cx, cv;
-          const int n = attracting_cycle(ti, p, x, v, opt.max_period, tol, opt.integration, cx, cv);
-          if (n > 0) {
-            p.motion = Motion::periodic, p.n = n, p.by_shooting = true;
-            p.x = cx, p.v = cv;
-            x = cx.row(0).transpose(), v = cv.row(0).transpose();
-          }
-        }
+  BifurcationDiagram d;
+  d.points.resize(2 * std::size_t(N));
+  std::mutex reporting;
+  // Sweep s (0 up, 1 down) from (x, v): the points s N .. s N + N - 1 (omega rising, then falling).
+  auto sweep = [&](int s, Eigen::VectorXd x, Eigen::VectorXd v) {
+    for (int j = 0; j < N; ++j) {
+      DiagramPoint& p = d.points[std::size_t(s * N + j)];
+      const int k = s == 0 ? j : N - 1 - j;
+      p.omega = omega_min + (omega_max - omega_min) * double(k) / double(N - 1);
+      p.up = s == 0;
+      diagram_speed(ti, opt, tol, p, x, v);
+      if (progress) {
+        const std::lock_guard<std::mutex> lock(reporting);
+        progress(p, s * N + j);
       }
-    } catch (const std::runtime_error& e) {   // this speed fails; the next starts from the last good state
-      p.motion = Motion::failed;
-      p.failure = e.what();
-      p.x.resize(0, x.size());
-      p.v.resize(0, x.size());
     }
-    if (progress) progress(p, s);
-    d.points.push_back(std::move(p));
+    return std::make_pair(x, v);
+  };
+  if (!down_given) {
+    const auto end = sweep(0, x0, v0);
+    sweep(1, end.first, end.second);
+    return d;
   }
+  // Two threads: every GSL call site switches the error handler off and restores the one it
+  // found; with the handler off here first, every thread finds and restores "off".
+  const GslErrorsReturned gsl_errors;
+  std::exception_ptr failed_down;
+  std::thread down([&] {
+    try {
+      sweep(1, opt.down_x0, opt.down_v0);
+    } catch (...) {
+      failed_down = std::current_exception();
+    }
+  });
+  try {
+    sweep(0, x0, v0);
+  } catch (...) {
+    down.join();
+    throw;
+  }
+  down.join();
+  if (failed_down) std::rethrow_exception(failed_down);
   return d;
 }
 

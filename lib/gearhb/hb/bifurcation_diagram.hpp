@@ -14,7 +14,8 @@
 //  - otherwise by the largest Lyapunov exponent lambda (per forcing period, i.e. ln of the
 //    mean growth factor of a tangent vector over one period), from the variational
 //    equations TimeIntegrator::period_map integrates for Floquet shooting, over
-//    lyapunov_periods periods from the last recorded state: chaotic if lambda >
+//    lyapunov_periods periods from the last recorded state (fewer where it is clearly chaotic:
+//    the sequential stop, lyapunov_min_periods): chaotic if lambda >
 //    lyapunov_threshold; quasi-periodic if |lambda| <= lyapunov_threshold (a torus has
 //    lambda = 0; a finite-time estimate scatters about it by O(1 / lyapunov_periods));
 //    "unsettled" if lambda < -lyapunov_threshold (an attracting orbit the classifier did not
@@ -68,8 +69,42 @@ struct BifurcationDiagramOptions {
   // lambda (per forcing period) above which the motion is chaotic: 0.02 (a tangent vector
   // growing by e^4 = 55 over 200 periods); a stated, not derived, threshold.
   double lyapunov_threshold = 0.02;
+  // The sequential stop, off by default (0: every estimate over lyapunov_periods, the results
+  // of every program unchanged); else from this many periods on (>= 30) the estimate ends
+  // early as chaotic once it clearly is: at the end of each block of 10 periods, the mean lambda' of the block means
+  // (the first block left out: the tangent vector still aligning with the most unstable
+  // direction) exceeds lyapunov_threshold by more than 3 standard errors of that mean (sd of
+  // the block means / sqrt(their number): the batch-means error of a correlated series,
+  // valid while the stretching decorrelates within a block, i.e. lambda >~ 0.1, so that a
+  // clear stop is the strong chaos the classification would call chaotic after
+  // lyapunov_periods anyway; near the threshold the stop is not clear and the estimate runs
+  // its lyapunov_periods). Not chaotic: always lyapunov_periods. A stopped estimate's orbit is
+  // integrated on without the variational equations to lyapunov_periods, so every speed's
+  // dwell (what the next speed starts from) is the same as without the stop; if the last
+  // 2 max_period + 1 Poincare points of that dwell repeat with a period n (a chaotic transient
+  // that settled: an orbit the fixed-length estimate would have averaged down), the speed is
+  // period-n with those points, else chaotic. The stopped lambda is the mean over the periods
+  // done: its precision is that of the stop (3 standard errors, larger than over
+  // lyapunov_periods), enough to say chaotic, not to quote to 0.05. 50 (4 block means after the
+  // first) is the fewest periods at which 3 standard errors of 4 means (t, 3 degrees of
+  // freedom: one-sided ~ 97.1 %) still mean something (ch. 6 uses 50). Not the default: a
+  // chaotic speed's end state then differs at round-off level from the fixed-length run's (the
+  // rest of its dwell is integrated without the tangent), and where the next speed has a
+  // long chaotic transient (the Kahraman-Singh oscillator's period-3 window at 1.25 reached
+  // from 1.3) whether it settles within the dwell changes with it. Source: batch means, e.g. Law & Kelton, Simulation Modeling and
+  // Analysis, ch. 9; the torus' linear tangent growth (lambda_k ~ ln k / k, block means
+  // falling) inflates the scatter and does not stop.
+  int lyapunov_min_periods = 0;
   // The integration (tolerances; x_scale: the typical displacement, the unit of period_tol).
   TimeIntegrationOptions integration;
+  // The down sweep's start at omega_max (x, v at phase 0; one value per dof each), or empty
+  // (the default). Empty: the down sweep starts from the up sweep's end state, after it (one
+  // thread). Given: from this state, the two sweeps on two threads (std::thread) at once. The
+  // rule for callers holding an HB curve: the orbit of its stable point at the band's upper end
+  // (hb_initial_state), if the curve has one there; else empty. Either way the view stays a
+  // hysteresis view: the up sweep follows the attractor reached from below, the down sweep the
+  // one that exists above (an attractor at omega_max, by the integration's own transient).
+  Eigen::VectorXd down_x0, down_v0;
 };
 
 struct DiagramPoint {
@@ -78,9 +113,10 @@ struct DiagramPoint {
   Motion motion = Motion::failed;
   int n = 0;                       // the period (periodic), else 0
   double lyapunov = NAN;           // per forcing period (computed if not periodic), else NaN
+  int lyapunov_periods = 0;        // periods lambda took (<= the options' lyapunov_periods: the sequential stop)
   int transient = 0;               // periods discarded
   bool by_shooting = false;        // periodic by attracting_cycle (a slow approach), not by repetition
-  Eigen::MatrixXd x, v;            // Poincare states: (periods + 1) x dofs
+  Eigen::MatrixXd x, v;            // Poincare states: (periods + 1) x dofs (a settled chaotic transient: 2 max_period + 1)
   std::string failure;             // why, if motion == failed
 };
 
@@ -88,9 +124,11 @@ struct BifurcationDiagram {
   std::vector<DiagramPoint> points;   // the up sweep, then the down sweep
 };
 
-// The sweep up from (x0, v0) at phase 0 and omega_min, then down from the up sweep's end.
-// progress (optional) is called after every speed with the point and its index (0-based,
-// over both sweeps). Throws std::invalid_argument for options out of range
+// The sweep up from (x0, v0) at phase 0 and omega_min; the sweep down from opt.down_x0, down_v0
+// at omega_max on a second thread if given, else from the up sweep's end after it. progress
+// (optional) is called after every speed with the point and its index (0-based, over both
+// sweeps: up 0 .. speeds - 1, down speeds .. 2 speeds - 1), from either thread, one call at a
+// time. Throws std::invalid_argument for options out of range
 // (check_bifurcation_options).
 BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
@@ -98,7 +136,8 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
                                        const std::function<void(const DiagramPoint&, int)>& progress = {});
 
 // The option out of range, by its key ("speeds", "transient_periods", "periods",
-// "max_period", "period_tol", "lyapunov_periods", "lyapunov_threshold"), and why; "" if none.
+// "max_period", "period_tol", "lyapunov_periods", "lyapunov_min_periods", "lyapunov_threshold"),
+// and why; "" if none.
 std::string check_bifurcation_options(const BifurcationDiagramOptions& opt, std::string* why = nullptr);
 
 // The smallest n in 1..max_period with |S_{j+n} - S_j| <= tol for all recorded pairs (S = (x,
@@ -128,11 +167,15 @@ double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd
 // QR), lambda_j = (1 / periods) sum_k ln R_jj. The first tangent vector is the one above
 // (count = 1 gives largest_lyapunov_exponent's value); the others start along the unit
 // vectors. section (if given) is called with the state after every period; logs (if not null)
-// receives ln R_jj of every period (periods x count), to judge the estimate's convergence.
+// receives ln R_jj of every period (periods done x count), to judge the estimate's convergence.
+// stop (if given) is called after every period with that period's ln R_jj; true ends the
+// estimate there (the exponents then average the periods done, periods_done receives their
+// number).
 std::vector<double> lyapunov_exponents(
     const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega, int periods,
     int count, const TimeIntegrationOptions& opt, Eigen::VectorXd* x_end = nullptr, Eigen::VectorXd* v_end = nullptr,
     const std::function<void(const Eigen::VectorXd&, const Eigen::VectorXd&)>& section = {},
-    Eigen::MatrixXd* logs = nullptr);
+    Eigen::MatrixXd* logs = nullptr, const std::function<bool(const Eigen::VectorXd&)>& stop = {},
+    int* periods_done = nullptr);
 
 }  // namespace gearhb
