@@ -490,6 +490,19 @@ void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, doubl
   }
 }
 
+Eigen::VectorXd hb_unknowns_of_samples(const HarmonicBalance& hb, const Eigen::MatrixXd& x) {
+  const int n = hb.dofs(), H = hb.harmonics(), N = int(x.rows());
+  if (x.cols() != n || N < 2 * H + 1)
+    throw std::invalid_argument("hb_unknowns_of_samples: need N >= 2H + 1 rows of n columns");
+  const Aft aft(H, N);
+  Eigen::VectorXd X(hb.size());
+  for (int i = 0; i < n; ++i) {
+    const Eigen::VectorXd c = aft.to_frequency(Eigen::VectorXd(x.col(i)));
+    for (int b = 0; b < 2 * H + 1; ++b) X[hb.index(b, i)] = c[b];
+  }
+  return X;
+}
+
 double fastest_rate(const HarmonicBalance& hb) {
   const auto& sys = hb.system();
   const int n = int(sys.M.rows());

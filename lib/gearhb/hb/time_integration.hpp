@@ -108,6 +108,11 @@ class TimeIntegrator {
 void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,
                       Eigen::VectorXd& x0, Eigen::VectorXd& v0);
 
+// The harmonic-balance unknowns of an orbit sampled over one period of hb's base frequency:
+// x (N x n, as TimeIntegrator::sample returns it: row j at phase 2 pi j / N, N >= 2H + 1)
+// projected on hb's H harmonics by the FFT (an integrated orbit as a start for Newton's method).
+Eigen::VectorXd hb_unknowns_of_samples(const HarmonicBalance& hb, const Eigen::MatrixXd& x);
+
 // The fastest rate of the model's linear dynamics [1/s]: the largest |lambda| of the
 // first-order matrix [0 I; -M^-1 K_c, -M^-1 C], K_c the stiffness with every contact closed at
 // its kc. An explicit integrator (rk8pd) takes of the order of (this rate x the period) / 5
