@@ -73,11 +73,14 @@ inline std::vector<PeriodDoubledBranch> planetary_period_doubled_branches(const 
 
 // The bifurcation diagram of a set (issue 34 section 3; programs/gearhb_planetary): its bands are
 // the ranges of [lo, hi] with no stable period-1 orbit (`gaps`, uncovered(lo, hi,
-// stable_intervals(c))), each padded on both sides by kDiagramMargin of its own width so that the
+// stable_intervals(c))), each padded on both sides by kDiagramMargin x its own width (its width) so that the
 // diagram starts and ends on the stable period-1 orbit beside the range where there is one (the
-// agreement with HB is checked there), clipped to [lo, hi], bands that then overlap merged.
+// agreement with HB is checked there), clipped to [lo, hi], bands that then overlap merged. A
+// whole width because the curve's points are sparse (14 over the Lin & Parker set's 1494-1530 Hz):
+// half a width ended the test's band between the range and the curve's first stable point, where
+// HB has no segment stable at both ends to solve an orbit on.
 // (Named as the pair programs' shared step will be; unified at merge.)
-constexpr double kDiagramMargin = 0.1;
+constexpr double kDiagramMargin = 1.0;
 inline Intervals diagram_bands(const Intervals& gaps, double lo, double hi) {
   Intervals bands;
   for (const auto& [a, b] : gaps) {
