@@ -288,8 +288,8 @@ void read_diagram(PlanetaryFile& f, const json& j, const std::string& path) {
     json merged = json::object();   // the set's defaults, then the file's options
     merged["bifurcation_diagram"] = {{"transient_periods", f.diagram.transient_periods}, {"periods", f.diagram.periods},
                                      {"max_period", f.diagram.max_period}, {"lyapunov_periods", f.diagram.lyapunov_periods}};
-    if (d.is_object()) merged["bifurcation_diagram"].update(d);
-    else merged["bifurcation_diagram"] = d;   // not an object: read_bifurcation_diagram exits 2 naming the key
+    if (!d.is_object()) fail_key(path, "bifurcation_diagram", "must be true, false or an object of options");
+    merged["bifurcation_diagram"].update(d);
     f.diagram = read_bifurcation_diagram(merged, path).options;
     f.diagram_speeds_given = d.contains("speeds");
     f.diagram_on = true;
