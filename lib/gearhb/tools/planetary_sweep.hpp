@@ -95,8 +95,8 @@ inline Intervals diagram_bands(const Intervals& gaps, double lo, double hi) {
 // Speeds of each sweep over a band width_hz wide: kDiagramSpeedsPerHz a hertz (both ends
 // included), at least kDiagramSpeedsMin, at most kDiagramSpeedsMax (the cost: each speed
 // integrates up to transient_periods + periods mesh periods of the 2n equations, and a speed
-// that is not periodic 200 more of the variational 2n + 4n^2; programs/gearhb_planetary/README.md
-// gives the measured times).
+// that is not periodic lyapunov_periods more of the variational 2n + 4n^2, and shoots with them
+// if it is not chaotic; bench/bench_planetary.cpp BM_planetary_diagram_* measures it).
 constexpr double kDiagramSpeedsPerHz = 0.1;
 constexpr int kDiagramSpeedsMin = 3, kDiagramSpeedsMax = 6;
 inline int planetary_diagram_speeds(double width_hz) {
