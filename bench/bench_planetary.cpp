@@ -16,7 +16,9 @@
 
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/hb/floquet.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/time_integration.hpp"
 #include "gearhb/tools/planetary_file.hpp"
 #include "gearhb/tools/planetary_sweep.hpp"
 
@@ -140,3 +142,29 @@ static void BM_planetary_teeth_floquet_point(benchmark::State& state) {
   for (auto _ : state) benchmark::DoNotOptimize(floquet_of_hb_variational(hb, p.X, p.omega));
 }
 BENCHMARK(BM_planetary_teeth_floquet_point)->Arg(1310)->Arg(1400)->Arg(1490)->Unit(benchmark::kMillisecond);
+
+// The example's bifurcation diagram by time integration (gearhb_planetary's step: its band, the
+// range with no stable period-1 orbit padded and clipped, diagram_bands; the example file's
+// options, 2 speeds a sweep) from the HB orbit at the band's start: the cost of the step; and the
+// set's defaults (planetary_diagram_defaults, planetary_diagram_speeds) over the same band.
+static void planetary_diagram(benchmark::State& state, bool file_options) {
+  const PlanetaryFile f = pd_example();
+  const HarmonicBalance hb = planetary_response_model(f);
+  const SweepOptions o = planetary_sweep_options(f);
+  const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
+  const Intervals bands = diagram_bands(uncovered(o.omega_min, o.omega_max, stable_intervals(c)), o.omega_min, o.omega_max);
+  if (bands.empty()) return state.SkipWithError("no band");
+  BifurcationDiagramOptions opt = file_options ? f.diagram : planetary_diagram_defaults();
+  if (!file_options) opt.speeds = planetary_diagram_speeds((bands[0].second - bands[0].first) / (2.0 * M_PI));
+  opt.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(hb, c.branch.points.front().X, c.branch.points.front().omega, x0, v0);
+  for (auto _ : state) {
+    const BifurcationDiagram d = bifurcation_diagram(hb, bands[0].first, bands[0].second, x0, v0, opt);
+    state.counters["speeds"] = double(d.points.size());
+  }
+}
+static void BM_planetary_diagram_example(benchmark::State& state) { planetary_diagram(state, true); }
+BENCHMARK(BM_planetary_diagram_example)->Unit(benchmark::kSecond)->Iterations(1);
+static void BM_planetary_diagram_defaults(benchmark::State& state) { planetary_diagram(state, false); }
+BENCHMARK(BM_planetary_diagram_defaults)->Unit(benchmark::kSecond)->Iterations(1);

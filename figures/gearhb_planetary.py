@@ -12,6 +12,12 @@ Writes into DIR (the run's own folder; gearhb_planetary calls this with plot=1):
                 contact as a rug per branch; the period-2 (4) branches switched at the period
                 doublings (rows with branch > 0) each in its own colour, over two mesh periods;
                 the ranges with no stable period-1 orbit shaded (key numbers unstable_period1_*);
+                with a bifurcation diagram (bifurcation_diagram.csv) a third panel: the sun's
+                rotation u_s at phase 0 of every mesh period by time integration (poincare.py) over
+                the HB orbits at the same phase (bifurcation_diagram_hb.csv: period 1 grey, each
+                period-2 (4) branch in its colour, one line per Poincare point of its orbit);
+  bifurcation_diagram.png  (with a diagram) the same Poincare points and HB orbits, the up sweep
+                above and the down sweep below, over the diagram's bands only;
   meshes.png    (with `response`) every mesh over the mesh frequency: its dynamic factor K_v
                 (one line per planet, sun-planet and ring-planet meshes in two panels) and its
                 contact class along the curve as one band per mesh (drive-flank loss, back-flank
@@ -33,11 +39,15 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
+from poincare import MOTION_COLOURS, draw_hb_section, draw_poincare  # noqa: E402
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, PERIOD2_COLOURS, RUG_HEIGHT,  # noqa: E402
                    bifurcation_handles, branch_ids, plot_branch, read_csv, rows_of, rug_room, runs, save,
                    shade_no_stable_period1, unstable_period1_ranges)
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
+# The period-2 (4) branches' colours: the project's, without the diagram's quasi-periodic colour (the
+# Poincare points are drawn under the same branches).
+BRANCH_COLOURS = [c for c in PERIOD2_COLOURS if c != MOTION_COLOURS["quasi_periodic"]]
 
 
 def geometry(params):
@@ -137,22 +147,86 @@ def loss_rug(ax, d, kind, N, colour, row, label):
             label=label if loss else None)
 
 
+def read_diagram(d_dir):
+    """(diagram, HB section) of the run, or None without a bifurcation diagram."""
+    if not (d_dir / "bifurcation_diagram.csv").exists():
+        return None
+    return read_csv(d_dir / "bifurcation_diagram.csv"), read_csv(d_dir / "bifurcation_diagram_hb.csv")
+
+
+def subset(h, keep):
+    return {c: [v[i] for i in range(len(v)) if keep(i)] for c, v in h.items()}
+
+
+def diagram_panel(ax, p, h, sweeps, title=None):
+    """The Poincare points of u_s over the HB orbits at phase 0: period 1 (branch 0) by
+    draw_hb_section; each period-p branch's p points per orbit as p lines in its colour (the rows
+    of a point come p at a time, j = 0..p-1: the mesh periods of its orbit)."""
+    from matplotlib.lines import Line2D
+    one = subset(h, lambda i: h["branch"][i] == 0 and h["point"][i] == "branch")
+    drawn = {int(s) for s in one["stable"]}
+    handles = [hd for hd in draw_hb_section(ax, one, "f_mesh_hz", "u_s_um")   # the styles drawn only
+               if ("(stable)" in hd.get_label() and 1 in drawn) or ("(unstable)" in hd.get_label() and 0 in drawn)]
+    for n, bid in enumerate(sorted({b for b in h["branch"] if b > 0})):
+        rows = subset(h, lambda i: h["branch"][i] == bid and h["point"][i] == "branch")
+        period, colour = int(rows["period"][0]), BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
+        for j in range(period):
+            plot_branch(ax, subset(rows, lambda i: i % period == j), "u_s_um", colour, None, x="f_mesh_hz",
+                        values="hb", lw=1.1)
+        for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")):
+            if flag in {int(s) for s in rows["stable"]}:
+                handles.append(Line2D([], [], color=colour, ls=ls, label="HB period %d (branch %d), its %d points (%s)"
+                                      % (period, bid, period, word)))
+    handles += draw_poincare(ax, p, "f_mesh_hz", "u_s_um", sweeps=sweeps)
+    ax.set_ylabel("sun rotation u_s at phase 0\nof each mesh period [um]")
+    if title:
+        ax.set_title(title, fontsize=8)
+    return handles
+
+
+def diagram_figure(d_dir, params, diagram):
+    """bifurcation_diagram.png: the up sweep above, the down sweep below."""
+    p, h = diagram
+    fig, axes = plt.subplots(2, 1, figsize=(7.4, 7.0), sharex=True)
+    labels = {}
+    for ax, sweep in zip(axes, ("up", "down")):
+        for hd in diagram_panel(ax, p, h, (sweep,), "sweep %s (each speed starts from the previous speed's final state)"
+                                % sweep):
+            labels.setdefault(hd.get_label(), hd)
+    lo, hi = min(p["f_mesh_hz"]), max(p["f_mesh_hz"])
+    axes[-1].set_xlim(lo - 0.02 * (hi - lo), hi + 0.02 * (hi - lo))
+    axes[-1].set_xlabel("mesh frequency [Hz]")
+    for ax in axes:   # the y range of what is drawn inside the bands (the HB lines run over the whole curve)
+        ys = list(p["u_s_um"]) + [y for x, y in zip(h["f_mesh_hz"], h["u_s_um"]) if lo <= x <= hi]
+        pad = 0.05 * (max(ys) - min(ys)) or 1e-3
+        ax.set_ylim(min(ys) - pad, max(ys) + pad)
+    fig.suptitle("%s, N = %d planets: bifurcation diagram by time integration\n(Poincare section at phase 0 of the mesh cycle)"
+                 % (params.get("name", "planetary set"), params["planets"]), fontsize=9)
+    axes[-1].legend(handles=list(labels.values()), fontsize=7, loc="upper center", bbox_to_anchor=(0.5, -0.2),
+                    ncol=2, frameon=False)
+    fig.tight_layout()
+    fig.savefig(d_dir / "bifurcation_diagram.png", bbox_inches="tight")
+    plt.close(fig)
+
+
 def response_figure(d_dir, params):
     d, doubled = read_response(d_dir)
     N = params["planets"]
-    fig, (top, bottom) = plt.subplots(2, 1, figsize=(7.4, 6.8), sharex=True)
+    diagram = read_diagram(d_dir)
+    fig, axes = plt.subplots(3 if diagram else 2, 1, figsize=(7.4, 9.6 if diagram else 6.8), sharex=True)
+    top, bottom = axes[0], axes[1]
     bif = read_bifurcations(d_dir)
     curve(top, d, "x_rms_ac", "C0", "sun rotation u_s (AC RMS)", scale=1e6)
     curve(top, d, "sun_xy_rms_um", "C1", "sun centre x, y (AC RMS)")
     for n, (bid, period, d2) in enumerate(doubled):
-        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
+        colour = BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
         curve(top, d2, "x_rms_ac", colour, "period %d (branch %d): u_s and x, y,\nover %d mesh periods" % (period, bid, period),
               scale=1e6)
         curve(top, d2, "sun_xy_rms_um", colour)
     bifurcation_marks(top, bif)
     top.set_ylabel("um")
     top.set_yscale("log")
-    shaded = shade_unstable_period1(d_dir, (top, bottom))
+    shaded = shade_unstable_period1(d_dir, axes)
     top.legend(handles=top.get_legend_handles_labels()[0] + stability_handles(d, bif, doubled) + shaded,
                loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
     rows = 0
@@ -161,7 +235,7 @@ def response_figure(d_dir, params):
         loss_rug(bottom, d, kind, N, colour, rows, "%s-planet drive flank loses contact" % kind)
         rows += 1
     for n, (bid, period, d2) in enumerate(doubled):
-        colour = PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)]
+        colour = BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
         for kind, ls in (("sun", "-"), ("ring", "-.")):
             bottom.plot(d2["f_mesh_hz"], largest_kv(d2, kind, N), color=colour, ls=ls,
                         label="period %d (branch %d): %s-planet K_v" % (period, bid, kind))
@@ -169,9 +243,16 @@ def response_figure(d_dir, params):
             rows += 1
     rug_room(bottom, rows=math.ceil(rows * RUG_ROW / (RUG_HEIGHT + 0.006)))
     bottom.set_ylabel("K_v: largest force / static force")
-    bottom.set_xlabel("mesh frequency [Hz]")
+    axes[-1].set_xlabel("mesh frequency [Hz]")
     bottom.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8,
                   title="rug: one row per branch and mesh kind" if doubled else None, title_fontsize=8)
+    if diagram:
+        handles = diagram_panel(axes[2], *diagram, ("up", "down"))
+        p = diagram[0]
+        ys = list(p["u_s_um"])
+        pad = 0.1 * (max(ys) - min(ys)) or 1e-3
+        axes[2].set_ylim(min(ys) - pad, max(ys) + pad)   # the Poincare points' range (HB lines run beyond)
+        axes[2].legend(handles=handles, loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=7)
     fig.suptitle("%s, N = %d planets, %g N m on the %s" % (params.get("name", "planetary set"), N,
                                                            params["response"]["torque"],
                                                            params["response"]["input"]), fontsize=10)
@@ -401,6 +482,8 @@ def main():
         mesh_stiffness_figure(d_dir, params)
     if "response" in params and (d_dir / "response.csv").exists():
         response_figure(d_dir, params)
+        if (d_dir / "bifurcation_diagram.csv").exists():
+            diagram_figure(d_dir, params, read_diagram(d_dir))
         meshes_figure(d_dir, params)
         load_sharing_figure(d_dir, params)
         phasing_figure(d_dir, params)

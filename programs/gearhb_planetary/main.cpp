@@ -31,11 +31,17 @@
 // variational equation about the HB orbit), to the file's period_doubling.depth; response.csv
 // holds every branch in the one schema (app/schema.hpp), bifurcations.csv every branch's events.
 //
+// Where the curve has ranges with no stable period-1 orbit, the bifurcation diagram by time
+// integration over each (padded: tools/planetary_sweep.hpp diagram_bands), as gearhb_frc and
+// gearhb_gear draw theirs (hb/bifurcation_diagram.hpp; the file's bifurcation_diagram key, false:
+// none): the sun's rotation u_s at phase 0 of every mesh period (bifurcation_diagram.csv) over the
+// HB orbits at the same phase, period 1 and the period-2 (4) branches (bifurcation_diagram_hb.csv).
+//
 // Steps: read_set (in the study's checks: a bad file exits 2 before anything is
 // written; it computes the stiffnesses from the teeth), natural_frequencies, mode_shapes,
 // campbell, mesh_stiffness, response (loaded_model, response_curve, stability,
-// doubled_branches, response_table, bifurcations_table, response_key_numbers,
-// any_motion_key_numbers), draw.
+// doubled_branches, bifurcation_diagram, response_table, diagram_tables, bifurcations_table,
+// response_key_numbers, any_motion_key_numbers), draw.
 //
 // Sample runs:
 //   build/bin/gearhb_planetary programs/gearhb_planetary/examples/lin_parker_1999.json --out /tmp/lp
@@ -49,10 +55,12 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/fourier.hpp"
+#include "gearhb/core/newton.hpp"
 #include "gearhb/core/units.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
@@ -60,6 +68,7 @@
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/period_doubling.hpp"
+#include "gearhb/hb/time_integration.hpp"
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/tools/planetary_file.hpp"
 #include "gearhb/tools/planetary_stiffness.hpp"
@@ -100,6 +109,8 @@ class PlanetarySetFromFile {
     std::vector<PointMeasures> measures;                      // per point of curve
     std::vector<PeriodDoubledBranch> doubled;                 // period 2 (4: period_doubling.depth 2)
     std::vector<std::vector<PointMeasures>> doubled_measures; // per branch (empty: no points)
+    Intervals bands;                                          // of the diagram (empty: none)
+    BifurcationDiagram diagram;                               // every band's, band by band
   };
   void response(Run& run) const;
   HarmonicBalance loaded_model() const;
@@ -107,6 +118,8 @@ class PlanetarySetFromFile {
   void stability(Run& run, const HarmonicBalance& hb, const SweepOptions& o, FrequencyCurve& c) const;
   void doubled_branches(Run& run, const HarmonicBalance& hb, SweepOptions o, const std::vector<double>& F0,
                         Response& r) const;
+  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const SweepOptions& o, Response& r) const;
+  void diagram_tables(Run& run, const HarmonicBalance& hb, const Response& r) const;
   std::vector<PointMeasures> measures(const HarmonicBalance& hb, const FrequencyCurve& c,
                                       const std::vector<double>& F0) const;
   Table curve_table(const HarmonicBalance& hb, const FrequencyCurve& c, const std::vector<PointMeasures>& m,
@@ -115,7 +128,8 @@ class PlanetarySetFromFile {
   Table bifurcations_table(const Response& r) const;
   Table sun_harmonics_table(const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void response_key_numbers(Run& run, const FrequencyCurve& c, const std::vector<PointMeasures>& m) const;
-  void any_motion_key_numbers(Run& run, const Response& r, const SweepOptions& o) const;
+  void any_motion_key_numbers(Run& run, const HarmonicBalance& hb, const Response& r, const SweepOptions& o,
+                              const std::vector<double>& F0) const;
   void draw(Run& run) const;
 };
 
@@ -261,11 +275,13 @@ void PlanetarySetFromFile::response(Run& run) const {
   const std::vector<double> F0 = planetary_static_mesh_forces(hb, file_.set.planets());
   r.measures = measures(hb, r.curve, F0);
   doubled_branches(run, hb, o, F0, r);
+  bifurcation_diagram(run, hb, o, r);
   run.write("response.csv", response_table(hb, r));
+  diagram_tables(run, hb, r);
   if (file_.response.stability) run.write("bifurcations.csv", bifurcations_table(r));
   run.write("sun_harmonics.csv", sun_harmonics_table(hb, r.curve));
   response_key_numbers(run, r.curve, r.measures);
-  any_motion_key_numbers(run, r, o);
+  any_motion_key_numbers(run, hb, r, o, F0);
 }
 
 // The loaded set (planetary_file.hpp planetary_response_model): the output held by its
@@ -360,6 +376,99 @@ void PlanetarySetFromFile::doubled_branches(Run& run, const HarmonicBalance& hb,
     std::snprintf(part, sizeof part, " Hz; largest stable K_v %.3f", kv);
     run.say(st.empty() ? line + " unstable everywhere" : line + part);
   }
+}
+
+// The Poincare value of the diagram: the sun's rotation u_s = r_s theta_s (the response figure's
+// top panel draws its AC RMS, response.csv's x), in um, at phase 0 of every mesh period.
+Eigen::VectorXd poincare_coordinate(const HarmonicBalance& hb) {
+  return Eigen::VectorXd::Unit(hb.dofs(), coordinate(Body::sun, 2));
+}
+
+// Step 4b (issue 34 section 3; with response.stability, unless bifurcation_diagram is false): the
+// bifurcation diagram by time integration (hb/bifurcation_diagram.hpp; app/bifurcation_input.hpp
+// diagram_of_curve) over each band of diagram_bands (tools/planetary_sweep.hpp: the ranges with no
+// stable period-1 orbit, padded), up then down, from the HB orbit of the curve nearest the band's
+// start; speeds planetary_diagram_speeds(band width) unless the file's key gives them. Skipped with
+// one line where the integration is stiff (fastest rate x period > 1e4, gearhb_frc's rule). Key
+// numbers diagram_bands, diagram_<motion>_speeds, diagram_max_period; one line per band.
+void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const SweepOptions& o,
+                                               Response& r) const {
+  if (!file_.diagram_on || r.curve.stability == StabilityMethod::none) return;
+  const Intervals bands = diagram_bands(uncovered(o.omega_min, o.omega_max, stable_intervals(r.curve)), o.omega_min, o.omega_max);
+  if (bands.empty()) return;
+  const double stiff = fastest_rate(hb) * 2.0 * M_PI / bands.front().first;
+  if (stiff > 1e4) {
+    run.say(file_.name + ": no bifurcation diagram: the time integration is stiff (fastest rate x period " +
+            std::to_string(stiff) + " > 1e4)");
+    return;
+  }
+  r.bands = bands;
+  const auto& P = r.curve.branch.points;
+  for (std::size_t k = 0; k < bands.size(); ++k) {
+    const auto [lo, hi] = bands[k];
+    BifurcationDiagramOptions opt = file_.diagram;
+    if (!file_.diagram_speeds_given) opt.speeds = planetary_diagram_speeds(hz(hi) - hz(lo));
+    FrequencyCurve start = r.curve;   // diagram_of_curve starts from its lowest point: the one nearest lo
+    start.branch.points = {*std::min_element(P.begin(), P.end(), [lo = lo](const BranchPoint& a, const BranchPoint& b) {
+      return std::abs(a.omega - lo) < std::abs(b.omega - lo);
+    })};
+    const std::string id = std::to_string(k + 1);
+    const BifurcationDiagram d = diagram_of_curve(run, hb, start, lo, hi, opt, "bifurcation diagram " + id, file_.name + ": ");
+    r.diagram.points.insert(r.diagram.points.end(), d.points.begin(), d.points.end());
+    char part[120];
+    std::snprintf(part, sizeof part, ": band %s, %.1f to %.1f Hz: ", id.c_str(), hz(lo), hz(hi));
+    run.say(file_.name + part + diagram_summary(d, [](double w) { return hz(w); }, "Hz"));
+  }
+  run.key_numbers().add("diagram_bands", double(bands.size()), "-");
+  diagram_key_numbers(run.key_numbers(), r.diagram, "");
+}
+
+// The rows of bifurcation_diagram_hb.csv of a period-p branch b (p = 2, 4; id its branch number):
+// at each of its points and, where a segment stable at both ends brackets a speed of the diagram's
+// up sweep, at the HB orbit solved there (Newton on b's model at omega / p), its p Poincare values
+// (phase 0 of the mesh periods j = 0..p-1: its harmonics turned by 2 pi j / p of the base period).
+void add_subharmonic_section_rows(Table& t, const PeriodDoubledBranch& b, int id, const BifurcationDiagram& d,
+                                  const Eigen::VectorXd& q) {
+  const HarmonicBalance& hbp = *b.model;
+  const int n = hbp.dofs(), H = hbp.harmonics(), p = b.period;
+  auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point) {
+    for (int j = 0; j < p; ++j) {
+      const double phi = 2.0 * M_PI * j / p;
+      Eigen::VectorXd x = X.segment(hbp.index(0, 0), n);
+      for (int l = 1; l <= H; ++l)
+        x += std::cos(l * phi) * X.segment(hbp.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hbp.index(2 * l, 0), n);
+      t.add_row({hz(p * Omega), long(p), long(id), 1e6 * q.dot(x), long(stable ? 1 : 0), std::string(point)});
+    }
+  };
+  const auto& P = b.curve.branch.points;
+  const auto& S = b.curve.stable;
+  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < S.size() && S[i], "branch");
+  for (const DiagramPoint& dp : d.points) {
+    const double Omega = dp.omega / p;
+    if (!dp.up) continue;
+    for (std::size_t i = 1; i < P.size() && i < S.size(); ++i) {
+      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !S[i - 1] || !S[i]) continue;
+      Eigen::VectorXd X = P[i].X;
+      if (newton_solve(hbp, X, Omega, b.curve.scaling).converged) add(Omega, X, true, "speed");
+    }
+  }
+}
+
+// bifurcation_diagram.csv (app/bifurcation_input.hpp's columns: f_mesh_hz, sweep, u_s_um, motion,
+// n, lyapunov) and bifurcation_diagram_hb.csv (f_mesh_hz, period, branch, u_s_um, stable, point:
+// the period-1 curve's rows (add_hb_section_rows), then each period-2 (4) branch's).
+void PlanetarySetFromFile::diagram_tables(Run& run, const HarmonicBalance& hb, const Response& r) const {
+  if (r.diagram.points.empty()) return;
+  const Eigen::VectorXd q = poincare_coordinate(hb);
+  Table t(bifurcation_columns({"f_mesh_hz"}, "u_s_um"));
+  add_bifurcation_rows(t, r.diagram, q, 1e6, [](double w) { return std::vector<Table::Cell>{hz(w)}; });
+  run.write("bifurcation_diagram.csv", t);
+  Table h(hb_section_columns({"f_mesh_hz", "period", "branch"}, "u_s_um"));
+  add_hb_section_rows(h, hb, r.curve, r.diagram, q, 1e6,
+                      [](double w) { return std::vector<Table::Cell>{hz(w), long(1), long(0)}; });
+  for (std::size_t k = 0; k < r.doubled.size(); ++k)
+    if (has_points(r.doubled[k])) add_subharmonic_section_rows(h, r.doubled[k], int(k) + 1, r.diagram, q);
+  run.write("bifurcation_diagram_hb.csv", h);
 }
 
 // Every point's meshes over its period (planetary_mesh.hpp; hb the curve's model, of period 1 or
@@ -505,12 +614,17 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
                         : "Floquet at " + std::to_string(checked) + " points, " + std::to_string(unstable) + " unstable"));
 }
 
-// Issue 34 §4, as gearhb_gear's: the largest K_v of the motion that exists (max_kv_any_motion:
-// over the meshes of every stable period-1 and period-2 (4) point, 0 where none is stable;
-// max_kv_any_motion_from: the period of the orbit that gave it, absent then) and any_motion_complete (0 where a mesh frequency has no
-// stable orbit of any period computed: its motion unknown, not counted); the ranges with no
-// stable period-1 orbit are the stability step's unstable_period1_* keys. With stability only.
-void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, const SweepOptions& o) const {
+// Issue 34 §4, as gearhb_gear's: the largest K_v of the motion that exists (max_kv_any_motion):
+// over the meshes of every stable period-1 and period-2 (4) point and, at the diagram's speeds in
+// the ranges with no stable period-1 orbit where it is not period 1, the time-integrated motion
+// (16 mesh periods from its first Poincare state, 512 samples each: planetary_sampled_dynamic_factor;
+// its largest max_kv_time_integration); max_kv_any_motion_from: the orbit that gave it (1, 2, 4:
+// the HB orbit of that period; 0: the time integration), absent where nothing gave one;
+// any_motion_complete: 0 where a mesh frequency has neither a stable orbit of any period computed
+// nor the diagram (its motion unknown, not counted). The ranges with no stable period-1 orbit are
+// the stability step's unstable_period1_* keys. With stability only.
+void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const HarmonicBalance& hb, const Response& r,
+                                                  const SweepOptions& o, const std::vector<double>& F0) const {
   if (r.curve.stability == StabilityMethod::none) return;
   double kv = 0.0;
   int from = 1;
@@ -521,6 +635,7 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, c
   };
   take(r.curve, r.measures, 1);
   Intervals stable = stable_intervals(r.curve);
+  const Intervals gaps = uncovered(o.omega_min, o.omega_max, stable);
   for (std::size_t b = 0; b < r.doubled.size(); ++b) {
     if (!has_points(r.doubled[b])) continue;
     take(r.doubled[b].curve, r.doubled_measures[b], r.doubled[b].period);
@@ -528,9 +643,28 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const Response& r, c
     stable.insert(stable.end(), more.begin(), more.end());
   }
   KeyNumbers& key = run.key_numbers();
-  key.add("max_kv_any_motion", kv, "-");   // 0: no stable orbit of any computed period
+  if (!r.diagram.points.empty()) {
+    const double kv_ti = run.timed("any motion", [&] {
+      const std::vector<int> back = back_flank_contacts(file_.meshes, file_.set.planets());
+      TimeIntegrationOptions opt;
+      opt.x_scale = r.curve.scaling.x.cwiseAbs().maxCoeff();
+      opt.samples_per_period = 512;
+      double most = 0.0;
+      for (const DiagramPoint& p : r.diagram.points) {
+        const bool in_gap = std::any_of(gaps.begin(), gaps.end(), [&](auto& g) { return g.first <= p.omega && p.omega <= g.second; });
+        if (!in_gap || p.motion == Motion::failed || (p.motion == Motion::periodic && p.n == 1) || p.x.rows() == 0) continue;
+        const Eigen::MatrixXd xs = TimeIntegrator(hb).sample(p.x.row(0).transpose(), p.v.row(0).transpose(), p.omega, 0, 16, opt);
+        most = std::max(most, planetary_sampled_dynamic_factor(hb, back, xs, 512, F0));
+      }
+      return most;
+    });
+    key.add("max_kv_time_integration", kv_ti, "-");
+    if (kv_ti > kv) kv = kv_ti, from = 0;
+  }
+  key.add("max_kv_any_motion", kv, "-");   // 0: no stable orbit of any computed period, no diagram
   if (kv > 0.0) key.add("max_kv_any_motion_from", double(from), "-");
-  key.add("any_motion_complete", uncovered(o.omega_min, o.omega_max, stable).empty() ? 1.0 : 0.0, "-");
+  const bool covered = uncovered(o.omega_min, o.omega_max, stable).empty() || (!gaps.empty() && !r.diagram.points.empty());
+  key.add("any_motion_complete", covered ? 1.0 : 0.0, "-");
 }
 
 // Step 5: DIR/modes.png by figures/gearhb_planetary.py (the project's figure style).
@@ -548,7 +682,8 @@ int main(int argc, char** argv) {
               "Writes DIR/modes.csv (frequency_hz, mode_type, multiplicity), mode_shapes.csv,\n"
               "key_numbers.json, params.json (the resolved file), timings.csv and modes.png; with `response`\n"
               "response.csv (every branch: period, branch), sun_harmonics.csv, bifurcations.csv (response.stability 1:\n"
-              "every point's stability; period-2 branches switched at its period doublings).\n\n" +
+              "every point's stability; period-2 branches switched at its period doublings) and, where no\n"
+              "period-1 orbit is stable, bifurcation_diagram.csv, bifurcation_diagram_hb.csv (time integration).\n\n" +
                   planetary_file_help());
   PlanetarySetFromFile program(study);
   return study.run(argc, argv, [&](Run& run) { program.run(run); });

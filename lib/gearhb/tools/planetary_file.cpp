@@ -272,7 +272,42 @@ void read_response(PlanetaryFile& f, const json& j, const std::string& file) {
     fail_key(file, "response.output_shaft", "leaves the set free to rotate (a natural frequency 0): hold the output");
 }
 
+// bifurcation_diagram: true | false | an object of options (read_bifurcation_diagram); only with
+// the response's stability (the diagram's bands are the ranges the stability finds unstable).
+// The options a key leaves out take the set's defaults (planetary_diagram_defaults), not the library's.
+void read_diagram(PlanetaryFile& f, const json& j, const std::string& path) {
+  f.diagram = planetary_diagram_defaults();
+  if (!j.contains("bifurcation_diagram")) {
+    f.diagram_on = f.response.present && f.response.stability;
+    return;
+  }
+  const json& d = j["bifurcation_diagram"];
+  if (d.is_boolean()) {
+    f.diagram_on = d.get<bool>();
+  } else {
+    json merged = json::object();   // the set's defaults, then the file's options
+    merged["bifurcation_diagram"] = {{"transient_periods", f.diagram.transient_periods}, {"periods", f.diagram.periods},
+                                     {"max_period", f.diagram.max_period}, {"lyapunov_periods", f.diagram.lyapunov_periods}};
+    if (!d.is_object()) fail_key(path, "bifurcation_diagram", "must be true, false or an object of options");
+    merged["bifurcation_diagram"].update(d);
+    f.diagram = read_bifurcation_diagram(merged, path).options;
+    f.diagram_speeds_given = d.contains("speeds");
+    f.diagram_on = true;
+  }
+  if (f.diagram_on && !(f.response.present && f.response.stability))
+    fail_key(path, "bifurcation_diagram", "needs the response with its stability (response.stability 1)");
+}
+
 }  // namespace
+
+BifurcationDiagramOptions planetary_diagram_defaults() {
+  BifurcationDiagramOptions o;
+  o.transient_periods = 200;
+  o.periods = 16;
+  o.max_period = 4;
+  o.lyapunov_periods = 20;
+  return o;
+}
 
 double member_radius(const PlanetaryTeeth& t, double pressure_angle, Body b) {
   if (b == Body::carrier) return t.centre_distance();
@@ -283,7 +318,8 @@ PlanetaryFile read_planetary_file(const std::string& path,
                                   const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", {"name", "planets", "planet_angles_deg", "teeth", "module", "addendum", "pressure_angle_deg",
-                          "sun", "ring", "carrier", "planet", "mesh", "response", "campbell", "period_doubling"});
+                          "sun", "ring", "carrier", "planet", "mesh", "response", "campbell", "period_doubling",
+                          "bifurcation_diagram"});
   for (const auto& [key, text] : overrides) apply_override(j, path, key, text);
   PlanetaryFile f;
   f.resolved = j;
@@ -308,6 +344,7 @@ PlanetaryFile read_planetary_file(const std::string& path,
   f.period_doubling_depth = read_period_doubling_depth(j, path);
   if (j.contains("period_doubling") && !f.response.present)
     fail_key(path, "period_doubling", "needs the response over mesh frequency (response)");
+  read_diagram(f, j, path);
   if (f.tooth_model && !f.response.present)
     fail_key(path, "mesh.stiffness", "tooth_model needs a response section (its torque is the meshes' static load)");
   if (j.contains("campbell")) {
@@ -364,6 +401,11 @@ std::string planetary_file_help() {
          "                           zeta (0.02), harmonics (8), stability (1: every point's)\n"
          "  campbell                 optional: carrier_rpm_to, points: natural frequencies over carrier speed\n" +
          period_doubling_help() +
+         "  bifurcation_diagram      optional: true (the default with response.stability 1) | false | an object of\n"
+         "                           options of gearhb_frc's key (speeds: per band and sweep, default from the band's\n"
+         "                           width; transient_periods (200 here), periods (16), max_period (4), period_tol,\n"
+         "                           lyapunov_periods (20), lyapunov_threshold): the diagram by time integration over each range with no\n"
+         "                           stable period-1 orbit, padded (bifurcation_diagram.csv, bifurcation_diagram.png)\n" +
          "                        (with response.stability: the PDs located on the curve)\n"
          "Checks (exit 2 naming the key): z_r = z_s + 2 z_p, (z_s + z_r) / N whole (equal spacing) or\n"
          "(z_s + z_r) psi_n / 360 whole (given angles), tip circles of neighbouring planets apart.\n";

@@ -53,6 +53,7 @@
 
 #include "gearhb/gears/sets/planetary.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/tools/planetary_stiffness.hpp"
 
 namespace gearhb {
@@ -88,8 +89,27 @@ struct PlanetaryFile {
   // period_doubling.depth (app/bifurcation_input.hpp, as gearhb_gear): the period-2 (and 4)
   // branches switched at the located period doublings of the response (tools/planetary_sweep.hpp)
   int period_doubling_depth = 1;
+  // bifurcation_diagram (app/bifurcation_input.hpp's key, as gearhb_frc and gearhb_gear read it):
+  // absent or true, the diagram by time integration over each range of the response with no
+  // stable period-1 orbit (programs/gearhb_planetary: diagram_bands), its options the library's
+  // with `speeds` from the band's width (planetary_diagram_speeds); an object overrides options
+  // (its `speeds`: per band and sweep); false, none.
+  bool diagram_on = true;
+  bool diagram_speeds_given = false;
+  BifurcationDiagramOptions diagram;
   nlohmann::json resolved;      // the file after overrides (params.json)
 };
+
+// The set's defaults of the diagram's options, chosen for its cost (24 DOFs for five planets: a
+// speed that is not periodic integrates lyapunov_periods mesh periods of the 2n + 4n^2 = 2352 variational
+// equations, and shoots on the max_period-period map with them: most of the diagram's time,
+// bench/bench_planetary.cpp BM_planetary_diagram_*): the library's
+// (hb/bifurcation_diagram.hpp) but transient_periods 200 (a mode of damping ratio 0.02 at the mesh
+// frequency decays by exp(-2 pi 0.02 200) ~ 1e-11 after a jump), periods 16 (a period up to 4
+// repeating 4 times), max_period 4 (period 2 and the period-4 branches of period_doubling.depth 2),
+// lyapunov_periods 20 (a finite-time estimate scattering by O(1/20) about a torus' 0: a point whose
+// lambda lies within it of lyapunov_threshold is not settled by it).
+BifurcationDiagramOptions planetary_diagram_defaults();
 
 PlanetaryFile read_planetary_file(const std::string& path,
                                   const std::vector<std::pair<std::string, std::string>>& overrides);

@@ -17,6 +17,7 @@
 //    (BandSearch::never; frequency_sweep.hpp add_narrow_bands): it cost 58 s more on the star
 //    set (12-40 Floquet points for each interval whose critical multiplier lies near the real
 //    axis beyond 0.75, which a lightly damped set has everywhere) and found none there.
+#include <algorithm>
 #include <cmath>
 
 #include <string>
@@ -68,6 +69,38 @@ inline std::vector<PeriodDoubledBranch> planetary_period_doubled_branches(const 
                                                                           const FrequencyCurve& c,
                                                                           const SweepOptions& o, int depth) {
   return period_doubling_cascade(hb, c, planetary_stability_options(o), depth);
+}
+
+// The bifurcation diagram of a set (issue 34 section 3; programs/gearhb_planetary): its bands are
+// the ranges of [lo, hi] with no stable period-1 orbit (`gaps`, uncovered(lo, hi,
+// stable_intervals(c))), each padded on both sides by kDiagramMargin x its own width (its width) so that the
+// diagram starts and ends on the stable period-1 orbit beside the range where there is one (the
+// agreement with HB is checked there), clipped to [lo, hi], bands that then overlap merged. A
+// whole width because the curve's points are sparse (14 over the Lin & Parker set's 1494-1530 Hz):
+// half a width ended the test's band between the range and the curve's first stable point, where
+// HB has no segment stable at both ends to solve an orbit on.
+// (Named as the pair programs' shared step will be; unified at merge.)
+constexpr double kDiagramMargin = 1.0;
+inline Intervals diagram_bands(const Intervals& gaps, double lo, double hi) {
+  Intervals bands;
+  for (const auto& [a, b] : gaps) {
+    const double pad = kDiagramMargin * (b - a);
+    const double from = std::max(lo, a - pad), to = std::min(hi, b + pad);
+    if (!bands.empty() && from <= bands.back().second) bands.back().second = std::max(bands.back().second, to);
+    else bands.emplace_back(from, to);
+  }
+  return bands;
+}
+
+// Speeds of each sweep over a band width_hz wide: kDiagramSpeedsPerHz a hertz (both ends
+// included), at least kDiagramSpeedsMin, at most kDiagramSpeedsMax (the cost: each speed
+// integrates up to transient_periods + periods mesh periods of the 2n equations, and a speed
+// that is not periodic lyapunov_periods more of the variational 2n + 4n^2, and shoots with them
+// if it is not chaotic; bench/bench_planetary.cpp BM_planetary_diagram_* measures it).
+constexpr double kDiagramSpeedsPerHz = 0.1;
+constexpr int kDiagramSpeedsMin = 3, kDiagramSpeedsMax = 6;
+inline int planetary_diagram_speeds(double width_hz) {
+  return std::clamp(int(std::ceil(kDiagramSpeedsPerHz * width_hz)) + 1, kDiagramSpeedsMin, kDiagramSpeedsMax);
 }
 
 }  // namespace gearhb

@@ -159,6 +159,26 @@ PlanetaryMeshOrbit planetary_mesh_orbit(const HarmonicBalance& hb, const std::ve
   return o;
 }
 
+double planetary_sampled_dynamic_factor(const HarmonicBalance& hb, const std::vector<int>& back, const Eigen::MatrixXd& xs,
+                                        int per_period, const std::vector<double>& F0) {
+  auto force = [&](std::size_t k, const Eigen::VectorXd& x, double th) {
+    const UnilateralContact& ct = hb.contacts()[k];
+    double u = ct.gap + ct.normal.dot(x);
+    if (ct.gap_harmonics.size() > 0) u += trig_series(ct.gap_harmonics, th);
+    return contact_force(stiffness_at(ct, th), u);
+  };
+  double kv = 0.0;
+  for (Eigen::Index j = 0; j < xs.rows(); ++j) {
+    const double th = 2.0 * M_PI * double(j % per_period) / double(per_period);
+    const Eigen::VectorXd x = xs.row(j).transpose();
+    for (std::size_t i = 0; i < F0.size(); ++i) {
+      const double N = force(i, x, th) - (back[i] >= 0 ? force(std::size_t(back[i]), x, th) : 0.0);
+      kv = std::max(kv, std::fabs(N) / F0[i]);
+    }
+  }
+  return kv;
+}
+
 std::vector<double> planetary_static_mesh_forces(const HarmonicBalance& hb, int planets) {
   const unsigned long long drive = (1ull << (2 * planets)) - 1ull;
   const Eigen::VectorXd x0 = hb.contact_set_solution(1.0, drive).head(hb.dofs());

@@ -102,6 +102,14 @@ struct PlanetaryMeshOrbit {
 PlanetaryMeshOrbit planetary_mesh_orbit(const HarmonicBalance& hb, const std::vector<int>& back, const Eigen::VectorXd& X,
                                         int mesh, double F0);
 
+// The largest dynamic factor over the meshes of a motion sampled in time (xs: the states, rows,
+// `per_period` uniform samples a mesh period from phase 0, as TimeIntegrator::sample gives them):
+// each mesh's N = drive-flank force - back-flank force by the model's contact law at each sample
+// (back: back_flank_contacts), max over the meshes i and samples of |N| / F0[i]. The time
+// integration's counterpart of planetary_mesh_orbit's dynamic_factor (a motion HB has no orbit of).
+double planetary_sampled_dynamic_factor(const HarmonicBalance& hb, const std::vector<int>& back, const Eigen::MatrixXd& xs,
+                                        int per_period, const std::vector<double>& F0);
+
 // The static force of each mesh (2N, mesh order): the drive flanks closed at their mean
 // stiffnesses, the back flanks open (the static part of that linear solution), averaged over
 // the planets per mesh kind (sun, ring): the nominal share of the load, which the pin errors
