@@ -152,15 +152,16 @@ static void planetary_diagram(benchmark::State& state, bool file_options) {
   const HarmonicBalance hb = planetary_response_model(f);
   const SweepOptions o = planetary_sweep_options(f);
   const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
-  const Intervals bands = diagram_bands(uncovered(o.omega_min, o.omega_max, stable_intervals(c)), o.omega_min, o.omega_max);
+  const std::vector<DiagramBand> bands =
+      diagram_bands(c, o.omega_min, o.omega_max, hb.dofs(), planetary_diagram_bands(), 1);
   if (bands.empty()) return state.SkipWithError("no band");
   BifurcationDiagramOptions opt = file_options ? f.diagram : planetary_diagram_defaults();
-  if (!file_options) opt.speeds = planetary_diagram_speeds((bands[0].second - bands[0].first) / (2.0 * M_PI));
+  if (!file_options) opt.speeds = planetary_diagram_speeds((bands[0].omega_hi - bands[0].omega_lo) / (2.0 * M_PI));
   opt.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
   Eigen::VectorXd x0, v0;
   hb_initial_state(hb, c.branch.points.front().X, c.branch.points.front().omega, x0, v0);
   for (auto _ : state) {
-    const BifurcationDiagram d = bifurcation_diagram(hb, bands[0].first, bands[0].second, x0, v0, opt);
+    const BifurcationDiagram d = bifurcation_diagram(hb, bands[0].omega_lo, bands[0].omega_hi, x0, v0, opt);
     state.counters["speeds"] = double(d.points.size());
   }
 }

@@ -32,7 +32,8 @@
 // holds every branch in the one schema (app/schema.hpp), bifurcations.csv every branch's events.
 //
 // Where the curve has ranges with no stable period-1 orbit, the bifurcation diagram by time
-// integration over each (padded: tools/planetary_sweep.hpp diagram_bands), as gearhb_frc and
+// integration over each (padded: app/bifurcation_input.hpp diagram_bands with
+// tools/planetary_sweep.hpp planetary_diagram_bands), as gearhb_frc and
 // gearhb_gear draw theirs (hb/bifurcation_diagram.hpp; the file's bifurcation_diagram key, false:
 // none): the sun's rotation u_s at phase 0 of every mesh period (bifurcation_diagram.csv) over the
 // HB orbits at the same phase, period 1 and the period-2 (4) branches (bifurcation_diagram_hb.csv).
@@ -109,7 +110,7 @@ class PlanetarySetFromFile {
     std::vector<PointMeasures> measures;                      // per point of curve
     std::vector<PeriodDoubledBranch> doubled;                 // period 2 (4: period_doubling.depth 2)
     std::vector<std::vector<PointMeasures>> doubled_measures; // per branch (empty: no points)
-    Intervals bands;                                          // of the diagram (empty: none)
+    std::vector<DiagramBand> bands;                           // of the diagram (empty: none)
     BifurcationDiagram diagram;                               // every band's, band by band
   };
   void response(Run& run) const;
@@ -386,7 +387,7 @@ Eigen::VectorXd poincare_coordinate(const HarmonicBalance& hb) {
 
 // Step 4b (issue 34 section 3; with response.stability, unless bifurcation_diagram is false): the
 // bifurcation diagram by time integration (hb/bifurcation_diagram.hpp; app/bifurcation_input.hpp
-// diagram_of_curve) over each band of diagram_bands (tools/planetary_sweep.hpp: the ranges with no
+// diagram_of_curve) over each band of diagram_bands (planetary_diagram_bands: the ranges with no
 // stable period-1 orbit, padded), up then down, from the HB orbit of the curve nearest the band's
 // start; speeds planetary_diagram_speeds(band width) unless the file's key gives them. Skipped with
 // one line where the integration is stiff (fastest rate x period > 1e4, gearhb_frc's rule). Key
@@ -394,20 +395,21 @@ Eigen::VectorXd poincare_coordinate(const HarmonicBalance& hb) {
 void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const SweepOptions& o,
                                                Response& r) const {
   if (!file_.diagram_on || r.curve.stability == StabilityMethod::none) return;
-  const Intervals bands = diagram_bands(uncovered(o.omega_min, o.omega_max, stable_intervals(r.curve)), o.omega_min, o.omega_max);
+  std::vector<DiagramBand> bands =
+      diagram_bands(r.curve, o.omega_min, o.omega_max, hb.dofs(), planetary_diagram_bands(), 1);
   if (bands.empty()) return;
-  const double stiff = fastest_rate(hb) * 2.0 * M_PI / bands.front().first;
-  if (stiff > 1e4) {
-    run.say(file_.name + ": no bifurcation diagram: the time integration is stiff (fastest rate x period " +
-            std::to_string(stiff) + " > 1e4)");
+  if (const std::string stiff = diagram_stiffness(hb, bands.front().omega_lo); !stiff.empty()) {
+    run.say(file_.name + ": " + stiff);
     return;
   }
+  for (DiagramBand& b : bands)
+    b.speeds = file_.diagram_speeds_given ? file_.diagram.speeds : planetary_diagram_speeds(hz(b.omega_hi) - hz(b.omega_lo));
   r.bands = bands;
   const auto& P = r.curve.branch.points;
   for (std::size_t k = 0; k < bands.size(); ++k) {
-    const auto [lo, hi] = bands[k];
+    const double lo = bands[k].omega_lo, hi = bands[k].omega_hi;
     BifurcationDiagramOptions opt = file_.diagram;
-    if (!file_.diagram_speeds_given) opt.speeds = planetary_diagram_speeds(hz(hi) - hz(lo));
+    opt.speeds = bands[k].speeds;
     FrequencyCurve start = r.curve;   // diagram_of_curve starts from its lowest point: the one nearest lo
     start.branch.points = {*std::min_element(P.begin(), P.end(), [lo = lo](const BranchPoint& a, const BranchPoint& b) {
       return std::abs(a.omega - lo) < std::abs(b.omega - lo);

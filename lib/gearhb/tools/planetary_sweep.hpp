@@ -23,6 +23,7 @@
 #include <string>
 #include <vector>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/tools/planetary_file.hpp"
@@ -72,24 +73,17 @@ inline std::vector<PeriodDoubledBranch> planetary_period_doubled_branches(const 
 }
 
 // The bifurcation diagram of a set (issue 34 section 3; programs/gearhb_planetary): its bands are
-// the ranges of [lo, hi] with no stable period-1 orbit (`gaps`, uncovered(lo, hi,
-// stable_intervals(c))), each padded on both sides by kDiagramMargin x its own width (its width) so that the
-// diagram starts and ends on the stable period-1 orbit beside the range where there is one (the
-// agreement with HB is checked there), clipped to [lo, hi], bands that then overlap merged. A
-// whole width because the curve's points are sparse (14 over the Lin & Parker set's 1494-1530 Hz):
-// half a width ended the test's band between the range and the curve's first stable point, where
-// HB has no segment stable at both ends to solve an orbit on.
-// (Named as the pair programs' shared step will be; unified at merge.)
-constexpr double kDiagramMargin = 1.0;
-inline Intervals diagram_bands(const Intervals& gaps, double lo, double hi) {
-  Intervals bands;
-  for (const auto& [a, b] : gaps) {
-    const double pad = kDiagramMargin * (b - a);
-    const double from = std::max(lo, a - pad), to = std::min(hi, b + pad);
-    if (!bands.empty() && from <= bands.back().second) bands.back().second = std::max(bands.back().second, to);
-    else bands.emplace_back(from, to);
-  }
-  return bands;
+// app/bifurcation_input.hpp diagram_bands with these options: each range with no stable period-1
+// orbit padded on both sides by its own width (margin 1, no least margin), so that the diagram
+// starts and ends on the stable period-1 orbit beside the range where there is one (the agreement
+// with HB is checked there). A whole width because the curve's points are sparse (14 over the
+// Lin & Parker set's 1494-1530 Hz): half a width ended the test's band between the range and the
+// curve's first stable point, where HB has no segment stable at both ends to solve an orbit on.
+inline DiagramBandOptions planetary_diagram_bands() {
+  DiagramBandOptions o;
+  o.margin = 1.0;
+  o.min_margin = 0.0;
+  return o;
 }
 
 // Speeds of each sweep over a band width_hz wide: kDiagramSpeedsPerHz a hertz (both ends
