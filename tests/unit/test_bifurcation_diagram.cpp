@@ -241,9 +241,8 @@ TEST(BifurcationDiagram, SequentialLyapunovStopOnlyWhereClearlyChaotic) {
 // contact force depends on x alone and is continuous, so the divergence of the flow is
 // -tr(M^-1 C) in every contact state and det Phi = exp(-tr(M^-1 C) T) over each period, exactly;
 // the sum of all 2n exponents per period (the log of the volume growth) must be -tr(M^-1 C) T
-// whatever the orbit (here chaotic, Kahraman-Singh at Omega = 1.0: -0.1 x 2 pi). The first
-// exponent is largest_lyapunov_exponent's (the same first tangent vector) and the second is
-// below it.
+// whatever the orbit (here chaotic, Kahraman-Singh at Omega = 1.0: -0.1 x 2 pi). The second
+// is below the first.
 TEST(BifurcationDiagram, LyapunovExponentsSumToTheVolumeContraction) {
   const HarmonicBalance hb = kahraman_singh(0.5);
   const TimeIntegrator ti(hb);
@@ -253,7 +252,10 @@ TEST(BifurcationDiagram, LyapunovExponentsSumToTheVolumeContraction) {
   largest_lyapunov_exponent(ti, x0, v0, 1.0, 100, to, &x, &v);   // onto the chaotic attractor
   const std::vector<double> l = lyapunov_exponents(ti, x, v, 1.0, 200, 2, to);
   EXPECT_NEAR(l[0] + l[1], -0.1 * 2.0 * M_PI, 1e-6);
-  EXPECT_NEAR(l[0], largest_lyapunov_exponent(ti, x, v, 1.0, 200, to), 1e-12);
+  // The largest alone (one tangent vector) is another integration: the tangent columns enter
+  // GSL's step control, so its orbit parts from this one at round-off and its finite-time
+  // estimate is another sample of the same exponent; both must say chaos.
+  EXPECT_GT(largest_lyapunov_exponent(ti, x, v, 1.0, 200, to), 0.3);
   EXPECT_GT(l[0], 0.3);
   EXPECT_LT(l[1], l[0]);
 }

@@ -82,7 +82,6 @@ std::vector<double> lyapunov_exponents(
   if (count < 1 || count > 2 * n) throw std::invalid_argument("Lyapunov exponents: count must be 1..2 dofs");
   if (periods < 1) throw std::invalid_argument("Lyapunov exponents: periods must be >= 1");
   Eigen::VectorXd x = x0, v = v0, xT, vT;
-  Eigen::MatrixXd Phi;
   // The tangent vectors in (x, v / omega): the first with every component alike, the others
   // along the unit vectors, made orthonormal.
   Eigen::MatrixXd W = Eigen::MatrixXd::Identity(2 * n, count);
@@ -104,10 +103,7 @@ std::vector<double> lyapunov_exponents(
     }
     done = k;
     if (k == periods || (k > 0 && stop && stop(ln_r))) break;
-    ti.period_map(x, v, omega, opt, xT, vT, Phi);
-    W.bottomRows(n) *= omega;   // to (x, v), through Phi, back to (x, v / omega)
-    W = Phi * W;
-    W.bottomRows(n) /= omega;
+    ti.tangent_map(x, v, omega, opt, W, xT, vT);   // W in (x, v / omega) through one period
     x = xT, v = vT;
     if (section) section(x, v);
   }

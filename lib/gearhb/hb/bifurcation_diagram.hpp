@@ -154,8 +154,9 @@ int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eige
 
 // The largest Lyapunov exponent per forcing period of the orbit through (x0, v0) at phase 0:
 // (1 / periods) sum_k ln |Phi_k w_k| with w_k the tangent vector renormalised every period (in
-// (x, v / omega)), Phi_k the period map's monodromy. x_end, v_end (if not null) receive the
-// state after the periods.
+// (x, v / omega)), Phi_k the period map's monodromy, applied to w_k alone
+// (TimeIntegrator::tangent_map: 2n variational equations, not the monodromy's 4n^2). x_end,
+// v_end (if not null) receive the state after the periods.
 double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                  double omega, int periods, const TimeIntegrationOptions& opt,
                                  Eigen::VectorXd* x_end = nullptr, Eigen::VectorXd* v_end = nullptr);
@@ -164,9 +165,11 @@ double largest_lyapunov_exponent(const TimeIntegrator& ti, const Eigen::VectorXd
 // largest first, by the variational equations with re-orthonormalisation every period
 // (Benettin, Galgani, Giorgilli & Strelcyn, Meccanica 15 (1980) 9): the tangent vectors W (in
 // (x, v / omega)) mapped by Phi_k and made orthonormal again by modified Gram-Schmidt (W =
-// QR), lambda_j = (1 / periods) sum_k ln R_jj. The first tangent vector is the one above
-// (count = 1 gives largest_lyapunov_exponent's value); the others start along the unit
-// vectors. section (if given) is called with the state after every period; logs (if not null)
+// QR), lambda_j = (1 / periods) sum_k ln R_jj; the count tangent vectors are carried by
+// TimeIntegrator::tangent_map (2n x count variational equations). The first tangent vector
+// starts as the one above (count = 1 is largest_lyapunov_exponent; with more vectors the step
+// control sees more equations, so on a chaotic orbit the two estimates are two samples, not the
+// same number); the others start along the unit vectors. section (if given) is called with the state after every period; logs (if not null)
 // receives ln R_jj of every period (periods done x count), to judge the estimate's convergence.
 // stop (if given) is called after every period with that period's ln R_jj; true ends the
 // estimate there (the exponents then average the periods done, periods_done receives their

@@ -47,6 +47,7 @@ struct OdeContext {
   Eigen::MatrixXd Kt = Eigen::MatrixXd(), A = Eigen::MatrixXd(), P = Eigen::MatrixXd();   // of the variational equations
   std::vector<double> kc = {};   // the closed contacts' stiffness at the call's phase (each profile evaluated once)
   unsigned closed = 0;   // the contact state the right-hand side uses (bit k: contact k closed; Driver)
+  int cols = 0;          // columns of the variational state carried (2n: the monodromy; k: k tangent vectors)
   std::vector<int> gap_h = held_gap_harmonics(*hb);   // the harmonics each contact's gap holds
 };
 
@@ -76,7 +77,7 @@ unsigned disagreeing(const OdeContext& c, unsigned closed, double theta, const d
 //   dx/dtheta = x_theta,   dx_theta/dtheta = a(t = theta/omega, x, omega x_theta) / omega^2.
 // The contacts act in the state c->closed (a closed contact pushes with kc (g + n'x), an open
 // one not at all): smooth between the switches, which Driver locates.
-// With variational equations Phi (2n x 2n, column-major) follows dPhi/dtheta = A_theta Phi,
+// With variational equations Phi (2n x cols, column-major) follows dPhi/dtheta = A_theta Phi,
 // A_theta = [0 I; -Minv Kt / omega^2, -Minv C / omega]; it is the monodromy matrix in
 // (x, x_theta), similar to the one in (x, v) by D = diag(I, omega I).
 int rhs(double theta, const double y[], double dydt[], void* params) {
@@ -120,8 +121,8 @@ int rhs(double theta, const double y[], double dydt[], void* params) {
     A.bottomLeftCorner(n, n) = c->P / (omega * omega);
     c->P.noalias() = -c->Minv * sys.C;
     A.bottomRightCorner(n, n) = c->P / omega;
-    Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, 2 * n);
-    Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, 2 * n);
+    Eigen::Map<const Eigen::MatrixXd> Phi(y + 2 * n, 2 * n, c->cols);
+    Eigen::Map<Eigen::MatrixXd> dPhi(dydt + 2 * n, 2 * n, c->cols);
     dPhi.noalias() = A * Phi;
   }
   return GSL_SUCCESS;
@@ -460,6 +461,7 @@ void TimeIntegrator::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd
   const int n = hb_.dofs(), d = 2 * n;
   const GslErrorsReturned gsl_errors;
   OdeContext ctx{this, &hb_, omega, n, true, Minv_};
+  ctx.cols = d;
   Driver drv(ctx, d + d * d, 2.0 * M_PI / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
   std::vector<double> y = phase_state(x0, v0, omega);
   y.resize(std::size_t(d + d * d), 0.0);
@@ -477,6 +479,25 @@ void TimeIntegrator::period_map(const Eigen::VectorXd& x0, const Eigen::VectorXd
   Phi = Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, d);
   Phi.bottomRows(n) *= omega;
   Phi.rightCols(n) /= omega;
+}
+
+void TimeIntegrator::tangent_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                                 const TimeIntegrationOptions& opt, Eigen::MatrixXd& W, Eigen::VectorXd& xT,
+                                 Eigen::VectorXd& vT) const {
+  const int n = hb_.dofs(), d = 2 * n, k = int(W.cols());
+  if (W.rows() != d) throw std::invalid_argument("tangent_map: W must have 2 dofs rows");
+  const GslErrorsReturned gsl_errors;
+  OdeContext ctx{this, &hb_, omega, n, true, Minv_};
+  ctx.cols = k;
+  Driver drv(ctx, std::size_t(d + d * k), 2.0 * M_PI / 1000.0, opt.abs_tol * opt.x_scale, opt.rel_tol);
+  std::vector<double> y = phase_state(x0, v0, omega);
+  y.resize(std::size_t(d + d * k));
+  Eigen::Map<Eigen::MatrixXd>(y.data() + d, d, k) = W;   // (x, v / omega) = (x, dx/dtheta): the phase coordinates
+  double theta = 0.0;
+  drv.advance(theta, 2.0 * M_PI, y.data(), omega);
+  xT = Eigen::Map<const Eigen::VectorXd>(y.data(), n);
+  vT = omega * Eigen::Map<const Eigen::VectorXd>(y.data() + n, n);
+  W = Eigen::Map<const Eigen::MatrixXd>(y.data() + d, d, k);
 }
 
 void hb_initial_state(const HarmonicBalance& hb, const Eigen::VectorXd& X, double omega,

@@ -95,6 +95,13 @@ class TimeIntegrator {
                   const TimeIntegrationOptions& opt, Eigen::VectorXd& xT, Eigen::VectorXd& vT,
                   Eigen::MatrixXd& Phi, int samples = 0, Eigen::MatrixXd* xs = nullptr) const;
 
+  // The same map carrying k tangent vectors instead of the whole monodromy (k of the 2n
+  // columns' work): W (2n x k, in (x, v / omega)) becomes Phi W, with (xT, vT) the state one
+  // forcing period after (x0, v0). The Lyapunov exponents (bifurcation_diagram.hpp) need only these.
+  void tangent_map(const Eigen::VectorXd& x0, const Eigen::VectorXd& v0, double omega,
+                   const TimeIntegrationOptions& opt, Eigen::MatrixXd& W, Eigen::VectorXd& xT,
+                   Eigen::VectorXd& vT) const;
+
   // Right-hand side: acceleration for state (x, v) at time t.
   Eigen::VectorXd acceleration(double t, const Eigen::VectorXd& x, const Eigen::VectorXd& v,
                                double omega) const;
