@@ -101,9 +101,10 @@ struct PlanetaryFile {
 };
 
 // The set's defaults of the diagram's options, chosen for its cost (24 DOFs for five planets: a
-// speed that is not periodic integrates lyapunov_periods mesh periods of the 2n + 4n^2 = 2352 variational
-// equations, and shoots on the max_period-period map with them: most of the diagram's time,
-// bench/bench_planetary.cpp BM_planetary_diagram_*): the library's
+// speed that is not periodic integrates lyapunov_periods mesh periods with one tangent vector,
+// 2n + 2n = 96 equations, and, where not chaotic, shoots on the max_period-period map with the
+// 2n + 4n^2 = 2352 of the monodromy: most of the diagram's time, bench/bench_planetary.cpp
+// BM_planetary_diagram_*): the library's
 // (hb/bifurcation_diagram.hpp) but transient_periods 200 (a mode of damping ratio 0.02 at the mesh
 // frequency decays by exp(-2 pi 0.02 200) ~ 1e-11 after a jump), periods 16 (a period up to 4
 // repeating 4 times), max_period 4 (period 2 and the period-4 branches of period_doubling.depth 2),

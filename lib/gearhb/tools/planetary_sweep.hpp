@@ -89,8 +89,9 @@ inline DiagramBandOptions planetary_diagram_bands() {
 // Speeds of each sweep over a band width_hz wide: kDiagramSpeedsPerHz a hertz (both ends
 // included), at least kDiagramSpeedsMin, at most kDiagramSpeedsMax (the cost: each speed
 // integrates up to transient_periods + periods mesh periods of the 2n equations, and a speed
-// that is not periodic lyapunov_periods more of the variational 2n + 4n^2, and shoots with them
-// if it is not chaotic; bench/bench_planetary.cpp BM_planetary_diagram_* measures it).
+// that is not periodic lyapunov_periods more with one tangent vector (4n), and shoots with the
+// monodromy's 2n + 4n^2 if it is not chaotic; bench/bench_planetary.cpp BM_planetary_diagram_*
+// measures it).
 constexpr double kDiagramSpeedsPerHz = 0.1;
 constexpr int kDiagramSpeedsMin = 3, kDiagramSpeedsMax = 6;
 inline int planetary_diagram_speeds(double width_hz) {
