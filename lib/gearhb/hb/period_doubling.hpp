@@ -111,18 +111,16 @@ struct PeriodDoublingOptions {
   // period-2 corrector takes 4 Newton iterations at almost any step, however good the predictor
   // (ex. 03 with the curvature predictor: steps 2.3e-6, 1.7e-6, 4e-10, 5e-15 - the second as long
   // as the first, then quadratic), so at the sweep's 3 the step grows only after the odd
-  // 3-iteration point (ex. 03: 87 points). 4 lets it grow
-  // (33 points) but is not the default: ch. 6's period2_hb_within_orbit_error_fig43 then fails.
-  // That check does not test the branch itself: on its check curve the branch from the PD at
-  // 10715.9 rad/s, at either setting, runs down to 10616 and back to 10715.9 (a loop, every point
-  // unstable), and the check's HB orbit at 10820.9 rad/s is a Newton solve from the point of the
-  // branch nearest in omega, 105 rad/s away, which lands on the time-integrated orbit at the
-  // default sampling and on another solution of the period-2 model at others (fast_iterations 4,
-  // curvature_predictor, refine_overshoot's factor 0.5 in place of 0.1: each 0.298 of the half
-  // amplitude off the time integration).
+  // 3-iteration point (ex. 03: 87 points). 4 lets it grow (33 points; with curvature_predictor
+  // 34 points, about 195 ms against 345 ms for ex. 03's branch with stability). It was kept from
+  // the default by ch. 6's period2_hb_within_orbit_error_fig43, whose HB orbit was a Newton solve
+  // from the switched branch's point 105 rad/s away (that branch turns back to its PD and never
+  // reaches the check's omega) and landed elsewhere at other step patterns; the check now starts
+  // from the integrated orbit and no longer depends on the branch. Making 4 (and the predictor)
+  // the default changes every period-2 table and README block: not yet done.
   int fast_iterations = 3;
-  // ContinuationOptions::curvature_predictor for the branch (off by default, for the same
-  // check): ex. 03's branch then takes 57 points, not 87, with the same ends, stable points and
+  // ContinuationOptions::curvature_predictor for the branch (off by default, see above): ex. 03's
+  // branch then takes 57 points, not 87, with the same ends, stable points and
   // shooting agreement (PeriodDoubling.* pass with it on, and with fast_iterations 4 too).
   bool curvature_predictor = false;
 };
