@@ -129,7 +129,8 @@ CHAPTERS = [
          "orbit that is not on the continuation's branch (Delta at phase 0 down to -2.6 mm, below every branch's "
          "Delta_min, >= -1.3 mm) and stays on it to 13.85 krad/s; the down sweep is chaotic (red) at 13.715-13.79 "
          "krad/s and on that orbit from 13.70 down to 13.52 krad/s: HB's stable stretch 13.61-13.75 krad/s is "
-         "visited by neither sweep."),
+         "visited by neither sweep. That orbit is a second, stable HB orbit the continuation never reaches "
+         "(chapter README; unit test BifurcationDiagram.Fig41IntegratedLargeOrbitIsAStableHbOrbit)."),
         ("figS47_ch06_diagram_fig44.png", "supplement S47", "Fig. 44's case (Fig. 40 x 100): the diagram is Fig. "
          "40's with every Poincare point times 100 (the model is homogeneous in the loads), under Fig. 44's own "
          "harmonic-balance branches; notice they match Fig. 40's x 100."),
