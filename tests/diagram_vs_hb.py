@@ -74,6 +74,12 @@ def main():
     print("speeds compared: %d (largest difference %.3g %s)" % (compared, worst, V))
     if elsewhere:
         print("period 1 on no stable HB orbit of the branch: " + "; ".join(elsewhere))
+    return verdict(failures, compared, min_compared)
+
+
+def verdict(failures, compared, min_compared):
+    """The exit status: 1 (the first 10 failures printed) if any speed failed or fewer than
+    min_compared were compared, else 0."""
     for f in failures[:10]:
         print(f)
     if compared < min_compared:

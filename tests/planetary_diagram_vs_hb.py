@@ -24,6 +24,8 @@ empty; a run with no diagram fails). Exit 1 naming the speeds that fail."""
 import csv
 import sys
 
+from diagram_vs_hb import verdict
+
 
 def rows(path):
     with open(path) as f:
@@ -88,12 +90,7 @@ def main():
             failures.append("%s: the Poincare points lie %.3g um off HB's orbit, more than E + 1e-6 |u_s| = %.3g um" % (
                 what, best, allowed))
     print("speeds compared: %d" % compared)
-    for f in failures[:10]:
-        print(f)
-    if compared < min_compared:
-        print("only %d compared, expected at least %d" % (compared, min_compared))
-        return 1
-    return 1 if failures else 0
+    return verdict(failures, compared, min_compared)
 
 
 if __name__ == "__main__":
