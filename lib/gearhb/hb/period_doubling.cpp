@@ -119,12 +119,29 @@ SignedLogDet signed_log_det(const Eigen::MatrixXd& A) {
 
 // The critical Floquet eigenvector of the corrected PD orbit (multiplier near -1), made real,
 // displacements and velocities scaled alike (velocities / omega, as the shooting scales them).
-Eigen::VectorXd critical_eigenvector(const HarmonicBalance& hb, const FloquetResult& fr, double w) {
+Eigen::VectorXd critical_eigenvector(const HarmonicBalance& hb, const FloquetResult& fr, double w, bool smooth) {
   Eigen::EigenSolver<Eigen::MatrixXd> es(fr.monodromy);
   Eigen::Index j = 0;
   es.eigenvalues().unaryExpr([](std::complex<double> m) { return std::abs(m + 1.0); }).real().minCoeff(&j);
+  if (!smooth) {
+    // a multiplier that jumped across -1: the real one farthest beyond -1, else the real
+    // negative one nearest -1
+    const Eigen::VectorXcd& mus = es.eigenvalues();
+    auto rank = [](std::complex<double> m) {   // smaller is preferred; real negative ones only
+      if (!(m.real() < 0.0 && std::fabs(m.imag()) <= 1e-9 * std::abs(m))) return HUGE_VAL;
+      return m.real() < -1.0 ? m.real() : std::fabs(m.real() + 1.0);
+    };
+    for (Eigen::Index k = 0; k < mus.size(); ++k)
+      if (rank(mus[k]) < rank(mus[j])) j = k;
+  }
   const std::complex<double> mu = es.eigenvalues()[j];
-  if (std::abs(mu + 1.0) > 0.05) {
+  if (!smooth && !(mu.real() < 0.0 && std::fabs(mu.imag()) <= 1e-9 * std::abs(mu))) {
+    std::ostringstream os;
+    os << "no real negative Floquet multiplier at the PD point (nearest -1: " << mu.real() << (mu.imag() < 0 ? "" : "+")
+       << mu.imag() << "i)";
+    throw Failed(os.str());
+  }
+  if (smooth && std::abs(mu + 1.0) > 0.05) {
     std::ostringstream os;
     os << "no Floquet multiplier near -1 at the PD point (nearest " << mu.real() << (mu.imag() < 0 ? "" : "+")
        << mu.imag() << "i)";
@@ -243,17 +260,32 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
   FloquetOptions fo = opt.floquet;
   fo.correct_orbit = fo.correct_orbit && !profile;
-  const FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
-  if (fo.correct_orbit && !fr.corrected) throw Failed("the shooting correction of the PD orbit did not converge");
-  if (!bf.smooth) {
-    // a multiplier that jumps across -1 (at a grazing orbit) has no eigenvector at -1 to leave along
-    std::ostringstream os;
-    os << "a non-smooth PD: a multiplier jumps across -1 (to " << bf.multiplier.real();
-    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
-    os << ") within the located bracket, as at a grazing orbit; no critical eigenvector to switch along";
-    throw Failed(os.str());
+  FloquetResult fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
+  // The Floquet direction only starts the inverse iteration of step 4, which converges to the
+  // odd block's null vector from any start not normal to it. Where it cannot come from the
+  // corrected orbit it comes from the variational equation about the HB orbit (the shooting
+  // correction of the PD orbit did not converge), or from the real multiplier that jumped
+  // beyond -1 (a non-smooth PD, as at a grazing orbit: no eigenvector at -1 itself); either
+  // is said in `direction`, and the inverse iteration then runs to convergence.
+  if (fo.correct_orbit && !fr.corrected) {
+    fo.correct_orbit = false;
+    fr = floquet_of_hb_orbit(hb, sp.at.X, w, xs, fo);
+    sp.direction = "on the variational equation about the HB orbit (the PD orbit's shooting correction did not converge)";
   }
-  const Eigen::VectorXd e = critical_eigenvector(hb, fr, w);
+  if (!bf.smooth) {
+    std::ostringstream os;
+    os << (sp.direction.empty() ? "" : " ") << "at a non-smooth PD (a multiplier jumps across -1 to "
+       << bf.multiplier.real();
+    if (bf.multiplier.imag() != 0.0) os << (bf.multiplier.imag() < 0 ? "" : "+") << bf.multiplier.imag() << "i";
+    os << " within the located bracket, as at a grazing orbit), along the eigenvector of a real negative multiplier";
+    sp.direction += os.str();
+  }
+  Eigen::VectorXd e;
+  try {
+    e = critical_eigenvector(hb, fr, w, bf.smooth);
+  } catch (const Failed& f) {
+    throw Failed(sp.direction.empty() ? f.what() : sp.direction + ": " + f.what());
+  }
   sp.phi_floquet = odd_harmonics_of(hb, hbp, eigen_solution(hb, sp.at.X, fr, e, w, xs, pdo.samples, fo));
   std::vector<int> odd;
   sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
@@ -265,6 +297,13 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   for (std::size_t i = 0; i < odd.size(); ++i) po[Eigen::Index(i)] = sp.phi_floquet[odd[i]];
   v = po;
   for (int it = 0; it < 3; ++it) v = lu.solve(v).normalized();
+  for (int it = 0; it < 20 && !sp.direction.empty(); ++it) {
+    Eigen::VectorXd u = lu.solve(v).normalized();
+    if (u.dot(v) < 0.0) u = -u;
+    const double change = (u - v).norm();
+    v = u;
+    if (change < 1e-12) break;
+  }
   if (v.dot(po) < 0.0) v = -v;
   sp.agreement = v.dot(po) / po.norm();
   sp.phi = Eigen::VectorXd::Zero(hbp.size());
@@ -594,8 +633,25 @@ void branch_stability(PeriodDoubledBranch& r, const SweepOptions& opt) {
 
 // One switch: at the i-th bifurcation of c (a PD), the period-2 branch from its critical
 // direction, continued to its end.
+// The branch of `earlier` that starts or ends at the period-2 branch point X0 (base frequency
+// Omega), if any: a branch point beside two PDs (a non-smooth PD next to a smooth one, within two
+// points: ch. 6 Fig. 40's at 8460.8 rad/s found the one where the branch from 8298.2 merged, and
+// retraced that branch).
+const PeriodDoubledBranch* branch_through(const std::vector<PeriodDoubledBranch>& earlier, const Eigen::VectorXd& X0,
+                                          double Omega) {
+  auto same = [&](const BranchPoint& q) {
+    return q.X.size() == X0.size() && std::fabs(q.omega - Omega) <= 1e-9 * Omega &&
+           (q.X - X0).norm() <= 1e-6 * std::max(X0.norm(), q.X.norm());
+  };
+  for (const auto& o : earlier)
+    if (!o.curve.branch.points.empty() && (same(o.curve.branch.points.front()) || same(o.curve.branch.points.back())))
+      return &o;
+  return nullptr;
+}
+
 void switch_branch(PeriodDoubledBranch& r, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t i,
-                   const SweepOptions& opt, const PeriodDoublingOptions& pdo, std::ostringstream& os) {
+                   const SweepOptions& opt, const PeriodDoublingOptions& pdo,
+                   const std::vector<PeriodDoubledBranch>& earlier, std::ostringstream& os) {
   const double P = pdo.period;   // hb's omegas are the forcing frequency / P
   r.model = subharmonic_model(hb, 2);
   const HarmonicBalance& hbp = *r.model;
@@ -603,8 +659,15 @@ void switch_branch(PeriodDoubledBranch& r, const HarmonicBalance& hb, const Freq
   const BranchPoint& at = sp.branch_point;
   r.omega_branch_point = P * at.omega;
   r.direction_agreement = sp.agreement;
+  if (!sp.direction.empty()) os << "switched " << sp.direction << "; ";
   Period2Continuation p2(hbp, c, opt, pdo);
   const Eigen::VectorXd X0 = to_subharmonic_basis(hb, hbp, 2, at.X);
+  if (const PeriodDoubledBranch* o = branch_through(earlier, X0, at.omega / 2.0)) {
+    std::ostringstream why;
+    why << "its period-2 branch point (omega = " << r.omega_branch_point
+        << ") is an end of the branch from the PD at omega = " << o->omega_start << ": not continued again";
+    throw Failed(why.str());
+  }
   Branch b = p2.from_branch_point(X0, at.omega / 2.0, sp.phi, c.scaling.x[0], pdo.step);
   p2.refine_overshoot(b, c.scaling.x[0]);
   // the branch starts at the PD point: the period-1 orbit, a solution of the period-2 model
@@ -650,7 +713,7 @@ std::vector<PeriodDoubledBranch> period_doubled_branches(const HarmonicBalance& 
       continue;
     }
     try {
-      switch_branch(r, hb, c, i, opt, pdo, os);
+      switch_branch(r, hb, c, i, opt, pdo, out, os);
     } catch (const std::exception& e) {
       os << "failed: " << e.what();
       r.end = PeriodDoubledBranch::End::failed;

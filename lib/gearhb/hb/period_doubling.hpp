@@ -62,9 +62,14 @@
 //     branch with folds passes one omega several times, so a window in omega alone missed it or
 //     could pick a PD of another pass. Where no PD lies there the line says between which
 //     points of c and what their Floquet data show (shooting not converged; no multiplier
-//     crossing -1); a PD located on orbits whose shooting did not converge is said so too. A
-//     non-smooth PD (smooth = 0, a multiplier jumping across -1) has no eigenvector at -1: its
-//     switch fails saying so.
+//     crossing -1); a PD located on orbits whose shooting did not converge is said so too.
+//     The Floquet direction of steps 2-3 only starts step 4's inverse iteration. Where the
+//     shooting correction of the PD orbit does not converge it comes from the variational
+//     equation about the HB orbit; at a non-smooth PD (smooth = 0: a multiplier jumps across -1,
+//     as at a grazing orbit, with no eigenvector at -1) from the eigenvector of the real multiplier farthest beyond -1 (else the real negative one nearest -1). The
+//     inverse iteration then runs to convergence, the branch line says which
+//     (SwitchPoint::direction), and the switch stands or fails on the HB model's own branch point
+//     as at a smooth PD; its points' stability is the period-2 shooting's, as everywhere.
 // The two directions +-e from the PD give the same orbits shifted by one forcing period
 // (x(t) -> x(t + T) flips the sign of the odd harmonics), so one direction is continued;
 // a PD where an earlier branch merged is not switched again.
@@ -134,6 +139,8 @@ struct SwitchPoint {
   Eigen::VectorXd phi;           // the null vector there of the odd block of hbp's Jacobian
                                  // (inverse iteration from phi_floquet), on hbp's basis
   double agreement = NAN;        // |phi' phi_floquet|: 1 when both see the same eigen-solution
+  std::string direction;         // empty, or where phi_floquet came from when not from the
+                                 // corrected orbit's eigenvector at -1 (see critical_direction)
 };
 SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& c, const Bifurcation& bf,
                                const SweepOptions& opt, const PeriodDoublingOptions& pdo, const HarmonicBalance& hbp);
