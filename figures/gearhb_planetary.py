@@ -39,15 +39,15 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from poincare import MOTION_COLOURS, draw_hb_section, draw_poincare  # noqa: E402
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, PERIOD2_COLOURS, RUG_HEIGHT,  # noqa: E402
+from poincare import BRANCH_COLOURS, draw_hb_section, draw_poincare  # noqa: E402
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, RUG_HEIGHT,  # noqa: E402
                    bifurcation_handles, branch_ids, plot_branch, read_csv, rows_of, rug_room, runs, save,
                    shade_no_stable_period1, unstable_period1_ranges)
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
 # The period-2 (4) branches' colours: the project's, without the diagram's quasi-periodic colour (the
 # Poincare points are drawn under the same branches).
-BRANCH_COLOURS = [c for c in PERIOD2_COLOURS if c != MOTION_COLOURS["quasi_periodic"]]
+
 
 
 def geometry(params):
@@ -154,29 +154,10 @@ def read_diagram(d_dir):
     return read_csv(d_dir / "bifurcation_diagram.csv"), read_csv(d_dir / "bifurcation_diagram_hb.csv")
 
 
-def subset(h, keep):
-    return {c: [v[i] for i in range(len(v)) if keep(i)] for c, v in h.items()}
-
-
 def diagram_panel(ax, p, h, sweeps, title=None):
-    """The Poincare points of u_s over the HB orbits at phase 0: period 1 (branch 0) by
-    draw_hb_section; each period-p branch's p points per orbit as p lines in its colour (the rows
-    of a point come p at a time, j = 0..p-1: the mesh periods of its orbit)."""
-    from matplotlib.lines import Line2D
-    one = subset(h, lambda i: h["branch"][i] == 0 and h["point"][i] == "branch")
-    drawn = {int(s) for s in one["stable"]}
-    handles = [hd for hd in draw_hb_section(ax, one, "f_mesh_hz", "u_s_um")   # the styles drawn only
-               if ("(stable)" in hd.get_label() and 1 in drawn) or ("(unstable)" in hd.get_label() and 0 in drawn)]
-    for n, bid in enumerate(sorted({b for b in h["branch"] if b > 0})):
-        rows = subset(h, lambda i: h["branch"][i] == bid and h["point"][i] == "branch")
-        period, colour = int(rows["period"][0]), BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
-        for j in range(period):
-            plot_branch(ax, subset(rows, lambda i: i % period == j), "u_s_um", colour, None, x="f_mesh_hz",
-                        values="hb", lw=1.1)
-        for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")):
-            if flag in {int(s) for s in rows["stable"]}:
-                handles.append(Line2D([], [], color=colour, ls=ls, label="HB period %d (branch %d), its %d points (%s)"
-                                      % (period, bid, period, word)))
+    """The Poincare points of u_s over the HB orbits at phase 0 (poincare.draw_hb_section: period 1
+    and each period-p branch's p points per orbit)."""
+    handles = draw_hb_section(ax, h, "f_mesh_hz", "u_s_um")
     handles += draw_poincare(ax, p, "f_mesh_hz", "u_s_um", sweeps=sweeps)
     ax.set_ylabel("sun rotation u_s at phase 0\nof each mesh period [um]")
     if title:

@@ -9,7 +9,7 @@ its bands (column band: by default the ranges with no stable period-1 orbit, pad
 section the whole branch."""
 from matplotlib.lines import Line2D
 
-from style import plot_branch
+from style import PERIOD2_COLOURS, plot_branch
 
 MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C2", "chaotic": "C3",
                   "unsettled": "C1"}
@@ -17,6 +17,7 @@ MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n point
                  "quasi_periodic": "quasi-periodic (|Lyapunov| < 0.02, no attracting cycle)", "chaotic": "chaotic (Lyapunov > 0)",
                  "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
 SWEEP_MARKERS = {"up": ".", "down": "x"}
+BRANCH_COLOURS = [c for c in PERIOD2_COLOURS if c != MOTION_COLOURS["quasi_periodic"]]
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
 
 
@@ -48,15 +49,35 @@ def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
     return handles
 
 
+def subset(h, keep):
+    return {c: [v[i] for i in range(len(v)) if keep(i)] for c, v in h.items()}
+
+
 def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase"):
-    """The HB branch's value at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed unstable."""
-    if "point" in h:   # the branch's own points (the rows at the diagram's speeds are for checks)
-        h = {c: [v[i] for i in range(len(v)) if h["point"][i] == "branch"] for c, v in h.items()}
-    if not h[x]:
-        return []
-    plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb")
-    return [Line2D([], [], color=colour, ls="-", label=label + " (stable)"),
-            Line2D([], [], color=colour, ls="--", label=label + " (unstable)")]
+    """The HB branches' values at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed
+    unstable: period 1 (branch 0) in grey; where the table has the period and branch columns,
+    each period-p branch's p values per orbit (the rows of a point come p at a time: its forcing
+    periods j = 0..p-1) as p lines in the branch's colour (not green: the diagram's
+    quasi-periodic points). Legend entries only for the styles drawn."""
+    h = subset(h, lambda i: h["point"][i] == "branch") if "point" in h else h   # the speed rows are for checks
+    branch = [int(float(b)) for b in h["branch"]] if "branch" in h else [0] * len(h[x])
+    one = subset(h, lambda i: branch[i] == 0)
+    handles = []
+    if one[x]:
+        plot_branch(ax, one, y, colour, None, x=x, scale=scale, values="hb")
+        drawn = {int(float(s)) for s in one["stable"]}
+        handles += [Line2D([], [], color=colour, ls=ls, label="%s (%s)" % (label, word))
+                    for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")) if flag in drawn]
+    for n, bid in enumerate(sorted({b for b in branch if b > 0})):
+        rows = subset(h, lambda i: branch[i] == bid)
+        period, c = int(float(rows["period"][0])), BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
+        for j in range(period):
+            plot_branch(ax, subset(rows, lambda i: i % period == j), y, c, None, x=x, scale=scale, values="hb", lw=1.1)
+        for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")):
+            if flag in {int(float(s)) for s in rows["stable"]}:
+                handles.append(Line2D([], [], color=c, ls=ls, label="HB period %d (branch %d), its %d points (%s)"
+                                      % (period, bid, period, word)))
+    return handles
 
 
 def band_spans(d, x):

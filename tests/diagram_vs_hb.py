@@ -9,14 +9,16 @@ X: the frequency column (omega, f_mesh_hz), VALUE: the Poincare value column (x,
 GROUP: a column splitting the tables into curves (torque_index; the frequency response of
 curve g is then frc_<g>.csv, else frc.csv), or label=L for a chapter case's own files
 (bifurcation_diagram_L.csv, bifurcation_diagram_hb_L.csv, frc_L.csv). The HB orbits at the diagram's own speeds are the
-rows `point = speed` of the HB table (every segment of the branch stable at both ends that
-brackets the speed, solved by Newton there). The tolerance: HB's own error bound,
-hb_orbit_error of the frequency-response table (max |x_HB - x_exact| over the period, the
-exact orbit by shooting), its largest value E over the curve's stable points times
+rows `point = speed` of the HB table (every segment of a branch stable at both ends that
+brackets the speed, solved by Newton there): the period-1 branch and, where the table has the
+period and branch columns, every period-2 (4) branch, a period-p orbit with its p values at
+phase 0 of its p forcing periods. The tolerance: HB's own error bound, hb_orbit_error of the
+frequency-response table (max |x_HB - x_exact| over the orbit's period, the exact orbit by
+shooting over p forcing periods), its largest value E over the branch's stable points times
 ERROR_SCALE (to VALUE's unit), plus 1e-6 |value| (the classifier's period_tol). At every such
-speed one of the two sweeps must be period 1 within E of one of the stable HB orbits there
-(coexisting orbits: one of them). Period-1 points on no stable HB orbit (an orbit the one
-continuation branch does not hold) are listed, not failed. At least MIN_COMPARED speeds must
+speed one of the two sweeps must be period p with its p values (sorted) within E of those of
+one of the stable HB orbits there (coexisting orbits: one of them). Periodic points on no
+stable HB orbit (an orbit the continued branches do not hold) are listed, not failed. At least MIN_COMPARED speeds must
 be compared (the check cannot pass empty). Exit 1 naming the first speeds that fail."""
 import csv
 import sys
@@ -27,6 +29,31 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
+def orbits_at_speeds(h, X, V):
+    """{speed: [(period, branch, sorted values)]}: the HB orbits solved at the diagram's speeds
+    (rows point = speed; a period-p orbit is p consecutive rows). Tables without the period and
+    branch columns hold the period-1 branch only."""
+    at_speed, i = {}, 0
+    speed = [r for r in h if r["point"] == "speed"]
+    while i < len(speed):
+        r = speed[i]
+        p, b = int(r.get("period", "1")), r.get("branch", "0")
+        values = sorted(float(q[V]) for q in speed[i:i + p])
+        at_speed.setdefault(float(r[X]), []).append((p, b, values))
+        i += p
+    return at_speed
+
+
+def error_bounds(frc, scale):
+    """{branch: E}: the largest hb_orbit_error over the branch's stable points, times scale."""
+    E = {}
+    for r in frc:
+        if r["stable"] == "1" and r["hb_orbit_error"]:
+            b = r.get("branch", "0")
+            E[b] = max(E.get(b, 0.0), float(r["hb_orbit_error"]) * scale)
+    return E
+
+
 def main():
     d_dir, X, V, scale, min_compared = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), int(sys.argv[5])
     group = sys.argv[6] if len(sys.argv) > 6 else None
@@ -35,45 +62,50 @@ def main():
         stem, group = "_" + group[len("label="):], None
     diagram, hb = rows(d_dir + "/bifurcation_diagram%s.csv" % stem), rows(d_dir + "/bifurcation_diagram_hb%s.csv" % stem)
     curves = sorted({r[group] for r in hb}) if group else [None]
-    failures, elsewhere, compared, worst = [], [], 0, 0.0
+    failures, elsewhere, compared, worst, by_period = [], [], 0, 0.0, {}
     for g in curves:
         h = [r for r in hb if group is None or r[group] == g]
-        branch = [r for r in h if r["point"] == "branch"]
-        frc = rows(d_dir + ("/frc%s.csv" % stem if g is None else "/frc_%s.csv" % g))
-        frc = [r for r in frc if r.get("branch", "0") == "0"]   # the period-1 branch (period-2 rows follow it)
-        assert len(frc) == len(branch), "frc and the HB section table differ in length"
-        E = max(float(r["hb_orbit_error"]) * scale for r, b in zip(frc, branch) if b["stable"] == "1"
-                and r["hb_orbit_error"])
-        print("curve %s: E = %.3g %s" % (g, E, V))
-        at_speed = {}
-        for r in h:
-            if r["point"] == "speed":
-                at_speed.setdefault(float(r[X]), []).append(float(r[V]))
+        E = error_bounds(rows(d_dir + ("/frc%s.csv" % stem if g is None else "/frc_%s.csv" % g)), scale)
+        print("curve %s: E = %s %s" % (g, ", ".join("%.3g (branch %s)" % (e, b) for b, e in sorted(E.items())), V))
+        at_speed = orbits_at_speeds(h, X, V)
         points = {}
         for r in diagram:
             if group is None or r[group] == g:
                 points.setdefault(float(r[X]), {}).setdefault(r["sweep"], []).append(r)
         for w, sweeps in points.items():
             where = "%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w)
-            period1 = [float(rs[0][V]) for rs in sweeps.values() if rs[0]["motion"] == "periodic" and rs[0]["n"] == "1"]
-            orbits = at_speed.get(w, [])
-            allowed = lambda y: E + 1e-6 * abs(y)  # noqa: E731
-            for y in period1:
-                if not any(abs(y - q) <= allowed(y) for q in orbits):
-                    elsewhere.append("%s (%s = %.6g)" % (where, V, y))
+            periodic = [(int(rs[0]["n"]), sorted(float(r[V]) for r in rs)) for rs in sweeps.values()
+                        if rs[0]["motion"] == "periodic"]
+            orbits = [(p, b, q) for p, b, q in at_speed.get(w, []) if b in E]
+            allowed = lambda b, y: E[b] + 1e-6 * abs(y)  # noqa: E731
+
+            def off(n, ys, orbit):   # largest difference, None where not within the bound
+                p, b, q = orbit
+                if p != n or len(ys) != len(q):
+                    return None
+                d = [abs(y - z) for y, z in zip(ys, q)]
+                return max(d) if all(e <= allowed(b, y) for e, y in zip(d, ys)) else None
+            for n, ys in periodic:
+                if not any(off(n, ys, o) is not None for o in orbits):
+                    elsewhere.append("%s (period %d, %s = %s)" % (where, n, V, ", ".join("%.6g" % y for y in ys)))
             if not orbits:
                 continue
-            offs = [abs(y - q) for y in period1 for q in orbits if abs(y - q) <= allowed(y)]
+            offs = [(off(n, ys, o), o[0]) for n, ys in periodic for o in orbits]
+            offs = [(e, p) for e, p in offs if e is not None]
             if offs:
                 compared += 1
-                worst = max(worst, min(offs))
+                e, p = min(offs)
+                worst = max(worst, e)
+                by_period[p] = by_period.get(p, 0) + 1
             else:
-                failures.append("%s: HB has a stable orbit (%s), no sweep is period 1 on it within %.3g (%s)" % (
-                    where, ", ".join("%.6g" % q for q in orbits), E,
+                failures.append("%s: HB has a stable orbit (%s), no sweep is periodic on it within its bound (%s)" % (
+                    where, "; ".join("period %d branch %s: %s within %.3g" % (p, b, ", ".join("%.6g" % z for z in q), E[b])
+                                     for p, b, q in orbits),
                     "; ".join("%s %s n = %s %s" % (k, rs[0]["motion"], rs[0]["n"], rs[0][V]) for k, rs in sweeps.items())))
-    print("speeds compared: %d (largest difference %.3g %s)" % (compared, worst, V))
+    print("speeds compared: %d (largest difference %.3g %s; %s)" % (
+        compared, worst, V, ", ".join("period %d: %d" % kv for kv in sorted(by_period.items()))))
     if elsewhere:
-        print("period 1 on no stable HB orbit of the branch: " + "; ".join(elsewhere))
+        print("periodic on no stable HB orbit: " + "; ".join(elsewhere))
     return verdict(failures, compared, min_compared)
 
 

@@ -196,7 +196,7 @@ class GearPairChapter {
   void frequency_responses(Run& run) const;
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
-                           std::map<std::string, BifurcationDiagram>& diagrams) const;
+                           const std::vector<PeriodDoubledBranch>& pd, std::map<std::string, BifurcationDiagram>& diagrams) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -371,7 +371,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
                    cell(std::isfinite(h.changed_hi), h.changed_hi), h.x_max, h.x_min});
     run.key_numbers().add("transitions_" + cs.label, h.transitions, "-");
     measure(run, cs, hb, c);
-    if (cs.diagram.speeds > 0 && !run.quick()) bifurcation_diagram(run, cs, hb, c, diagrams);
+    if (cs.diagram.speeds > 0 && !run.quick()) bifurcation_diagram(run, cs, hb, c, s.doubled, diagrams);
   }
   run.write("cases.csv", index);
 }
@@ -394,7 +394,8 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
 // switches located, 400 transient periods, 64 Poincare points per speed, the Lyapunov
 // estimate's sequential stop from 50 periods);
 // bifurcation_diagram_<label>.csv, Delta at phase 0 of each forcing period;
-// bifurcation_diagram_hb_<label>.csv, the HB branch at the same section (its stable stretches
+// bifurcation_diagram_hb_<label>.csv, the HB branches at the same section (period 1 and the
+// period-2 (4) branches, their values at phase 0 of each forcing period; the stable stretches
 // under the Poincare points; tests/diagram_vs_hb.py compares the two views). A band
 // scaled_from a case that ran before: that diagram's points times the load ratio (the model
 // is homogeneous in the loads: zero gap, contact force kc max(Delta, 0)), its own HB table.
@@ -402,6 +403,7 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
 // times the longest period above 1e4 (about 2000 rk8pd steps a period, hours for the diagram;
 // Fig. 43 at the thesis values: 32; with rayleigh_beta = 1 s: 1.6e6).
 void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const std::vector<PeriodDoubledBranch>& pd,
                                           std::map<std::string, BifurcationDiagram>& diagrams) const {
   const CaseDiagram& b = cs.diagram;
   const double stiff = fastest_rate(hb) * 2.0 * M_PI / b.lo;
@@ -414,10 +416,10 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   }
   const double scale = load_ratio(cs, b.scaled_from);
   const auto from = b.scaled_from ? diagrams.find(b.scaled_from) : diagrams.end();
+  BifurcationDiagramOptions o;
+  o.speeds = b.speeds;
+  o.lyapunov_min_periods = 50;   // the sequential stop (bifurcation_diagram.hpp)
   if (from == diagrams.end() || !(scale > 0.0)) {
-    BifurcationDiagramOptions o;
-    o.speeds = b.speeds;
-    o.lyapunov_min_periods = 50;   // the sequential stop (bifurcation_diagram.hpp)
     down_start(hb, c, b.hi, (b.hi - b.lo) / (b.speeds - 1), o);
     diagrams[cs.label] = diagram_of_curve(run, hb, c, b.lo, b.hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
   } else {
@@ -432,9 +434,11 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   const double times = from == diagrams.end() || !(scale > 0.0) ? 1.0 : scale;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
   auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
-  Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega"}, "delta"));
+  Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega", "period", "branch"}, "delta"));
   add_bifurcation_rows(t, d, T2, times, lead);
-  add_hb_section_rows(h, hb, c, d, T2, 1.0, lead);
+  add_bifurcation_rows(t, diagram_from_hb_orbits(run, hb, c, pd, d, o), T2, 1.0, lead);
+  add_hb_section_rows(h, hb, c, pd, d, T2, 1.0,
+                      [](double w, int p, int b) { return std::vector<Table::Cell>{w, long(p), long(b)}; });
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
   run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);
   diagram_key_numbers(run.key_numbers(), d, "_" + cs.label);

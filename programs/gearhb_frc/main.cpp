@@ -57,7 +57,8 @@ class FrequencyResponseFromFile {
   void frequency_response(Run& run) const;
   void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                           const std::vector<PeriodDoubledBranch>& pd) const;
   std::vector<TorusBranch> torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const SweepOptions& o, int first_id) const;
   void draw(Run& run) const;
@@ -180,7 +181,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
   curve_key_numbers(run, hb, c);
-  bifurcation_diagram(run, hb, c);
+  bifurcation_diagram(run, hb, c, pd);
 }
 
 // How many period-2 branches, how many merged, their points, where each starts and ends.
@@ -231,8 +232,10 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
 // orbit, padded to show period 1 on both sides; none where every range is stable or the key is
 // false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
 // omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;
-// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath.
-void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+// bifurcation_diagram_hb.csv: omega, period, branch, x at phase 0 of each forcing period of the
+// period-1 branch's and every period-2 (4) branch's orbits, stable, point: to draw beneath and check.
+void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd) const {
   if (!model_.diagram.on) return;
   const double lo = std::min(model_.omega_from, model_.omega_to), hi = std::max(model_.omega_from, model_.omega_to);
   const std::vector<DiagramBand> bands = input_bands(model_.diagram, c, lo, hi, hb.dofs());
@@ -249,10 +252,13 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.say(model_.name + ": " + diagram_bands_text(bands, rad_s, "rad/s"));
   const BifurcationDiagram d = diagram_of_bands(run, hb, c, bands, model_.diagram.options, "bifurcation_diagram", "");
   Table t(bifurcation_columns({"omega", "band"}, "x"));
-  add_bifurcation_rows(t, d, model_.output, 1.0, [&](double w) { return std::vector<Table::Cell>{w, band_of(bands, w)}; });
+  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, c, pd, d, model_.diagram.options);
+  for (const BifurcationDiagram* e : {&d, &from_hb})
+    add_bifurcation_rows(t, *e, model_.output, 1.0, [&](double w) { return std::vector<Table::Cell>{w, band_of(bands, w)}; });
   run.write("bifurcation_diagram.csv", t);
-  Table h(hb_section_columns({"omega"}, "x"));
-  add_hb_section_rows(h, hb, c, d, model_.output, 1.0, [](double w) { return std::vector<Table::Cell>{w}; });
+  Table h(hb_section_columns({"omega", "period", "branch"}, "x"));
+  add_hb_section_rows(h, hb, c, pd, d, model_.output, 1.0,
+                      [](double w, int p, int b) { return std::vector<Table::Cell>{w, long(p), long(b)}; });
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
   run.key_numbers().add("diagram_bands", double(bands.size()), "-");

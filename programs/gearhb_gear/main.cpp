@@ -503,9 +503,10 @@ void GearPairFromFile::dynamics(Run& run) const {
   Table history({"torque_index", "f_mesh_hz", "phase", "t_ms", "dte_um", "mesh_force_N", "drive_force_N", "back_force_N"});
   double history_kv = 0.0;
   const std::vector<std::string> lead{"torque_index", "torque_Nm", "f_mesh_hz", "speed_rpm"};
-  std::vector<std::string> banded = lead;
+  std::vector<std::string> banded = lead, branched = lead;
   banded.emplace_back("band");
-  Table diagram(bifurcation_columns(banded, "dte_um")), diagram_hb(hb_section_columns(lead, "dte_um"));
+  branched.insert(branched.end(), {"period", "branch"});
+  Table diagram(bifurcation_columns(banded, "dte_um")), diagram_hb(hb_section_columns(branched, "dte_um"));
   bool drawn = false;
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
     const DteGear mesh = mesh_at(i);
@@ -538,7 +539,7 @@ void GearPairFromFile::dynamics(Run& run) const {
 // stable period-1 orbit, padded to show period 1 on both sides; false (said in one line) where
 // there is none (every range stable, the key false) or the integration is stiff. Rows of
 // bifurcation_diagram.csv: the DTE at phase 0 of each mesh period, um, and the band (1, 2, ...);
-// bifurcation_diagram_hb.csv: the HB branch's.
+// bifurcation_diagram_hb.csv: the HB branches' (period 1 and the period-doubled ones, period and branch columns).
 bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
                                            BifurcationDiagram& d, Table& t, Table& hb_section) const {
   if (!file_.diagram.on) return false;
@@ -557,12 +558,20 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
     return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
-  add_bifurcation_rows(t, d, q, 1e6, [&](double w) {
+  const BifurcationDiagram& sweeps = d;
+  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, r.curve, r.doubled, d, file_.diagram.options);
+  for (const BifurcationDiagram* e : {&sweeps, &from_hb})
+    add_bifurcation_rows(t, *e, q, 1e6, [&](double w) {
+      std::vector<Table::Cell> row = lead(w);
+      row.emplace_back(band_of(bands, w));
+      return row;
+    });
+  add_hb_section_rows(hb_section, hb, r.curve, r.doubled, d, q, 1e6, [&](double w, int p, int b) {
     std::vector<Table::Cell> row = lead(w);
-    row.emplace_back(band_of(bands, w));
+    row.emplace_back(long(p));
+    row.emplace_back(long(b));
     return row;
   });
-  add_hb_section_rows(hb_section, hb, r.curve, d, q, 1e6, lead);
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
   run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
   run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));

@@ -425,37 +425,6 @@ void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& 
   diagram_key_numbers(run.key_numbers(), r.diagram, "");
 }
 
-// The rows of bifurcation_diagram_hb.csv of a period-p branch b (p = 2, 4; id its branch number):
-// at each of its points and, where a segment stable at both ends brackets a speed of the diagram's
-// up sweep, at the HB orbit solved there (Newton on b's model at omega / p), its p Poincare values
-// (phase 0 of the mesh periods j = 0..p-1: its harmonics turned by 2 pi j / p of the base period).
-void add_subharmonic_section_rows(Table& t, const PeriodDoubledBranch& b, int id, const BifurcationDiagram& d,
-                                  const Eigen::VectorXd& q) {
-  const HarmonicBalance& hbp = *b.model;
-  const int n = hbp.dofs(), H = hbp.harmonics(), p = b.period;
-  auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point) {
-    for (int j = 0; j < p; ++j) {
-      const double phi = 2.0 * M_PI * j / p;
-      Eigen::VectorXd x = X.segment(hbp.index(0, 0), n);
-      for (int l = 1; l <= H; ++l)
-        x += std::cos(l * phi) * X.segment(hbp.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hbp.index(2 * l, 0), n);
-      t.add_row({hz(p * Omega), long(p), long(id), 1e6 * q.dot(x), long(stable ? 1 : 0), std::string(point)});
-    }
-  };
-  const auto& P = b.curve.branch.points;
-  const auto& S = b.curve.stable;
-  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < S.size() && S[i], "branch");
-  for (const DiagramPoint& dp : d.points) {
-    const double Omega = dp.omega / p;
-    if (!dp.up) continue;
-    for (std::size_t i = 1; i < P.size() && i < S.size(); ++i) {
-      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !S[i - 1] || !S[i]) continue;
-      Eigen::VectorXd X = P[i].X;
-      if (newton_solve(hbp, X, Omega, b.curve.scaling).converged) add(Omega, X, true, "speed");
-    }
-  }
-}
-
 // bifurcation_diagram.csv (app/bifurcation_input.hpp's columns: f_mesh_hz, sweep, u_s_um, motion,
 // n, lyapunov) and bifurcation_diagram_hb.csv (f_mesh_hz, period, branch, u_s_um, stable, point:
 // the period-1 curve's rows (add_hb_section_rows), then each period-2 (4) branch's).
@@ -466,10 +435,8 @@ void PlanetarySetFromFile::diagram_tables(Run& run, const HarmonicBalance& hb, c
   add_bifurcation_rows(t, r.diagram, q, 1e6, [](double w) { return std::vector<Table::Cell>{hz(w)}; });
   run.write("bifurcation_diagram.csv", t);
   Table h(hb_section_columns({"f_mesh_hz", "period", "branch"}, "u_s_um"));
-  add_hb_section_rows(h, hb, r.curve, r.diagram, q, 1e6,
-                      [](double w) { return std::vector<Table::Cell>{hz(w), long(1), long(0)}; });
-  for (std::size_t k = 0; k < r.doubled.size(); ++k)
-    if (has_points(r.doubled[k])) add_subharmonic_section_rows(h, r.doubled[k], int(k) + 1, r.diagram, q);
+  add_hb_section_rows(h, hb, r.curve, r.doubled, r.diagram, q, 1e6,
+                      [](double w, int p, int b) { return std::vector<Table::Cell>{hz(w), long(p), long(b)}; });
   run.write("bifurcation_diagram_hb.csv", h);
 }
 

@@ -148,30 +148,97 @@ std::string period_doubling_help() {
          "                        doubling of every period-2 branch (rows of period 2 and 4 in the tables)\n";
 }
 
+namespace {
+
+// The stable orbits of one branch (on its model hb, of `period` forcing periods; its omegas base
+// frequencies omega / period) at the speeds of the diagram's up sweep: on every segment stable
+// at both ends that brackets the speed, Newton from the segment's end ((Omega, X) pairs).
+std::vector<std::pair<double, Eigen::VectorXd>> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                             int period, const BifurcationDiagram& d) {
+  const auto& P = c.branch.points;
+  std::vector<std::pair<double, Eigen::VectorXd>> out;
+  for (const DiagramPoint& p : d.points) {
+    if (!p.up) continue;
+    const double Omega = p.omega / period;
+    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
+      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+      Eigen::VectorXd X = P[i].X;
+      if (newton_solve(hb, X, Omega, c.scaling).converged) out.emplace_back(Omega, std::move(X));
+    }
+  }
+  return out;
+}
+
+// The rows of one branch (as speed_orbits): at each point, then at each of speed_orbits, its
+// `period` values at phase 0 of the forcing periods j = 0 .. period - 1 (base phase 2 pi j / period).
+void add_branch_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, int period,
+                     const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
+                     const std::function<std::vector<Table::Cell>(double)>& lead) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  const auto& P = c.branch.points;
+  auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point) {
+    for (int j = 0; j < period; ++j) {
+      const double phi = 2.0 * M_PI * j / period;
+      Eigen::VectorXd x = X.segment(hb.index(0, 0), n);
+      for (int l = 1; l <= H; ++l)
+        x += std::cos(l * phi) * X.segment(hb.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hb.index(2 * l, 0), n);
+      std::vector<Table::Cell> row = lead(period * Omega);
+      row.emplace_back(scale * q.dot(x));
+      row.emplace_back(long(stable ? 1 : 0));
+      row.emplace_back(std::string(point));
+      t.add_row(std::move(row));
+    }
+  };
+  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
+  for (const auto& o : speed_orbits(hb, c, period, d)) add(o.first, o.second, true, "speed");
+}
+
+// The points, integrated on the forced model, from the stable orbits of one branch (on its model
+// hbp, as speed_orbits) that no sweep at their speed shows as periodic with their period.
+void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forced, const HarmonicBalance& hb,
+                            const FrequencyCurve& c, int period, const BifurcationDiagram& d,
+                            const BifurcationDiagramOptions& o) {
+  for (const auto& orbit : speed_orbits(hb, c, period, d)) {
+    const double omega = period * orbit.first;
+    bool reached = false;
+    for (const DiagramPoint& p : d.points)
+      reached = reached || (std::fabs(p.omega - omega) <= 1e-12 * omega && p.motion == Motion::periodic && p.n == period);
+    if (reached) continue;
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, orbit.second, orbit.first, x0, v0);
+    out.points.push_back(diagram_point(forced, omega, x0, v0, o));
+  }
+}
+
+}  // namespace
+
+BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
+                                          BifurcationDiagramOptions o) {
+  o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  return run.timed("diagram from the HB orbits", [&] {
+    BifurcationDiagram out;
+    add_points_from_orbits(out, hb, hb, c, 1, d, o);
+    for (const auto& b : pd)
+      if (has_points(b)) add_points_from_orbits(out, hb, *b.model, b.curve, b.period, d, o);
+    return out;
+  });
+}
+
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead) {
-  const auto& P = c.branch.points;
-  auto add = [&](double w, const Eigen::VectorXd& X, bool stable, const char* point) {
-    Eigen::VectorXd x0, v0;
-    hb_initial_state(hb, X, w, x0, v0);
-    std::vector<Table::Cell> row = lead(w);
-    row.emplace_back(scale * q.dot(x0));
-    row.emplace_back(long(stable ? 1 : 0));
-    row.emplace_back(std::string(point));
-    t.add_row(std::move(row));
-  };
-  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
-  // At the diagram's speeds: the orbit of every segment stable at both ends that brackets it,
-  // solved by Newton at the speed from the segment's end.
-  for (const DiagramPoint& p : d.points) {
-    if (!p.up) continue;
-    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
-      if ((P[i - 1].omega - p.omega) * (P[i].omega - p.omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
-      Eigen::VectorXd X = P[i].X;
-      if (newton_solve(hb, X, p.omega, c.scaling).converged) add(p.omega, X, true, "speed");
-    }
-  }
+  add_branch_rows(t, hb, c, 1, d, q, scale, lead);
+}
+
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
+                         const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
+                         const Eigen::VectorXd& q, double scale, const SectionLead& lead) {
+  add_branch_rows(t, hb, c, 1, d, q, scale, [&](double w) { return lead(w, 1, 0); });
+  for (std::size_t k = 0; k < pd.size(); ++k)
+    if (has_points(pd[k]))
+      add_branch_rows(t, *pd[k].model, pd[k].curve, pd[k].period, d, q, scale,
+                      [&](double w) { return lead(w, pd[k].period, int(k) + 1); });
 }
 
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value) {
@@ -301,7 +368,7 @@ void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::Ve
     const Eigen::Index rows = p.motion == Motion::periodic ? p.n : std::max<Eigen::Index>(p.x.rows() - 1, 0);
     for (Eigen::Index j = 0; j < rows; ++j) {
       std::vector<Table::Cell> row = lead(p.omega);
-      row.emplace_back(std::string(p.up ? "up" : "down"));
+      row.emplace_back(std::string(p.from_orbit ? "from_hb" : p.up ? "up" : "down"));
       row.emplace_back(scale * q.dot(p.x.row(j).transpose()));
       row.emplace_back(std::string(to_string(p.motion)));
       row.emplace_back(long(p.n));

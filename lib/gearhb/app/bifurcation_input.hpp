@@ -31,6 +31,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
 
@@ -92,7 +93,7 @@ int read_period_doubling_depth(const nlohmann::json& root, const std::string& fi
 std::string period_doubling_help();
 
 // The rows of one diagram: the cells `lead(omega)` (the program's frequency columns), then
-// sweep (up | down), the value scale q' x of each Poincare point, motion, n and lyapunov
+// sweep (up | down | from_hb: diagram_from_hb_orbits), the value scale q' x of each Poincare point, motion, n and lyapunov
 // (empty where not computed). A period-n point writes its n distinct points (the others repeat
 // them within period_tol), any other all its recorded points, a failed one none.
 void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
@@ -106,7 +107,27 @@ void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::Ve
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead);
+// Every branch at the same section: the period-1 curve c (period 1, branch 0), then each branch
+// of pd with points (its period p, branch k + 1: the ids of the frequency-response table), the
+// cells lead(omega, period, branch) first; a period-p orbit writes p rows per point and speed,
+// its values at phase 0 of its p forcing periods (the Poincare points a period-p motion of the
+// diagram has). The columns: hb_section_columns({<frequency columns>, "period", "branch"}, value).
+using SectionLead = std::function<std::vector<Table::Cell>(double omega, int period, int branch)>;
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
+                         const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
+                         const Eigen::VectorXd& q, double scale, const SectionLead& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
+
+// The diagram checked from the HB side: at every speed of d's up sweep where a stable HB orbit
+// of period p (of c, or of a branch of pd: as add_hb_section_rows solves them) has no sweep
+// periodic with period p, one more speed started on that orbit (hb/bifurcation_diagram.hpp
+// diagram_point, the sweeps' options o): does the integration stay on it (an attractor the
+// sweeps did not reach: coexisting) or leave it (HB's stability is not the integration's)? The
+// points, from_orbit, for add_bifurcation_rows (sweep `from_hb`); kept out of d so that its
+// counts and key numbers stay the sweeps'. One timed step.
+BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
+                                          BifurcationDiagramOptions o);
 
 // The bands a program draws its diagram over for the curve c on [omega_min, omega_max]: the one
 // band of the whole range ("range": "whole": speeds given or the library's 200), else

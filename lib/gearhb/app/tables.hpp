@@ -39,7 +39,7 @@ struct BranchLabel {
 //   (max |x_HB - x_exact| over the period, floquet.hpp),
 //   x_max_exact, x_min_exact, x_rms_ac_exact, x_h1_exact, x_mean_exact (the same measures
 //   of the exact orbit, exact_orbit.hpp), exact (ok | not_converged | inconsistent |
-//   unavailable: ExactStatus), period, branch (BranchLabel below: 1, 0 for a period-1 curve);
+//   unavailable | lower_period: ExactStatus), period, branch (BranchLabel below: 1, 0 for a period-1 curve);
 // cells are empty where a value does not exist (no Floquet stability; no corrected
 // orbit for a time-varying stiffness; exact != ok). Each row follows its point's exact
 // orbit: `progress` (if given) is called before each row with its point (e.g. to show

@@ -269,6 +269,7 @@ const char* to_string(ExactStatus s) {
     case ExactStatus::not_converged: return "not_converged";
     case ExactStatus::inconsistent: return "inconsistent";
     case ExactStatus::unavailable: return "unavailable";
+    case ExactStatus::lower_period: return "lower_period";
   }
   return "?";
 }
@@ -283,6 +284,10 @@ ExactPoint exact_point(const HarmonicBalance& hb, const FrequencyCurve& c, std::
   const PointFloquet& f = c.floquet[i];
   if (!f.corrected) {
     e.status = ExactStatus::not_converged;
+    return e;
+  }
+  if (f.lower_period) {
+    e.status = ExactStatus::lower_period;
     return e;
   }
   e.status = ExactStatus::inconsistent;

@@ -90,10 +90,12 @@ class ExactOrbit {
 //  not_converged  the shooting Newton did not reach FloquetOptions::tolerance (near a
 //                 grazing orbit or a bifurcation, or H far from the truth);
 //  inconsistent   following the corrected orbit failed or stepped over a contact switch;
+//  lower_period   a period-p point whose corrected orbit repeats after one forcing period
+//                 (FloquetResult::lower_period): no exact orbit of period p there;
 //  unavailable    no piecewise-linear flow (a time-varying contact stiffness: its
 //                 multipliers come from the variational equation, not corrected) or the
 //                 curve was computed without Floquet stability (Hill, none).
-enum class ExactStatus { ok, not_converged, inconsistent, unavailable };
+enum class ExactStatus { ok, not_converged, inconsistent, unavailable, lower_period };
 const char* to_string(ExactStatus s);
 
 struct ExactPoint {

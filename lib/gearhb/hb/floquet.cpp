@@ -608,14 +608,29 @@ FloquetResult floquet_of_hb_orbit(const HarmonicBalance& hb, const Eigen::Vector
   const Eigen::MatrixXd xs = shooting_newton(P, hb, X, omega, shooting_scale(n, omega, x_scale), opt, r);
   // orbit error over the uniform nodes (their columns in the node list)
   const Eigen::MatrixXd xhb = hb_orbit_samples(hb, X, M);
+  Eigen::MatrixXd xex(n, M);   // the corrected orbit at the uniform nodes
   double e = 0.0;
   std::size_t col = 0;
   for (int j = 0; j < M; ++j) {
     const double t = T * j / M;
     while (col < nodes.size() && nodes[col] < t - 1e-12 * T) ++col;
-    e = std::max(e, (xs.col(Eigen::Index(col)) - xhb.col(j)).cwiseAbs().maxCoeff());
+    xex.col(j) = xs.col(Eigen::Index(col));
+    e = std::max(e, (xex.col(j) - xhb.col(j)).cwiseAbs().maxCoeff());
   }
   r.orbit_error = e;
+  const int p = hb.excitation().harmonic;
+  if (p > 1 && M % p == 0 && r.corrected) {
+    auto repeat_gap = [M, p](const Eigen::MatrixXd& x) {   // max_t |x(t + T/p) - x(t)|
+      double g = 0.0;
+      for (int j = 0; j < M; ++j) g = std::max(g, (x.col((j + M / p) % M) - x.col(j)).cwiseAbs().maxCoeff());
+      return g;
+    };
+    const double g_hb = repeat_gap(xhb);
+    if (g_hb > 1e-9 * x_scale && repeat_gap(xex) < 1e-2 * g_hb) {
+      r.lower_period = true;
+      r.stable = false;
+    }
+  }
   return r;
 }
 

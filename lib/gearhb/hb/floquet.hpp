@@ -70,6 +70,14 @@ struct FloquetResult {
   double orbit_error = 0.0;          // max over the period and DOFs of |x_HB - x_exact| [units of x]
   Eigen::VectorXd x0, v0;            // corrected state at phase 0
   Eigen::MatrixXd monodromy;         // 2n x 2n
+  // A period-p model's orbit (Excitation::harmonic p > 1: p forcing periods) whose corrected
+  // orbit repeats after one forcing period: max_t |x(t + T/p) - x(t)| below 1e-2 of the HB
+  // orbit's own (on the uniform nodes, M a multiple of p; the HB orbit's above 1e-9 of
+  // x_scale). No exact orbit of period p lies there - the shooting found the period-1 orbit
+  // (ch. 6 Fig. 43's period-2 branch between the PD of the exact orbit, 10968.6 rad/s, and
+  // HB's own branch point beside it, 10976.2): the multipliers are that orbit's, and `stable`
+  // is false (this is no stable orbit of period p). The exact-flow path only.
+  bool lower_period = false;
 };
 
 // The exact piecewise-linear flow of an HB model (see above).

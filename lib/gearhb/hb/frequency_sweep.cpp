@@ -52,6 +52,7 @@ PointFloquet point_floquet(const FloquetResult& r) {
   p.corrected = r.corrected;
   p.x0 = r.x0;
   p.v0 = r.v0;
+  p.lower_period = r.lower_period;
   for (Eigen::Index i = 0; i < r.multipliers.size(); ++i) {
     const auto m = r.multipliers[i];
     if (!(std::abs(m) > 1.0)) continue;
