@@ -16,7 +16,9 @@ MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C
 MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n points)",
                  "quasi_periodic": "quasi-periodic (|Lyapunov| < 0.02, no attracting cycle)", "chaotic": "chaotic (Lyapunov > 0)",
                  "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
-SWEEP_MARKERS = {"up": ".", "down": "x"}
+SWEEP_MARKERS = {"up": ".", "down": "x", "from_hb": "D"}
+SWEEP_LABELS = {"up": "time integration, sweep up", "down": "time integration, sweep down",
+                "from_hb": "time integration started on a stable HB orbit\nno sweep reached (hollow)"}
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
 
 
@@ -37,24 +39,26 @@ def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
                 continue
             groups.setdefault(motion_key(d["motion"][i], d["n"][i]), []).append(i)
         for key, idx in groups.items():
+            hollow = {"mfc": "none", "ms": 5.0, "mew": 0.9} if sweep == "from_hb" else {}
             ax.plot([d[x][i] for i in idx], [d[y][i] * scale for i in idx], ls="none",
-                    marker=SWEEP_MARKERS[sweep], ms=2.5 if sweep == "up" else 2.2, mew=0.6,
-                    color=MOTION_COLOURS[key], zorder=ZORDER[key])
+                    **{"marker": SWEEP_MARKERS[sweep], "ms": 2.5 if sweep == "up" else 2.2, "mew": 0.6,
+                       "color": MOTION_COLOURS[key], "zorder": ZORDER[key], **hollow})
             drawn.add((key, sweep))
     handles = [Line2D([], [], ls="none", marker="s", ms=5, color=MOTION_COLOURS[k], label=MOTION_LABELS[k])
                for k in MOTION_COLOURS if any(k == key for key, _ in drawn)]
-    handles += [Line2D([], [], ls="none", marker=SWEEP_MARKERS[s], color="0.3",
-                       label="time integration, sweep %s" % s) for s in sweeps if any(s == sw for _, sw in drawn)]
+    handles += [Line2D([], [], ls="none", marker=SWEEP_MARKERS[s], color="0.3", mfc="none" if s == "from_hb" else "0.3",
+                       label=SWEEP_LABELS[s]) for s in sweeps if any(s == sw for _, sw in drawn)]
     return handles
 
 
-def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase"):
-    """The HB branch's value at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed unstable."""
+def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase", unresolved=()):
+    """The HB branch's value at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed unstable,
+    grey at the indices `unresolved` of its branch rows (style.plot_branch)."""
     if "point" in h:   # the branch's own points (the rows at the diagram's speeds are for checks)
         h = {c: [v[i] for i in range(len(v)) if h["point"][i] == "branch"] for c, v in h.items()}
     if not h[x]:
         return []
-    plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb")
+    plot_branch(ax, h, y, colour, None, x=x, scale=scale, values="hb", unresolved=unresolved)
     return [Line2D([], [], color=colour, ls="-", label=label + " (stable)"),
             Line2D([], [], color=colour, ls="--", label=label + " (unstable)")]
 

@@ -15,7 +15,9 @@ hb_orbit_error of the frequency-response table (max |x_HB - x_exact| over the pe
 exact orbit by shooting), its largest value E over the curve's stable points times
 ERROR_SCALE (to VALUE's unit), plus 1e-6 |value| (the classifier's period_tol). At every such
 speed one of the two sweeps must be period 1 within E of one of the stable HB orbits there
-(coexisting orbits: one of them). Period-1 points on no stable HB orbit (an orbit the one
+(coexisting orbits: one of them), or, where the program integrated from a stable HB orbit that
+no sweep reached (rows with sweep `from_hb`: coexisting attractors), that integration; such
+speeds are listed. Period-1 points on no stable HB orbit (an orbit the one
 continuation branch does not hold) are listed, not failed. At least MIN_COMPARED speeds must
 be compared (the check cannot pass empty). Exit 1 naming the first speeds that fail."""
 import csv
@@ -35,7 +37,7 @@ def main():
         stem, group = "_" + group[len("label="):], None
     diagram, hb = rows(d_dir + "/bifurcation_diagram%s.csv" % stem), rows(d_dir + "/bifurcation_diagram_hb%s.csv" % stem)
     curves = sorted({r[group] for r in hb}) if group else [None]
-    failures, elsewhere, compared, worst = [], [], 0, 0.0
+    failures, elsewhere, coexisting, compared, worst = [], [], [], 0, 0.0
     for g in curves:
         h = [r for r in hb if group is None or r[group] == g]
         branch = [r for r in h if r["point"] == "branch"]
@@ -56,6 +58,8 @@ def main():
         for w, sweeps in points.items():
             where = "%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w)
             period1 = [float(rs[0][V]) for rs in sweeps.values() if rs[0]["motion"] == "periodic" and rs[0]["n"] == "1"]
+            swept = [float(rs[0][V]) for k, rs in sweeps.items() if k != "from_hb" and rs[0]["motion"] == "periodic"
+                     and rs[0]["n"] == "1"]
             orbits = at_speed.get(w, [])
             allowed = lambda y: E + 1e-6 * abs(y)  # noqa: E731
             for y in period1:
@@ -67,11 +71,16 @@ def main():
             if offs:
                 compared += 1
                 worst = max(worst, min(offs))
+                if not any(abs(y - q) <= allowed(y) for y in swept for q in orbits):
+                    coexisting.append("%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w))
             else:
                 failures.append("%s: HB has a stable orbit (%s), no sweep is period 1 on it within %.3g (%s)" % (
                     where, ", ".join("%.6g" % q for q in orbits), E,
                     "; ".join("%s %s n = %s %s" % (k, rs[0]["motion"], rs[0]["n"], rs[0][V]) for k, rs in sweeps.items())))
     print("speeds compared: %d (largest difference %.3g %s)" % (compared, worst, V))
+    if coexisting:
+        print("on the stable HB orbit only from it (sweep from_hb; the sweeps on another attractor): " +
+              "; ".join(coexisting))
     if elsewhere:
         print("period 1 on no stable HB orbit of the branch: " + "; ".join(elsewhere))
     return verdict(failures, compared, min_compared)

@@ -95,6 +95,9 @@ struct CaseDiagram {
   double lo = 0.0, hi = 0.0;
   int speeds = 0;
   const char* scaled_from = nullptr;
+  // Also integrate from every stable HB orbit at a speed that neither sweep reached (rows
+  // `from_hb`): where attractors coexist (Fig. 40's grazing region, README step 3b).
+  bool start_on_hb = false;
 };
 
 struct Case {
@@ -118,7 +121,7 @@ struct Case {
 // them (Figs. 41, 43); 44 and 45 are 40 and 43 scaled. Speeds: the chapter's diagrams within
 // ~60 s CPU (README, step 3b).
 const std::vector<Case> kCases = {
-    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75}},
+    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, true}},
     {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
     {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
@@ -197,6 +200,8 @@ class GearPairChapter {
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                            std::map<std::string, BifurcationDiagram>& diagrams) const;
+  BifurcationDiagram starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                  const BifurcationDiagram& d) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -434,11 +439,36 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
   Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega"}, "delta"));
   add_bifurcation_rows(t, d, T2, times, lead);
+  if (b.start_on_hb && !b.scaled_from) add_bifurcation_rows(t, starts_on_hb(run, cs, hb, c, d), T2, 1.0, lead);
   add_hb_section_rows(h, hb, c, d, T2, 1.0, lead);
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
   run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);
   diagram_key_numbers(run.key_numbers(), d, "_" + cs.label);
   run.say(cs.label + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
+}
+
+// Step 3c (the cases with start_on_hb): the time integration started on every stable HB orbit at
+// a speed of the grid that neither sweep reached, classified as the sweeps' speeds
+// (diagram_from_stable_hb_orbits): in Fig. 40's grazing region a stable period-1 orbit coexists
+// with the chaotic attractor the sweeps follow (README step 3b; tests/unit/test_fig40_grazing.cpp).
+// Rows `from_hb` of bifurcation_diagram_<label>.csv; key number diagram_hb_starts_<label>.
+BifurcationDiagram GearPairChapter::starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb,
+                                                 const FrequencyCurve& c, const BifurcationDiagram& d) const {
+  BifurcationDiagramOptions o;
+  o.lyapunov_min_periods = 50;   // as the sweeps
+  const BifurcationDiagram s = run.timed("diagram starts on HB " + cs.label, [&] {
+    return diagram_from_stable_hb_orbits(hb, c, d, o);
+  });
+  long period1 = 0;
+  std::ostringstream os;
+  for (const DiagramPoint& p : s.points) {
+    period1 += p.motion == Motion::periodic && p.n == 1 ? 1 : 0;
+    os << (os.tellp() > 0 ? ", " : "") << p.omega;
+  }
+  run.key_numbers().add("diagram_hb_starts_" + cs.label, double(s.points.size()), "-");
+  run.say(cs.label + ": stable HB orbits no sweep reached: " + std::to_string(s.points.size()) + " (" + os.str() +
+          " rad/s); integrated from them: period 1 at " + std::to_string(period1));
+  return s;
 }
 
 // Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the

@@ -6,6 +6,7 @@
 
 #include "gearhb/app/json_file.hpp"
 #include "gearhb/core/newton.hpp"
+#include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
@@ -162,16 +163,40 @@ void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCur
     t.add_row(std::move(row));
   };
   for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
-  // At the diagram's speeds: the orbit of every segment stable at both ends that brackets it,
-  // solved by Newton at the speed from the segment's end.
+  for (const auto& o : stable_hb_orbits_at_speeds(hb, c, d)) add(o.first, o.second, true, "speed");
+}
+
+std::vector<std::pair<double, Eigen::VectorXd>> stable_hb_orbits_at_speeds(const HarmonicBalance& hb,
+                                                                           const FrequencyCurve& c,
+                                                                           const BifurcationDiagram& d) {
+  const auto& P = c.branch.points;
+  std::vector<std::pair<double, Eigen::VectorXd>> out;
   for (const DiagramPoint& p : d.points) {
-    if (!p.up) continue;
+    if (!p.up || p.from_orbit) continue;
     for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
       if ((P[i - 1].omega - p.omega) * (P[i].omega - p.omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
       Eigen::VectorXd X = P[i].X;
-      if (newton_solve(hb, X, p.omega, c.scaling).converged) add(p.omega, X, true, "speed");
+      if (newton_solve(hb, X, p.omega, c.scaling).converged) out.emplace_back(p.omega, X);
     }
   }
+  return out;
+}
+
+BifurcationDiagram diagram_from_stable_hb_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                 const BifurcationDiagram& d, BifurcationDiagramOptions o) {
+  o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  BifurcationDiagram out;
+  for (const auto& [w, X] : stable_hb_orbits_at_speeds(hb, c, d)) {
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(hb, X, w, x0, v0);
+    const double bound = floquet_of_hb_orbit(hb, X, w, c.scaling.x[0]).orbit_error + o.period_tol * o.integration.x_scale;
+    bool reached = false;   // a sweep's period-1 point at w on this orbit
+    for (const DiagramPoint& p : d.points)
+      reached = reached || (p.omega == w && p.motion == Motion::periodic && p.n == 1 &&
+                            (p.x.row(0).transpose() - x0).cwiseAbs().maxCoeff() <= bound);
+    if (!reached) out.points.push_back(diagram_point(hb, w, x0, v0, o));
+  }
+  return out;
 }
 
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value) {
@@ -301,7 +326,7 @@ void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::Ve
     const Eigen::Index rows = p.motion == Motion::periodic ? p.n : std::max<Eigen::Index>(p.x.rows() - 1, 0);
     for (Eigen::Index j = 0; j < rows; ++j) {
       std::vector<Table::Cell> row = lead(p.omega);
-      row.emplace_back(std::string(p.up ? "up" : "down"));
+      row.emplace_back(std::string(p.from_orbit ? "from_hb" : p.up ? "up" : "down"));
       row.emplace_back(scale * q.dot(p.x.row(j).transpose()));
       row.emplace_back(std::string(to_string(p.motion)));
       row.emplace_back(long(p.n));

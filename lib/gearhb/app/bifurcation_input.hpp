@@ -23,6 +23,7 @@
 // programs write, bifurcation_diagram.csv: one row per Poincare point.
 #include <functional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -92,7 +93,8 @@ int read_period_doubling_depth(const nlohmann::json& root, const std::string& fi
 std::string period_doubling_help();
 
 // The rows of one diagram: the cells `lead(omega)` (the program's frequency columns), then
-// sweep (up | down), the value scale q' x of each Poincare point, motion, n and lyapunov
+// sweep (up | down | from_hb: diagram_from_stable_hb_orbits), the value scale q' x of each
+// Poincare point, motion, n and lyapunov
 // (empty where not computed). A period-n point writes its n distinct points (the others repeat
 // them within period_tol), any other all its recorded points, a failed one none.
 void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
@@ -107,6 +109,18 @@ void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCur
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
+// Those `speed` orbits: (omega, X) of every segment of c stable at both ends that brackets a speed
+// of d's grid, solved by Newton at the speed from the segment's end.
+std::vector<std::pair<double, Eigen::VectorXd>> stable_hb_orbits_at_speeds(const HarmonicBalance& hb,
+                                                                           const FrequencyCurve& c,
+                                                                           const BifurcationDiagram& d);
+// Where attractors coexist the sweeps may pass a stable HB orbit by: the time integration started
+// on every such orbit that no sweep reached (no period-1 point of d at its speed within the
+// orbit's own distance to the exact flow, hb_orbit_error, plus period_tol x_scale, in x at phase
+// 0), each speed classified as the sweeps' (diagram_point; x_scale the curve's largest DOF
+// scale). Is it an attractor? Its rows (add_bifurcation_rows) have sweep `from_hb`.
+BifurcationDiagram diagram_from_stable_hb_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                 const BifurcationDiagram& d, BifurcationDiagramOptions o);
 
 // The bands a program draws its diagram over for the curve c on [omega_min, omega_max]: the one
 // band of the whole range ("range": "whole": speeds given or the library's 200), else

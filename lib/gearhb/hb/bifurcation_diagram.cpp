@@ -282,6 +282,19 @@ void diagram_speed(const TimeIntegrator& ti, const BifurcationDiagramOptions& op
 }
 }  // namespace
 
+DiagramPoint diagram_point(const HarmonicBalance& hb, double omega, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                           const BifurcationDiagramOptions& opt) {
+  std::string why;
+  const std::string key = check_bifurcation_options(opt, &why);
+  if (!key.empty()) throw std::invalid_argument("bifurcation diagram: " + key + " " + why);
+  DiagramPoint p;
+  p.omega = omega;
+  p.from_orbit = true;
+  Eigen::VectorXd x = x0, v = v0;
+  diagram_speed(TimeIntegrator(hb), opt, opt.period_tol * opt.integration.x_scale, p, x, v);
+  return p;
+}
+
 BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                        const BifurcationDiagramOptions& opt,

@@ -110,6 +110,7 @@ struct BifurcationDiagramOptions {
 struct DiagramPoint {
   double omega = 0.0;
   bool up = true;                  // the sweep: up (omega rising) or down
+  bool from_orbit = false;         // not a sweep's: integrated from a given orbit (diagram_point)
   Motion motion = Motion::failed;
   int n = 0;                       // the period (periodic), else 0
   double lyapunov = NAN;           // per forcing period (computed if not periodic), else NaN
@@ -134,6 +135,13 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                        const BifurcationDiagramOptions& opt,
                                        const std::function<void(const DiagramPoint&, int)>& progress = {});
+
+// One speed classified as a sweep classifies each of its speeds (the same transient, recording
+// and classification), the integration started from (x0, v0) at phase 0 instead of the previous
+// speed's state: e.g. on a stable HB orbit that neither sweep reached, to see whether it is an
+// attractor the sweeps passed by (coexisting attractors). from_orbit = true, up = true.
+DiagramPoint diagram_point(const HarmonicBalance& hb, double omega, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
+                           const BifurcationDiagramOptions& opt);
 
 // The option out of range, by its key ("speeds", "transient_periods", "periods",
 // "max_period", "period_tol", "lyapunov_periods", "lyapunov_min_periods", "lyapunov_threshold"),
