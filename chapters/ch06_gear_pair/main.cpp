@@ -98,7 +98,12 @@ struct CaseDiagram {
   // Also integrate from every stable HB orbit at a speed that neither sweep reached (rows
   // `from_hb`): where attractors coexist (Fig. 40's grazing region, README step 3b).
   bool start_on_hb = false;
+  const CaseDiagram* next = nullptr;   // a further band of the case (its points follow this band's)
 };
+
+// Fig. 40's second band: its first unstable stretch above 11.6 krad/s (the Neimark-Sacker band
+// 11.63-11.87 krad/s) with the stable orbit on either side.
+const CaseDiagram kFig40Above = {11500.0, 12000.0, 21, nullptr, true};
 
 struct Case {
   std::string label;       // --case LABEL; data file frc_<label>.csv
@@ -117,11 +122,12 @@ struct Case {
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
 // chapter README); every figure again with the printed kc (suffix _kc_alt).
 // Diagram bands: each covers its figure's unstable stretches below 11.1 krad/s (Fig. 40: the
-// eight of 7.8-11.1 krad/s; its eight above 11.6 krad/s are left out for time) or all of
-// them (Figs. 41, 43); 44 and 45 are 40 and 43 scaled. Speeds: the chapter's diagrams within
+// eight of 7.8-11.1 krad/s, and in a second band the first above 11.6 krad/s; its seven from
+// 12.7 krad/s up are left out for time) or all of them (Figs. 41, 43); 44 and 45 are 40 and 43
+// scaled. Speeds: the chapter's diagrams within
 // ~60 s CPU (README, step 3b).
 const std::vector<Case> kCases = {
-    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, true}},
+    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, true, &kFig40Above}},
     {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
     {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
@@ -176,6 +182,25 @@ void down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, d
     if (best == P.size() || std::abs(P[i].omega - hi) < std::abs(P[best].omega - hi)) best = i;
   if (best == P.size() || std::abs(P[best].omega - hi) > step || best >= c.stable.size() || !c.stable[best]) return;
   hb_initial_state(hb, P[best].X, P[best].omega, o.down_x0, o.down_v0);
+}
+
+// The diagram of every band of the case (cs.diagram, then its `next` bands), the points of each
+// after the last: each band's sweeps as step 3b says (the down sweep from down_start, the
+// sequential Lyapunov stop from 50 periods: bifurcation_diagram.hpp).
+BifurcationDiagram case_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) {
+  BifurcationDiagram all;
+  for (const CaseDiagram* b = &cs.diagram; b; b = b->next) {
+    BifurcationDiagramOptions o;
+    o.speeds = b->speeds;
+    o.lyapunov_min_periods = 50;
+    down_start(hb, c, b->hi, (b->hi - b->lo) / (b->speeds - 1), o);
+    std::ostringstream step;
+    step << "bifurcation diagram " << cs.label;
+    if (b != &cs.diagram) step << " " << b->lo << "-" << b->hi;
+    const BifurcationDiagram d = diagram_of_curve(run, hb, c, b->lo, b->hi, o, step.str(), cs.label + ": ");
+    all.points.insert(all.points.end(), d.points.begin(), d.points.end());
+  }
+  return all;
 }
 
 class GearPairChapter {
@@ -420,11 +445,7 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   const double scale = load_ratio(cs, b.scaled_from);
   const auto from = b.scaled_from ? diagrams.find(b.scaled_from) : diagrams.end();
   if (from == diagrams.end() || !(scale > 0.0)) {
-    BifurcationDiagramOptions o;
-    o.speeds = b.speeds;
-    o.lyapunov_min_periods = 50;   // the sequential stop (bifurcation_diagram.hpp)
-    down_start(hb, c, b.hi, (b.hi - b.lo) / (b.speeds - 1), o);
-    diagrams[cs.label] = diagram_of_curve(run, hb, c, b.lo, b.hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
+    diagrams[cs.label] = case_diagram(run, cs, hb, c);
   } else {
     diagrams[cs.label] = from->second;
     run.key_numbers().add("diagram_scaled_by_" + cs.label, scale, "-");
