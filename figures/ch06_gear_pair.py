@@ -235,7 +235,9 @@ def diagram_figure(data_dir, fig_dir, label, row):
     plot_doubled_branches(a1, band, x="w_k", scale=1e3, entry_per_branch=False)
     a1.axhline(0.0, **CONTACT_LEVEL)
     a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
-    handles = draw_hb_section(a2, inside(h), "w_k", "delta", scale=1e3) + draw_poincare(a2, p, "w_k", "delta", scale=1e3)
+    handles = draw_hb_section(a2, inside(h), "w_k", "delta", scale=1e3)
+    handles += draw_poincare(a2, p, "w_k", "delta", scale=1e3, sweeps=("up", "down", "from_hb"))
+    handles += mark_unresolved(a2, h, rows_of(full, 0), lo, hi, int(read_params(data_dir)["H"]))
     a2.set_ylabel(r"$\Delta$ at phase 0 of each forcing period [mm]")
     a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]")
     a2.set_xlim(lo, hi)
@@ -259,6 +261,21 @@ def diagram_figure(data_dir, fig_dir, label, row):
     fig.savefig(path, bbox_inches="tight")   # the legend below the axes, inside the image
     plt.close(fig)
     return str(path)
+
+
+def mark_unresolved(ax, h, curve, lo, hi, H):
+    """The HB section's points (h's branch rows, in the order of the period-1 rows `curve` of the
+    frequency response) whose shooting correction failed (exact = not_converged): their stability
+    label is not resolved at H harmonics. Marked over [lo, hi] krad/s; the legend handle (or none)."""
+    from matplotlib.lines import Line2D
+    branch = [i for i, pt in enumerate(h["point"]) if pt == "branch"]
+    bad = [i for i, e in zip(branch, curve["exact"]) if e == "not_converged" and lo <= h["w_k"][i] <= hi]
+    if not bad:
+        return []
+    style = dict(ls="none", marker="s", ms=5, mfc="none", mec="m", mew=0.9)
+    ax.plot([h["w_k"][i] for i in bad], [h["delta"][i] * 1e3 for i in bad], zorder=7, **style)
+    return [Line2D([], [], label="HB point whose shooting correction fails:\nstability not resolved at H = %d" % H,
+                   **style)]
 
 
 def period_doubling_figure(data_dir, fig_dir):

@@ -16,7 +16,9 @@ MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C
 MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n points)",
                  "quasi_periodic": "quasi-periodic (|Lyapunov| < 0.02, no attracting cycle)", "chaotic": "chaotic (Lyapunov > 0)",
                  "unsettled": "not settled (no period <= limit, Lyapunov < 0)"}
-SWEEP_MARKERS = {"up": ".", "down": "x"}
+SWEEP_MARKERS = {"up": ".", "down": "x", "from_hb": "D"}
+SWEEP_LABELS = {"up": "time integration, sweep up", "down": "time integration, sweep down",
+                "from_hb": "time integration started on a stable HB orbit\nno sweep reached (hollow)"}
 BRANCH_COLOURS = [c for c in PERIOD2_COLOURS if c != MOTION_COLOURS["quasi_periodic"]]
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
 
@@ -38,14 +40,15 @@ def draw_poincare(ax, d, x, y, scale=1.0, sweeps=("up", "down"), keep=None):
                 continue
             groups.setdefault(motion_key(d["motion"][i], d["n"][i]), []).append(i)
         for key, idx in groups.items():
+            hollow = {"mfc": "none", "ms": 5.0, "mew": 0.9} if sweep == "from_hb" else {}
             ax.plot([d[x][i] for i in idx], [d[y][i] * scale for i in idx], ls="none",
-                    marker=SWEEP_MARKERS[sweep], ms=2.5 if sweep == "up" else 2.2, mew=0.6,
-                    color=MOTION_COLOURS[key], zorder=ZORDER[key])
+                    **{"marker": SWEEP_MARKERS[sweep], "ms": 2.5 if sweep == "up" else 2.2, "mew": 0.6,
+                       "color": MOTION_COLOURS[key], "zorder": ZORDER[key], **hollow})
             drawn.add((key, sweep))
     handles = [Line2D([], [], ls="none", marker="s", ms=5, color=MOTION_COLOURS[k], label=MOTION_LABELS[k])
                for k in MOTION_COLOURS if any(k == key for key, _ in drawn)]
-    handles += [Line2D([], [], ls="none", marker=SWEEP_MARKERS[s], color="0.3",
-                       label="time integration, sweep %s" % s) for s in sweeps if any(s == sw for _, sw in drawn)]
+    handles += [Line2D([], [], ls="none", marker=SWEEP_MARKERS[s], color="0.3", mfc="none" if s == "from_hb" else "0.3",
+                       label=SWEEP_LABELS[s]) for s in sweeps if any(s == sw for _, sw in drawn)]
     return handles
 
 
@@ -53,18 +56,19 @@ def subset(h, keep):
     return {c: [v[i] for i in range(len(v)) if keep(i)] for c, v in h.items()}
 
 
-def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase"):
+def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase", unresolved=()):
     """The HB branches' values at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed
     unstable: period 1 (branch 0) in grey; where the table has the period and branch columns,
     each period-p branch's p values per orbit (the rows of a point come p at a time: its forcing
     periods j = 0..p-1) as p lines in the branch's colour (not green: the diagram's
-    quasi-periodic points). Legend entries only for the styles drawn."""
+    quasi-periodic points). Legend entries only for the styles drawn. The period-1 line is grey at
+    the indices `unresolved` of its rows (style.plot_branch)."""
     h = subset(h, lambda i: h["point"][i] == "branch") if "point" in h else h   # the speed rows are for checks
     branch = [int(float(b)) for b in h["branch"]] if "branch" in h else [0] * len(h[x])
     one = subset(h, lambda i: branch[i] == 0)
     handles = []
     if one[x]:
-        plot_branch(ax, one, y, colour, None, x=x, scale=scale, values="hb")
+        plot_branch(ax, one, y, colour, None, x=x, scale=scale, values="hb", unresolved=unresolved)
         drawn = {int(float(s)) for s in one["stable"]}
         handles += [Line2D([], [], color=colour, ls=ls, label="%s (%s)" % (label, word))
                     for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")) if flag in drawn]

@@ -17,7 +17,9 @@ frequency-response table (max |x_HB - x_exact| over the orbit's period, the exac
 shooting over p forcing periods), its largest value E over the branch's stable points times
 ERROR_SCALE (to VALUE's unit), plus 1e-6 |value| (the classifier's period_tol). At every such
 speed one of the two sweeps must be period p with its p values (sorted) within E of those of
-one of the stable HB orbits there (coexisting orbits: one of them). Periodic points on no
+one of the stable HB orbits there (coexisting orbits: one of them), or, where the program
+integrated from a stable HB orbit that no sweep was on (rows with sweep `from_hb`: coexisting
+attractors), that integration; such speeds are listed. Periodic points on no
 stable HB orbit (an orbit the continued branches do not hold) are listed, not failed. At least MIN_COMPARED speeds must
 be compared (the check cannot pass empty). Exit 1 naming the first speeds that fail."""
 import csv
@@ -62,7 +64,7 @@ def main():
         stem, group = "_" + group[len("label="):], None
     diagram, hb = rows(d_dir + "/bifurcation_diagram%s.csv" % stem), rows(d_dir + "/bifurcation_diagram_hb%s.csv" % stem)
     curves = sorted({r[group] for r in hb}) if group else [None]
-    failures, elsewhere, compared, worst, by_period = [], [], 0, 0.0, {}
+    failures, elsewhere, coexisting, compared, worst, by_period = [], [], [], 0, 0.0, {}
     for g in curves:
         h = [r for r in hb if group is None or r[group] == g]
         E = error_bounds(rows(d_dir + ("/frc%s.csv" % stem if g is None else "/frc_%s.csv" % g)), scale)
@@ -74,7 +76,7 @@ def main():
                 points.setdefault(float(r[X]), {}).setdefault(r["sweep"], []).append(r)
         for w, sweeps in points.items():
             where = "%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w)
-            periodic = [(int(rs[0]["n"]), sorted(float(r[V]) for r in rs)) for rs in sweeps.values()
+            periodic = [(int(rs[0]["n"]), sorted(float(r[V]) for r in rs), k) for k, rs in sweeps.items()
                         if rs[0]["motion"] == "periodic"]
             orbits = [(p, b, q) for p, b, q in at_speed.get(w, []) if b in E]
             allowed = lambda b, y: E[b] + 1e-6 * abs(y)  # noqa: E731
@@ -85,18 +87,20 @@ def main():
                     return None
                 d = [abs(y - z) for y, z in zip(ys, q)]
                 return max(d) if all(e <= allowed(b, y) for e, y in zip(d, ys)) else None
-            for n, ys in periodic:
+            for n, ys, _ in periodic:
                 if not any(off(n, ys, o) is not None for o in orbits):
                     elsewhere.append("%s (period %d, %s = %s)" % (where, n, V, ", ".join("%.6g" % y for y in ys)))
             if not orbits:
                 continue
-            offs = [(off(n, ys, o), o[0]) for n, ys in periodic for o in orbits]
-            offs = [(e, p) for e, p in offs if e is not None]
+            offs = [(off(n, ys, o), o[0], k) for n, ys, k in periodic for o in orbits]
+            offs = [(e, p, k) for e, p, k in offs if e is not None]
             if offs:
                 compared += 1
-                e, p = min(offs)
+                e, p, _ = min(offs)
                 worst = max(worst, e)
                 by_period[p] = by_period.get(p, 0) + 1
+                if all(k == "from_hb" for _, _, k in offs):
+                    coexisting.append(where)
             else:
                 failures.append("%s: HB has a stable orbit (%s), no sweep is periodic on it within its bound (%s)" % (
                     where, "; ".join("period %d branch %s: %s within %.3g" % (p, b, ", ".join("%.6g" % z for z in q), E[b])
@@ -104,6 +108,9 @@ def main():
                     "; ".join("%s %s n = %s %s" % (k, rs[0]["motion"], rs[0]["n"], rs[0][V]) for k, rs in sweeps.items())))
     print("speeds compared: %d (largest difference %.3g %s; %s)" % (
         compared, worst, V, ", ".join("period %d: %d" % kv for kv in sorted(by_period.items()))))
+    if coexisting:
+        print("on the stable HB orbit only from it (sweep from_hb; the sweeps on another attractor): " +
+              "; ".join(coexisting))
     if elsewhere:
         print("periodic on no stable HB orbit: " + "; ".join(elsewhere))
     return verdict(failures, compared, min_compared)

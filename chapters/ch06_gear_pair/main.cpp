@@ -95,7 +95,12 @@ struct CaseDiagram {
   double lo = 0.0, hi = 0.0;
   int speeds = 0;
   const char* scaled_from = nullptr;
+  const CaseDiagram* next = nullptr;   // a further band of the case (its points follow this band's)
 };
+
+// Fig. 40's second band: its first unstable stretch above 11.6 krad/s (the Neimark-Sacker band
+// 11.63-11.87 krad/s) with the stable orbit on either side.
+const CaseDiagram kFig40Above = {11500.0, 12000.0, 21, nullptr};
 
 struct Case {
   std::string label;       // --case LABEL; data file frc_<label>.csv
@@ -114,11 +119,12 @@ struct Case {
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
 // chapter README); every figure again with the printed kc (suffix _kc_alt).
 // Diagram bands: each covers its figure's unstable stretches below 11.1 krad/s (Fig. 40: the
-// eight of 7.8-11.1 krad/s; its eight above 11.6 krad/s are left out for time) or all of
-// them (Figs. 41, 43); 44 and 45 are 40 and 43 scaled. Speeds: the chapter's diagrams within
+// eight of 7.8-11.1 krad/s, and in a second band the first above 11.6 krad/s; its seven from
+// 12.7 krad/s up are left out for time) or all of them (Figs. 41, 43); 44 and 45 are 40 and 43
+// scaled. Speeds: the chapter's diagrams within
 // ~60 s CPU (README, step 3b).
 const std::vector<Case> kCases = {
-    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75}},
+    {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, &kFig40Above}},
     {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
     {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
@@ -175,6 +181,25 @@ void down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, d
   hb_initial_state(hb, P[best].X, P[best].omega, o.down_x0, o.down_v0);
 }
 
+// The diagram of every band of the case (cs.diagram, then its `next` bands), the points of each
+// after the last: each band's sweeps as step 3b says (the down sweep from down_start, the
+// sequential Lyapunov stop from 50 periods: bifurcation_diagram.hpp).
+BifurcationDiagram case_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) {
+  BifurcationDiagram all;
+  for (const CaseDiagram* b = &cs.diagram; b; b = b->next) {
+    BifurcationDiagramOptions o;
+    o.speeds = b->speeds;
+    o.lyapunov_min_periods = 50;
+    down_start(hb, c, b->hi, (b->hi - b->lo) / (b->speeds - 1), o);
+    std::ostringstream step;
+    step << "bifurcation diagram " << cs.label;
+    if (b != &cs.diagram) step << " " << b->lo << "-" << b->hi;
+    const BifurcationDiagram d = diagram_of_curve(run, hb, c, b->lo, b->hi, o, step.str(), cs.label + ": ");
+    all.points.insert(all.points.end(), d.points.begin(), d.points.end());
+  }
+  return all;
+}
+
 class GearPairChapter {
  public:
   explicit GearPairChapter(Study& study);
@@ -197,6 +222,8 @@ class GearPairChapter {
   void measure(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                            const std::vector<PeriodDoubledBranch>& pd, std::map<std::string, BifurcationDiagram>& diagrams) const;
+  BifurcationDiagram starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                  const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -394,8 +421,7 @@ void GearPairChapter::measure(Run& run, const Case& cs, const HarmonicBalance& h
 // switches located, 400 transient periods, 64 Poincare points per speed, the Lyapunov
 // estimate's sequential stop from 50 periods);
 // bifurcation_diagram_<label>.csv, Delta at phase 0 of each forcing period;
-// bifurcation_diagram_hb_<label>.csv, the HB branches at the same section (period 1 and the
-// period-2 (4) branches, their values at phase 0 of each forcing period; the stable stretches
+// bifurcation_diagram_hb_<label>.csv, the HB branch at the same section (its stable stretches
 // under the Poincare points; tests/diagram_vs_hb.py compares the two views). A band
 // scaled_from a case that ran before: that diagram's points times the load ratio (the model
 // is homogeneous in the loads: zero gap, contact force kc max(Delta, 0)), its own HB table.
@@ -416,12 +442,8 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   }
   const double scale = load_ratio(cs, b.scaled_from);
   const auto from = b.scaled_from ? diagrams.find(b.scaled_from) : diagrams.end();
-  BifurcationDiagramOptions o;
-  o.speeds = b.speeds;
-  o.lyapunov_min_periods = 50;   // the sequential stop (bifurcation_diagram.hpp)
   if (from == diagrams.end() || !(scale > 0.0)) {
-    down_start(hb, c, b.hi, (b.hi - b.lo) / (b.speeds - 1), o);
-    diagrams[cs.label] = diagram_of_curve(run, hb, c, b.lo, b.hi, o, "bifurcation diagram " + cs.label, cs.label + ": ");
+    diagrams[cs.label] = case_diagram(run, cs, hb, c);
   } else {
     diagrams[cs.label] = from->second;
     run.key_numbers().add("diagram_scaled_by_" + cs.label, scale, "-");
@@ -436,13 +458,36 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
   Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega", "period", "branch"}, "delta"));
   add_bifurcation_rows(t, d, T2, times, lead);
-  add_bifurcation_rows(t, diagram_from_hb_orbits(run, hb, c, pd, d, o), T2, 1.0, lead);
+  if (!b.scaled_from) add_bifurcation_rows(t, starts_on_hb(run, cs, hb, c, pd, d), T2, 1.0, lead);
   add_hb_section_rows(h, hb, c, pd, d, T2, 1.0,
-                      [](double w, int p, int b) { return std::vector<Table::Cell>{w, long(p), long(b)}; });
+                      [](double w, int p, int br) { return std::vector<Table::Cell>{w, long(p), long(br)}; });
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
   run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);
   diagram_key_numbers(run.key_numbers(), d, "_" + cs.label);
   run.say(cs.label + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
+}
+
+// Step 3c (every computed diagram): the time integration started on every stable HB orbit (period
+// 1 and the period-2 (4) branches) at a speed of the grid that no sweep reached, classified as the
+// sweeps' speeds (app diagram_from_hb_orbits): in Fig. 40's grazing region a stable period-1 orbit coexists
+// with the chaotic attractor the sweeps follow (README step 3b; tests/unit/test_fig40_grazing.cpp).
+// Rows `from_hb` of bifurcation_diagram_<label>.csv; key number diagram_hb_starts_<label>.
+BifurcationDiagram GearPairChapter::starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb,
+                                                 const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd,
+                                                 const BifurcationDiagram& d) const {
+  BifurcationDiagramOptions o;
+  o.lyapunov_min_periods = 50;   // as the sweeps
+  const BifurcationDiagram s = diagram_from_hb_orbits(run, hb, c, pd, d, o);
+  long periodic = 0;
+  std::ostringstream os;
+  for (const DiagramPoint& p : s.points) {
+    periodic += p.motion == Motion::periodic ? 1 : 0;
+    os << (os.tellp() > 0 ? ", " : "") << p.omega;
+  }
+  run.key_numbers().add("diagram_hb_starts_" + cs.label, double(s.points.size()), "-");
+  run.say(cs.label + ": stable HB orbits no sweep reached: " + std::to_string(s.points.size()) + " (" + os.str() +
+          " rad/s); integrated from them: periodic at " + std::to_string(periodic));
+  return s;
 }
 
 // Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the

@@ -150,62 +150,96 @@ std::string period_doubling_help() {
 
 namespace {
 
+// A stable orbit of a branch at a speed of the diagram: its base frequency Omega, unknowns X and
+// the larger hb_orbit_error of the segment's two ends (its distance to the exact orbit; infinite
+// where the curve has no Floquet data).
+struct SpeedOrbit {
+  double Omega;
+  Eigen::VectorXd X;
+  double error;
+};
+
 // The stable orbits of one branch (on its model hb, of `period` forcing periods; its omegas base
 // frequencies omega / period) at the speeds of the diagram's up sweep: on every segment stable
-// at both ends that brackets the speed, Newton from the segment's end ((Omega, X) pairs).
-std::vector<std::pair<double, Eigen::VectorXd>> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                                             int period, const BifurcationDiagram& d) {
+// at both ends that brackets the speed, Newton from the segment's end.
+std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c, int period,
+                                     const BifurcationDiagram& d) {
   const auto& P = c.branch.points;
-  std::vector<std::pair<double, Eigen::VectorXd>> out;
+  std::vector<SpeedOrbit> out;
   for (const DiagramPoint& p : d.points) {
-    if (!p.up) continue;
+    if (!p.up || p.from_orbit) continue;
     const double Omega = p.omega / period;
     for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
       if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
       Eigen::VectorXd X = P[i].X;
-      if (newton_solve(hb, X, Omega, c.scaling).converged) out.emplace_back(Omega, std::move(X));
+      const double error = i < c.floquet.size() ? std::max(c.floquet[i - 1].orbit_error, c.floquet[i].orbit_error) : HUGE_VAL;
+      if (newton_solve(hb, X, Omega, c.scaling).converged) out.push_back({Omega, std::move(X), error});
     }
   }
   return out;
 }
 
+// x at phase 0 of each of the `period` forcing periods of the orbit X of hb (columns; base phase
+// 2 pi j / period).
+Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X, int period) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  Eigen::MatrixXd x(n, period);
+  for (int j = 0; j < period; ++j) {
+    const double phi = 2.0 * M_PI * j / period;
+    x.col(j) = X.segment(hb.index(0, 0), n);
+    for (int l = 1; l <= H; ++l)
+      x.col(j) += std::cos(l * phi) * X.segment(hb.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hb.index(2 * l, 0), n);
+  }
+  return x;
+}
+
 // The rows of one branch (as speed_orbits): at each point, then at each of speed_orbits, its
-// `period` values at phase 0 of the forcing periods j = 0 .. period - 1 (base phase 2 pi j / period).
+// `period` values at phase 0 of its forcing periods (phase_states).
 void add_branch_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, int period,
                      const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
                      const std::function<std::vector<Table::Cell>(double)>& lead) {
-  const int n = hb.dofs(), H = hb.harmonics();
-  const auto& P = c.branch.points;
   auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point) {
+    const Eigen::MatrixXd x = phase_states(hb, X, period);
     for (int j = 0; j < period; ++j) {
-      const double phi = 2.0 * M_PI * j / period;
-      Eigen::VectorXd x = X.segment(hb.index(0, 0), n);
-      for (int l = 1; l <= H; ++l)
-        x += std::cos(l * phi) * X.segment(hb.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hb.index(2 * l, 0), n);
       std::vector<Table::Cell> row = lead(period * Omega);
-      row.emplace_back(scale * q.dot(x));
+      row.emplace_back(scale * q.dot(x.col(j)));
       row.emplace_back(long(stable ? 1 : 0));
       row.emplace_back(std::string(point));
       t.add_row(std::move(row));
     }
   };
+  const auto& P = c.branch.points;
   for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
-  for (const auto& o : speed_orbits(hb, c, period, d)) add(o.first, o.second, true, "speed");
+  for (const SpeedOrbit& o : speed_orbits(hb, c, period, d)) add(o.Omega, o.X, true, "speed");
+}
+
+// Whether a sweep at the orbit's speed is on it: periodic with its period, each of its phase
+// states within the orbit's error plus period_tol x_scale of one of the sweep's states.
+bool reached(const BifurcationDiagram& d, double omega, const Eigen::MatrixXd& x, double bound) {
+  for (const DiagramPoint& p : d.points) {
+    if (std::fabs(p.omega - omega) > 1e-12 * omega || p.motion != Motion::periodic || p.n != x.cols()) continue;
+    bool all = true;
+    for (Eigen::Index j = 0; j < x.cols() && all; ++j) {
+      bool one = false;
+      for (Eigen::Index r = 0; r < p.n && r < p.x.rows() && !one; ++r)
+        one = (p.x.row(r).transpose() - x.col(j)).cwiseAbs().maxCoeff() <= bound;
+      all = one;
+    }
+    if (all) return true;
+  }
+  return false;
 }
 
 // The points, integrated on the forced model, from the stable orbits of one branch (on its model
-// hbp, as speed_orbits) that no sweep at their speed shows as periodic with their period.
+// hb, as speed_orbits) that no sweep at their speed is on (reached).
 void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forced, const HarmonicBalance& hb,
                             const FrequencyCurve& c, int period, const BifurcationDiagram& d,
                             const BifurcationDiagramOptions& o) {
-  for (const auto& orbit : speed_orbits(hb, c, period, d)) {
-    const double omega = period * orbit.first;
-    bool reached = false;
-    for (const DiagramPoint& p : d.points)
-      reached = reached || (std::fabs(p.omega - omega) <= 1e-12 * omega && p.motion == Motion::periodic && p.n == period);
-    if (reached) continue;
+  for (const SpeedOrbit& orbit : speed_orbits(hb, c, period, d)) {
+    const double omega = period * orbit.Omega;
+    if (reached(d, omega, phase_states(hb, orbit.X, period), orbit.error + o.period_tol * o.integration.x_scale)) continue;
     Eigen::VectorXd x0, v0;
-    hb_initial_state(hb, orbit.second, orbit.first, x0, v0);
+    hb_initial_state(hb, orbit.X, orbit.Omega, x0, v0);
     out.points.push_back(diagram_point(forced, omega, x0, v0, o));
   }
 }

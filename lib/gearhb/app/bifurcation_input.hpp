@@ -118,9 +118,11 @@ void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCur
                          const Eigen::VectorXd& q, double scale, const SectionLead& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
 
-// The diagram checked from the HB side: at every speed of d's up sweep where a stable HB orbit
-// of period p (of c, or of a branch of pd: as add_hb_section_rows solves them) has no sweep
-// periodic with period p, one more speed started on that orbit (hb/bifurcation_diagram.hpp
+// The diagram checked from the HB side: at every speed of d's up sweep where no sweep is on a
+// stable HB orbit of period p (of c, or of a branch of pd: as add_hb_section_rows solves them;
+// on it: periodic with period p, each of the orbit's p states at phase 0 within its
+// hb_orbit_error (the larger of its segment's ends) plus period_tol x_scale of a sweep's state),
+// one more speed started on that orbit (hb/bifurcation_diagram.hpp
 // diagram_point, the sweeps' options o): does the integration stay on it (an attractor the
 // sweeps did not reach: coexisting) or leave it (HB's stability is not the integration's)? The
 // points, from_orbit, for add_bifurcation_rows (sweep `from_hb`); kept out of d so that its
