@@ -92,9 +92,9 @@ static void BM_Ex03Period2Branch(benchmark::State& st) {
   st.counters["rejected"] = double(rejected);               // rejected continuation steps
   st.counters["iterations"] = double(iterations);           // corrector iterations of the accepted points
 }
-// fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 3, the default: the
-// period-2 corrector takes 4 iterations a step, so the step grows only now and then; 4 lets it
-// grow); curvature: PeriodDoublingOptions::curvature_predictor (0, the default: off).
+// fast_iterations: the branch's step-growth rule (PeriodDoublingOptions; 4, the default, lets the
+// step grow after the period-2 corrector's usual 4 iterations; at 3 it grows only now and then);
+// curvature: PeriodDoublingOptions::curvature_predictor (1, the default: on).
 BENCHMARK(BM_Ex03Period2Branch)->ArgsProduct({{3, 4}, {0, 1}})->ArgNames({"fast_iterations", "curvature"})
     ->Unit(benchmark::kMillisecond);
 

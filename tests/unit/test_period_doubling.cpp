@@ -92,21 +92,25 @@ TEST(PeriodDoubling, Ex03BranchNeverStepsOntoThePeriodOneBranch) {
   }
 }
 
-// PeriodDoublingOptions::curvature_predictor (off by default; bench_nlvib_ex03.cpp: 57 points
-// instead of 87): the same branch. Its ends against the exact-flow PDs (independent of HB), no
-// point on the period-1 branch, and its own bifurcations those of the default sampling (each
-// located on the exact flow to 1e-9 of its chord, so two samplings agree to ~1e-10 in omega).
-TEST(PeriodDoubling, Ex03BranchWithTheCurvaturePredictorIsTheSameBranch) {
+// The default step rule (PeriodDoublingOptions fast_iterations 4, curvature_predictor on;
+// bench_nlvib_ex03.cpp: 34 points) against the old one (3, the tangent predictor: 87 points):
+// the same branch. The default's ends against the exact-flow PDs (independent of HB), no point
+// on the period-1 branch, and its own bifurcations those of the dense sampling (each located
+// on the exact flow to 1e-9 of its chord, so two samplings agree to ~1e-10 in omega).
+TEST(PeriodDoubling, Ex03BranchWithTheDefaultStepRuleIsTheDenselySampledBranch) {
   const auto& e = ex03();
   ASSERT_EQ(e.br.size(), 1u);
-  PeriodDoublingOptions pdo;
-  pdo.curvature_predictor = true;
-  const auto br = period_doubled_branches(e.hb, e.c, e.o, pdo);
+  PeriodDoublingOptions dense;
+  dense.fast_iterations = 3;
+  dense.curvature_predictor = false;
+  const auto br = period_doubled_branches(e.hb, e.c, e.o, dense);
   ASSERT_EQ(br.size(), 1u);
-  const PeriodDoubledBranch &b = br[0], &d = e.br[0];
+  const PeriodDoubledBranch &b = e.br[0], &d = br[0];
   EXPECT_EQ(b.end, PeriodDoubledBranch::End::merged) << b.why;
+  EXPECT_EQ(d.end, PeriodDoubledBranch::End::merged) << d.why;
   EXPECT_NEAR(b.omega_start, kPdHigh, 1e-9);
   EXPECT_NEAR(b.omega_end, kPdLow, 5e-6) << b.why;
+  EXPECT_NEAR(d.omega_end, kPdLow, 5e-6) << d.why;
   EXPECT_LT(b.curve.branch.points.size(), d.curve.branch.points.size());
   const auto& P = b.curve.branch.points;
   for (std::size_t k = 1; k + 1 < P.size(); ++k)
@@ -130,7 +134,7 @@ TEST(PeriodDoubling, Ex03StablePointsAreSeenByTimeIntegration) {
   to.x_scale = e.c.scaling.x[0];
   to.samples_per_period = 4000;
   int compared = 0, unstable = 0;
-  for (std::size_t i = 0; i < P.size(); i += 2) {   // every other point (33 on the branch)
+  for (std::size_t i = 0; i < P.size(); ++i) {   // every point (34 on the branch)
     if (!b.curve.stable[i]) {
       ++unstable;
       continue;

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "gearhb/hb/chord_trials.hpp"
+
 namespace gearhb {
 
 std::string Branch::summary() const {
@@ -398,6 +400,31 @@ BranchPoint point_on_chord(const ParametricProblem& p, const BranchPoint& a, con
   return {S.X(y), S.omega(y), iters, res, 0.0, 0.0};
 }
 
+ChordTrials::ChordTrials(const ParametricProblem& p, const BranchPoint& a, const BranchPoint& b, const Scaling& s,
+                         double corrector_tolerance)
+    : p_(p), s_(s), tolerance_(corrector_tolerance) {
+  Scaled S(p, s);
+  ya_ = S.y(a.X, a.omega);
+  chord_ = S.y(b.X, b.omega) - ya_;
+  done_.emplace_back(0.0, ya_);
+  done_.emplace_back(1.0, ya_ + chord_);
+}
+
+BranchPoint ChordTrials::at(double t) {
+  std::size_t near = 0;
+  for (std::size_t j = 1; j < done_.size(); ++j)
+    if (std::fabs(done_[j].first - t) < std::fabs(done_[near].first - t)) near = j;
+  Scaled S(p_, s_);
+  Eigen::VectorXd y = done_[near].second + (t - done_[near].first) * chord_;
+  int iters = 0;
+  double res = 0.0;
+  if (!correct(S, y, chord_.normalized(), kChordCorrectorIterations, tolerance_, iters, res))
+    throw std::runtime_error("point_on_chord: corrector failed near omega = " + std::to_string(S.omega(y)) +
+                             " (residual " + std::to_string(res) + ")");
+  done_.emplace_back(t, y);
+  return {S.X(y), S.omega(y), iters, res, 0.0, 0.0};
+}
+
 // A jump of locate_state_change's indicator: the bracket is below kJumpBracket (chord
 // fraction) and the indicator at its ends has opposite signs, both still kJumpIndicator or
 // more from zero (an indicator continuous there would have a slope above 1e4 per chord). A
@@ -418,6 +445,7 @@ BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a
   double raw_lo = h_lo, raw_hi = h_hi;   // the indicator at the bracket's ends (h_lo, h_hi: as Illinois scales them)
   int last_side = 0;   // Illinois: halve the value kept twice in a row
   BranchPoint found = b;
+  ChordTrials trials(p, a, b, s, corrector_tolerance);
   while (hi - lo > tol) {
     if (hi - lo <= kJumpBracket && raw_lo * raw_hi < 0.0 && std::fabs(raw_lo) >= kJumpIndicator &&
         std::fabs(raw_hi) >= kJumpIndicator)
@@ -425,7 +453,7 @@ BranchPoint locate_state_change(const ParametricProblem& p, const BranchPoint& a
     const bool secant = std::isfinite(h_lo) && std::isfinite(h_hi) && h_lo * h_hi < 0.0;
     double mid = secant ? lo + (hi - lo) * h_lo / (h_lo - h_hi) : 0.5 * (lo + hi);
     mid = std::clamp(mid, lo + 0.01 * (hi - lo), hi - 0.01 * (hi - lo));   // keep the bracket shrinking
-    const BranchPoint q = point_on_chord(p, a, b, s, mid, corrector_tolerance);
+    const BranchPoint q = trials.at(mid);
     const StateProbe pm = probe(q.X, q.omega);
     if (pm.state == pa.state) {
       lo = mid;

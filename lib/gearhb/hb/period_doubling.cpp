@@ -7,6 +7,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include "gearhb/hb/chord_trials.hpp"
 #include "gearhb/hb/floquet.hpp"
 
 namespace gearhb {
@@ -233,11 +234,12 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
   auto relative = [log_ref](const SignedLogDet& d) { return d.sign * std::exp(d.log_abs - log_ref); };
   Illinois br{0.0, 1.0, relative(da), relative(db)};
   BranchPoint q = pa;
+  ChordTrials trials(hb, pa, pb, c.scaling, opt.continuation.tolerance);
   for (int it = 0; it < 60 && br.hi - br.lo > 1e-12; ++it) {
     // the secant point, kept inside the bracket's inner 98 % (so the bracket shrinks)
     const double w = br.hi - br.lo;
     const double tm = std::clamp(br.lo + w * br.f_lo / (br.f_lo - br.f_hi), br.lo + 0.01 * w, br.hi - 0.01 * w);
-    q = point_on_chord(hb, pa, pb, c.scaling, tm, opt.continuation.tolerance);
+    q = trials.at(tm);
     br.update(tm, relative(det_at(q)));
   }
   return q;
@@ -321,9 +323,10 @@ BranchPoint merge_point(const HarmonicBalance& hbp, const BranchPoint& a, const 
   auto f = [&](const Eigen::VectorXd& X) { return subharmonic_part(hbp, 2, X).dot(phi) / s.x[0]; };
   Illinois br{0.0, 1.0, f(a.X), f(b.X)};
   BranchPoint best = std::fabs(br.f_lo) < std::fabs(br.f_hi) ? a : b;
+  ChordTrials trials(hbp, a, b, s, tolerance);
   for (int it = 0; it < 40 && std::fabs(f(best.X)) > 1e-9; ++it) {
     const double t = (br.lo * br.f_hi - br.hi * br.f_lo) / (br.f_hi - br.f_lo);
-    best = point_on_chord(hbp, a, b, s, t, tolerance);
+    best = trials.at(t);
     br.update(t, f(best.X));
   }
   return best;

@@ -115,19 +115,17 @@ struct PeriodDoublingOptions {
   // step grows by `grow` after a corrector of at most this many iterations). A contact model's
   // period-2 corrector takes 4 Newton iterations at almost any step, however good the predictor
   // (ex. 03 with the curvature predictor: steps 2.3e-6, 1.7e-6, 4e-10, 5e-15 - the second as long
-  // as the first, then quadratic), so at the sweep's 3 the step grows only after the odd
-  // 3-iteration point (ex. 03: 87 points). 4 lets it grow (33 points; with curvature_predictor
-  // 34 points, about 195 ms against 345 ms for ex. 03's branch with stability). It was kept from
-  // the default by ch. 6's period2_hb_within_orbit_error_fig43, whose HB orbit was a Newton solve
-  // from the switched branch's point 105 rad/s away (that branch turns back to its PD and never
-  // reaches the check's omega) and landed elsewhere at other step patterns; the check now starts
-  // from the integrated orbit and no longer depends on the branch. Making 4 (and the predictor)
-  // the default changes every period-2 table and README block: not yet done.
-  int fast_iterations = 3;
-  // ContinuationOptions::curvature_predictor for the branch (off by default, see above): ex. 03's
-  // branch then takes 57 points, not 87, with the same ends, stable points and
-  // shooting agreement (PeriodDoubling.* pass with it on, and with fast_iterations 4 too).
-  bool curvature_predictor = false;
+  // as the first, then quadratic), so at the sweep's 3 the step would grow only after the odd
+  // 3-iteration point (ex. 03: 87 points, 345 ms with stability); at 4 it grows (33 points).
+  // It was kept at 3 while ch. 6's period2_hb_within_orbit_error_fig43 started its HB orbit from
+  // the switched branch (a Newton solve 105 rad/s from its nearest point, landing elsewhere at
+  // other step patterns); that check now starts from the integrated orbit.
+  int fast_iterations = 4;
+  // ContinuationOptions::curvature_predictor for the branch (on by default): ex. 03's branch with
+  // fast_iterations 4 takes 34 points and about 195 ms with stability (the tangent predictor: 33
+  // points, 210 ms; fast_iterations 3 and the tangent predictor: 87 points, 345 ms), with the same
+  // ends, stable stretches and bifurcations (PeriodDoubling.Ex03BranchWithTheCurvaturePredictor...).
+  bool curvature_predictor = true;
 };
 
 // Steps 1-3 of the switch at the PD bf of c (throws std::runtime_error with the reason).
