@@ -137,6 +137,7 @@ void continue_both_ways(OrbitBranch& r, const Eigen::VectorXd& X, const SweepOpt
   b.points.assign(down.points.rbegin(), down.points.rend());
   b.points.push_back(BranchPoint{X, Omega, r.newton_iterations, 0.0, 0.0, d[X.size()]});
   b.points.insert(b.points.end(), up.points.begin(), up.points.end());
+  if (back_up) b.points.push_back(b.points[std::size_t(m)]);   // an isola: closed at its start
   r.start = m;
   for (const Fold& f : down.folds) b.folds.push_back(Fold{f.omega, f.X, m - 2 - f.after_point});
   std::reverse(b.folds.begin(), b.folds.end());
@@ -178,6 +179,18 @@ OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& 
   return r;
 }
 
+PeriodDoubledBranch table_branch(const OrbitBranch& b) {
+  PeriodDoubledBranch r;
+  r.period = b.period;
+  r.from = std::size_t(-1);
+  r.omega_start = b.omega;
+  r.model = b.model;
+  r.curve = b.curve;
+  r.end = b.curve.complete ? PeriodDoubledBranch::End::left_range : PeriodDoubledBranch::End::failed;
+  r.why = b.why;
+  return r;
+}
+
 BranchDistance distance_to_branch(const BranchView& b, const Eigen::MatrixXd& xs, int n, double omega) {
   BranchDistance best;
   const auto& P = b.curve->branch.points;
@@ -206,7 +219,7 @@ BranchDistance distance_to_branch(const BranchView& b, const Eigen::MatrixXd& xs
     if (std::isfinite(best.distance) && dist - bound >= best.distance - best.bound) continue;
     best.distance = dist;
     best.bound = bound;
-    best.omega_branch = omega;
+    best.chord = int(k);
   }
   return best;
 }

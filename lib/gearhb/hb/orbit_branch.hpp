@@ -20,8 +20,9 @@
 //  4. the branch continued both ways in omega from that point with the sweep's arc-length
 //     continuation (SweepOptions::continuation, its contact regime), first along the tangent
 //     there, each way until it leaves [omega_min, omega_max], comes back to its start (an isola:
-//     the second way is then not run) or fails; the two halves joined into one branch in
-//     increasing order of the first way (down, then up);
+//     the second way is then not run, and the start is repeated as the last point, closing it)
+//     or fails; the two halves joined into one branch in the order of the first way (down
+//     reversed, the start, up);
 //  5. the stability of every point and the bifurcations between them: analyse_stability with the
 //     same SweepOptions (for p = 2 on the period-2 model, omegas halved, as the period-doubled
 //     branches: shooting over two forcing periods).
@@ -47,6 +48,7 @@
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
 namespace gearhb {
@@ -78,6 +80,11 @@ OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& 
                               double omega, int period, const SweepOptions& opt,
                               const OrbitBranchOptions& obo = {});
 
+// The branch as a row source of the tables that take a curve's other branches (app/tables.hpp
+// frequency_response_table, bifurcation_table: its period, model and curve; no PD of the curve
+// starts it: `from` = npos, parent -1), `why` its line.
+PeriodDoubledBranch table_branch(const OrbitBranch& b);
+
 // A branch a diagram orbit is compared with: the curve on its model (omegas / period).
 struct BranchView {
   const HarmonicBalance* model = nullptr;
@@ -90,7 +97,8 @@ struct BranchView {
 // (HB's error at phase 0): of the points of b at omega, the one with the smallest distance - bound;
 // distance INFINITY where b does not reach omega.
 struct BranchDistance {
-  double distance = INFINITY, bound = NAN, omega_branch = NAN;
+  double distance = INFINITY, bound = NAN;
+  int chord = -1;   // the point lies between curve points chord and chord + 1
 };
 BranchDistance distance_to_branch(const BranchView& b, const Eigen::MatrixXd& xs, int n, double omega);
 
