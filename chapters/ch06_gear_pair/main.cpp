@@ -17,7 +17,8 @@
 //
 // The steps, in order (chapter README "Steps"): normal_modes, linear_responses,
 // frequency_responses (per case of the table: its curve, contact summary and
-// what it measures), time_integration_check, harmonic_convergence; own_case for
+// what it measures; its bifurcation diagram, bifurcation_diagram, and the branches through
+// the diagram's orbits off the curve, orbit_branches), time_integration_check, harmonic_convergence; own_case for
 // --case own.
 //
 // Sample runs:
@@ -478,18 +479,28 @@ std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyC
 }
 
 // Key numbers of orbit branch b (id `id`, suffix `tag`): where it starts, its span and swing of
-// Delta within the range, its check against the orbit it starts from.
+// Delta within the range (the largest swing on its stable points too), its stable stretches
+// (stable_intervals), its check against the orbit it starts from.
 void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const VectorXd& T2, const SweepOptions& o,
                           const std::string& tag) {
   const ResponseEvaluator ev(*b.model, T2, 256);
-  double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0;
-  for (const auto& q : b.curve.branch.points) {
-    const double w = b.period * q.omega;
+  double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0, stable_swing = 0.0;
+  const auto& P = b.curve.branch.points;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double w = b.period * P[i].omega;
     if (w < o.omega_min || w > o.omega_max) continue;
-    const ResponseSummary r = ev.summarize(q.X);
+    const ResponseSummary r = ev.summarize(P[i].X);
     from = std::min(from, w), to = std::max(to, w);
     lo = std::min(lo, r.x_min), hi = std::max(hi, r.x_max), swing = std::max(swing, r.x_max - r.x_min);
+    if (b.curve.stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
   }
+  const Intervals st = stable_intervals(b.curve, b.period);
+  key.add("orbit_branch_stable_ranges" + tag, double(st.size()), "-");
+  for (std::size_t j = 0; j < st.size(); ++j) {
+    key.add("orbit_branch_stable_from_omega" + tag + "_" + std::to_string(j + 1), st[j].first, "rad/s");
+    key.add("orbit_branch_stable_to_omega" + tag + "_" + std::to_string(j + 1), st[j].second, "rad/s");
+  }
+  key.add("orbit_branch_stable_swing" + tag, stable_swing, "m");
   key.add("orbit_branch_id" + tag, id, "-");
   key.add("orbit_branch_period" + tag, b.period, "-");
   key.add("orbit_branch_omega" + tag, b.omega, "rad/s");
@@ -513,7 +524,8 @@ void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const V
 // found so far starts none (at most 4 branches, 6 attempts). Each branch takes the next branch id in
 // frc_<label>.csv and bifurcations_<label>.csv. Key numbers (suffix _<label>; _<label>_<k> for
 // branch k): off_curve_orbits (diagram speeds of both sweeps off every branch of the curve),
-// off_curve_orbits_left (of those, off every branch with the new ones too), orbit_branches, the
+// off_curve_orbits_left (of those, off every branch with the new ones too), orbit_branches,
+// curve_swing (the continued curve's largest Delta_max - Delta_min, to compare), the
 // numbers of orbit_branch_numbers, orbit_branch_diagram_speeds (off-curve diagram speeds on
 // branch k: the time integration agrees with it there within HB's own error),
 // orbit_branch_stability_agrees (1 if at each of those speeds the branch's Floquet stability,
@@ -557,6 +569,13 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   key.add("off_curve_orbits_" + cs.label, double(off.size()), "-");
   key.add("off_curve_orbits_left_" + cs.label, double(left), "-");
   key.add("orbit_branches_" + cs.label, double(found.size()), "-");
+  const ResponseEvaluator ev(hb, T2, 256);   // the continued curve's largest swing, to compare
+  double curve_swing = 0.0;
+  for (const auto& q : c.branch.points) {
+    const ResponseSummary r = ev.summarize(q.X);
+    curve_swing = std::max(curve_swing, r.x_max - r.x_min);
+  }
+  key.add("curve_swing_" + cs.label, curve_swing, "m");
   Intervals stable = stable_intervals(c);
   for (std::size_t k = 0; k < found.size(); ++k) {
     const OrbitBranch& b = found[k];
