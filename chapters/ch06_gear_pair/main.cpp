@@ -469,15 +469,6 @@ double integrated_multiplier(const HarmonicBalance& hb, const VectorXd& x0, cons
   return M.eigenvalues().cwiseAbs().maxCoeff();
 }
 
-// The branches a diagram orbit is compared with: the curve (period 1) and `branches`.
-std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
-                                     const std::vector<PeriodDoubledBranch>& branches) {
-  std::vector<BranchView> v{{&hb, &c, 1}};
-  for (const auto& b : branches)
-    if (has_points(b)) v.push_back({b.model.get(), &b.curve, b.period});
-  return v;
-}
-
 // Key numbers of orbit branch b (id `id`, suffix `tag`): where it starts, its span and swing of
 // Delta within the range (the largest swing on its stable points too), its stable stretches
 // (stable_intervals), its check against the orbit it starts from.
@@ -540,9 +531,7 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   const SweepOptions o = sweep(cs.mesh, sol_.omega_min, sol_.omega_max);
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = BifurcationDiagramOptions{}.period_tol * xs;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
-  std::vector<const DiagramPoint*> off;
-  for (const DiagramPoint& p : d.points)
-    if (off_every_branch(p, branch_views(hb, c, branches), tol)) off.push_back(&p);
+  const std::vector<const DiagramPoint*> off = off_branch_orbits(d, branch_views(hb, c, branches), tol);
   std::vector<OrbitBranch> found;
   std::vector<BranchView> mine;
   int left = 0, attempts = 0;

@@ -57,7 +57,8 @@ class FrequencyResponseFromFile {
   void frequency_response(Run& run) const;
   void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
+  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                           const std::vector<PeriodDoubledBranch>& pd) const;
   std::vector<TorusBranch> torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const SweepOptions& o, int first_id) const;
   void draw(Run& run) const;
@@ -180,7 +181,7 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
   curve_key_numbers(run, hb, c);
-  bifurcation_diagram(run, hb, c);
+  bifurcation_diagram(run, hb, c, pd);
 }
 
 // How many period-2 branches, how many merged, their points, where each starts and ends.
@@ -231,8 +232,12 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
 // orbit, padded to show period 1 on both sides; none where every range is stable or the key is
 // false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
 // omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;
-// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath.
-void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const {
+// bifurcation_diagram_hb.csv: the HB branch's x at phase 0 and stability, to draw beneath;
+// key numbers diagram_off_branch_period1, _period2: the speeds (both sweeps) whose orbit of period
+// 1 (2) lies on none of the HB branches of its period (the curve; its period-2 branches, none at
+// period_doubling depth 0; off_every_branch): HB branches the run has not found.
+void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd) const {
   if (!model_.diagram.on) return;
   const double lo = std::min(model_.omega_from, model_.omega_to), hi = std::max(model_.omega_from, model_.omega_to);
   const std::vector<DiagramBand> bands = input_bands(model_.diagram, c, lo, hi, hb.dofs());
@@ -256,6 +261,14 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
   run.key_numbers().add("diagram_bands", double(bands.size()), "-");
+  // the diagram's periodic orbits on none of the HB branches (hb/orbit_branch.hpp): a branch
+  // there that the continuation and the period doublings did not reach (not yet continued here)
+  const double tol = model_.diagram.options.period_tol * c.scaling.x.cwiseAbs().maxCoeff();
+  double off1 = 0.0, off2 = 0.0;
+  for (const DiagramPoint* p : off_branch_orbits(d, branch_views(hb, c, pd), tol))
+    (p->n == 1 ? off1 : off2) += p->n <= 2 ? 1.0 : 0.0;
+  run.key_numbers().add("diagram_off_branch_period1", off1, "-");
+  run.key_numbers().add("diagram_off_branch_period2", off2, "-");
   run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
 }
 

@@ -230,6 +230,22 @@ BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const F
   return run.timed(step, [&] { return diagram_from(run, hb, c, std::size_t(lowest - P.begin()), lo, hi, o, label); });
 }
 
+std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                     const std::vector<PeriodDoubledBranch>& pd) {
+  std::vector<BranchView> v{{&hb, &c, 1}};
+  for (const auto& b : pd)
+    if (has_points(b)) v.push_back({b.model.get(), &b.curve, b.period});
+  return v;
+}
+
+std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
+                                                   double tol) {
+  std::vector<const DiagramPoint*> off;
+  for (const DiagramPoint& p : d.points)
+    if (off_every_branch(p, views, tol)) off.push_back(&p);
+  return off;
+}
+
 std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std::function<double(double)>& speed,
                                const std::string& unit) {
   std::string text = "bifurcation diagram over " + std::to_string(bands.size()) + (bands.size() == 1 ? " band: " : " bands: ");

@@ -31,6 +31,8 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/orbit_branch.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
 
@@ -125,6 +127,16 @@ std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);
+
+// The branches a diagram orbit is compared with (hb/orbit_branch.hpp): the curve c of hb (period
+// 1) and each branch of pd with points (its model, its period).
+std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                     const std::vector<PeriodDoubledBranch>& pd);
+// The periodic points of d that lie on none of `views` (off_every_branch), in d's order; tol: the
+// classifier's resolution, period_tol x the integration's x_scale (diagram_of_curve's: the
+// curve's largest DOF scale).
+std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
+                                                   double tol);
 
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
 // frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning
