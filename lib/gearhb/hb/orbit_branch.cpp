@@ -92,29 +92,38 @@ Eigen::VectorXd omega_tangent(const HarmonicBalance& model, const Eigen::VectorX
 
 // One way of step 4 from (X, Omega) along d; `back` is set if it came back to the start.
 Branch one_way(const HarmonicBalance& model, const Eigen::VectorXd& X, double Omega, const Eigen::VectorXd& d,
-               const Scaling& s, const SweepOptions& opt, int p, bool& back) {
+               const Scaling& s, const SweepOptions& opt, int p, bool& back, bool& met) {
   ContinuationOptions co = opt.continuation;
   if (!co.regime && !model.contacts().empty()) co.regime = contact_regime(model);
   ContinuationEnd end;
   end.omega_min = opt.omega_min / p;
   end.omega_max = opt.omega_max / p;
-  double far = 0.0;
+  double far = 0.0, largest = 0.0;
+  Eigen::VectorXd prev_odd = p == 2 ? subharmonic_part(model, 2, X) : Eigen::VectorXd();
   back = false;
+  met = false;
   end.stop = [&](const Eigen::VectorXd& Y, double w) {
     const double dw = (w - Omega) / s.omega;
     const double dist = std::sqrt(((Y - X).array() / s.x.array()).square().sum() + dw * dw);
     far = std::max(far, dist);
     back = far > 5.0 * co.ds_max && dist < 1.5 * co.ds_max;
-    return back;
+    if (p == 2) {   // the odd part reversed or vanished: the branch met the period-1 branch
+      const Eigen::VectorXd odd = subharmonic_part(model, 2, Y);
+      largest = std::max(largest, prev_odd.norm());
+      met = odd.dot(prev_odd) < 0.0 || odd.norm() <= 1e-8 * largest;
+      prev_odd = odd;
+    }
+    return back || met;
   };
   return arc_length_continuation_from(model, X, Omega, d, co.ds_initial, s, co, end);
 }
 
-std::string way_end(const Branch& b, bool back, int p, const char* way) {
+std::string way_end(const Branch& b, bool back, bool met, int p, const char* way) {
   std::ostringstream os;
   os << way << ": ";
   if (b.points.empty()) os << "no point";
   else if (back) os << "back at its start (an isola)";
+  else if (met) os << "meets the period-1 branch (its odd harmonics reverse or vanish) at omega = " << p * b.points.back().omega;
   else if (b.complete) os << "leaves the range at omega = " << p * b.points.back().omega;
   else os << "failed at omega = " << p * b.failures.back().omega << ": " << b.failures.back().what;
   os << " (" << b.points.size() << " points)";
@@ -127,10 +136,10 @@ void continue_both_ways(OrbitBranch& r, const Eigen::VectorXd& X, const SweepOpt
   const double Omega = r.omega / r.period;
   const Scaling& s = r.curve.scaling;
   const Eigen::VectorXd d = omega_tangent(model, X, Omega, s);
-  bool back_up = false, back_down = false;
-  const Branch up = one_way(model, X, Omega, d, s, opt, r.period, back_up);
+  bool back_up = false, back_down = false, met_up = false, met_down = false;
+  const Branch up = one_way(model, X, Omega, d, s, opt, r.period, back_up, met_up);
   Branch down;
-  if (!back_up) down = one_way(model, X, Omega, -d, s, opt, r.period, back_down);
+  if (!back_up) down = one_way(model, X, Omega, -d, s, opt, r.period, back_down, met_down);
   r.isola = back_up;
   Branch& b = r.curve.branch;
   const int m = int(down.points.size());
@@ -147,7 +156,8 @@ void continue_both_ways(OrbitBranch& r, const Eigen::VectorXd& X, const SweepOpt
   b.rejected_steps = up.rejected_steps + down.rejected_steps;
   b.complete = up.complete && (back_up || down.complete);
   r.curve.complete = b.complete;
-  r.why = way_end(up, back_up, r.period, "up") + (back_up ? "" : "; " + way_end(down, back_down, r.period, "down"));
+  r.why = way_end(up, back_up, met_up, r.period, "up") +
+          (back_up ? "" : "; " + way_end(down, back_down, met_down, r.period, "down"));
   if (!b.complete) r.curve.failure = r.why;
 }
 

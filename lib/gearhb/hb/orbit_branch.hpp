@@ -20,8 +20,10 @@
 //  4. the branch continued both ways in omega from that point with the sweep's arc-length
 //     continuation (SweepOptions::continuation, its contact regime), first along the tangent
 //     there, each way until it leaves [omega_min, omega_max], comes back to its start (an isola:
-//     the second way is then not run, and the start is repeated as the last point, closing it)
-//     or fails; the two halves joined into one branch in the order of the first way (down
+//     the second way is then not run, and the start is repeated as the last point, closing it),
+//     for p = 2 meets the period-1 branch (the point whose odd harmonics of omega / 2 reverse
+//     against the point before or vanish, as period_doubling.hpp's merge test; kept, not refined
+//     to the period doubling), or fails; the two halves joined into one branch in the order of the first way (down
 //     reversed, the start, up);
 //  5. the stability of every point and the bifurcations between them: analyse_stability with the
 //     same SweepOptions (for p = 2 on the period-2 model, omegas halved, as the period-doubled
