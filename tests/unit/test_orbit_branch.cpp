@@ -24,6 +24,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/orbit_branch.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "test_models.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -166,15 +167,7 @@ TEST(OrbitBranch, FailureSaysWhy) {
 // (measured 1.6e-4: the end is the first point past the crossing, not refined).
 TEST(OrbitBranch, PeriodTwoOrbitOfTheKahramanSinghOscillator) {
   const double OMEGA2 = 1.85;
-  const int H = 20;
-  LinearSystem s;
-  s.M = MatrixXd::Ones(1, 1);
-  s.C = 0.1 * s.M;
-  s.K = MatrixXd::Zero(1, 1);
-  UnilateralContact drive{VectorXd::Ones(1), 1.0, -1.0, VectorXd::Zero(2 * H + 1)};
-  UnilateralContact back = drive;
-  back.normal = -drive.normal;
-  const HarmonicBalance hb(s, {drive, back}, Excitation{VectorXd::Constant(1, 0.1), VectorXd::Constant(1, 0.5), VectorXd::Zero(1)}, H);
+  const HarmonicBalance hb = test_models::kahraman_singh(0.5);
   MatrixXd xs, vs;
   TimeIntegrationOptions to;
   to.rel_tol = 1e-12;
