@@ -261,14 +261,9 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
   run.key_numbers().add("diagram_bands", double(bands.size()), "-");
-  // the diagram's periodic orbits on none of the HB branches (hb/orbit_branch.hpp): a branch
-  // there that the continuation and the period doublings did not reach (not yet continued here)
-  const double tol = model_.diagram.options.period_tol * c.scaling.x.cwiseAbs().maxCoeff();
-  double off1 = 0.0, off2 = 0.0;
-  for (const DiagramPoint* p : off_branch_orbits(d, branch_views(hb, c, pd), tol))
-    (p->n == 1 ? off1 : off2) += p->n <= 2 ? 1.0 : 0.0;
-  run.key_numbers().add("diagram_off_branch_period1", off1, "-");
-  run.key_numbers().add("diagram_off_branch_period2", off2, "-");
+  // the diagram's orbits on none of the HB branches (a branch the run has not found; not yet
+  // continued here)
+  off_branch_key_numbers(run.key_numbers(), hb, c, pd, d, model_.diagram.options.period_tol, "");
   run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
 }
 

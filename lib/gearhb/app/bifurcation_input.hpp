@@ -137,6 +137,14 @@ std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyC
 // curve's largest DOF scale).
 std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
                                                    double tol);
+// Key numbers diagram_off_branch_period1<suffix>, diagram_off_branch_period2<suffix>: the speeds
+// (both sweeps) of d whose orbit of period 1 (2) lies on none of the HB branches of its period
+// (the curve c of hb; the period-2 branches of pd), tol as off_branch_orbits with the diagram's
+// period_tol: an HB branch the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig.
+// 41's, hb/orbit_branch.hpp branch_from_orbit).
+void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
+                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
+                            const std::string& suffix);
 
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
 // frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning
