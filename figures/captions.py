@@ -95,7 +95,11 @@ CHAPTERS = [
          "colour each (console: where each ends, and the switches that fail)."),
         ("fig41_*.png", "Fig. 41", "Fi = 1e7. Notice full contact everywhere except two narrow windows: 13.53-13.87 krad/s "
          "(four folds, near the closed-mesh mode 13.69 krad/s; middle panel: zoom) and near 47 krad/s. The thesis says it stays in full "
-         "contact (chapter README)."),
+         "contact (chapter README). Brown (thicker): a second period-1 branch the continuation from 2 krad/s never "
+         "reaches, continued from the time-integrated orbit at 13.595 krad/s (supplement S47): an isola over "
+         "13.48-13.86 krad/s in intermittent contact, stable (solid) from its Neimark-Sacker point at 13.51 to its "
+         "fold at 13.86 krad/s, where Delta swings up to 5.17 mm (from -3.35 to 2.05 mm) against at most 1.88 mm on "
+         "the continued curve; with it every speed has a stable period-1 orbit (no grey band)."),
         ("fig42_*.png", "Fig. 42", "Fi = -1e8: the static load pulls the teeth apart. Notice the mesh never closes: the "
          "open linear response."),
         ("fig43_*.png", "Fig. 43", "Fi = -1e6. Notice the first touch at 10716 rad/s, then a hardening band up to the fold "
@@ -131,11 +135,13 @@ CHAPTERS = [
         ("figS47_ch06_diagram_fig41.png", "supplement S47", "What the gear does where Fig. 41 has no stable "
          "period-1 orbit: the bifurcation diagram by time integration over 13.4-14.0 krad/s (41 speeds each way) "
          "under the harmonic-balance branches. Notice the up sweep leaves HB's orbit at 13.595 krad/s for a period-1 "
-         "orbit that is not on the continuation's branch (Delta at phase 0 down to -2.6 mm, below every branch's "
-         "Delta_min, >= -1.3 mm) and stays on it to 13.85 krad/s; the down sweep is chaotic (red) at 13.715-13.79 "
-         "krad/s and on that orbit from 13.70 down to 13.52 krad/s: HB's stable stretch 13.61-13.75 krad/s is "
-         "visited by neither sweep. That orbit is a second, stable HB orbit the continuation never reaches "
-         "(chapter README; unit test BifurcationDiagram.Fig41IntegratedLargeOrbitIsAStableHbOrbit)."),
+         "orbit that is not on the continued curve (Delta at phase 0 down to -2.6 mm) and stays on it to 13.85 "
+         "krad/s; the down sweep is chaotic (red) at 13.715-13.79 krad/s and on that orbit from 13.70 down to 13.52 "
+         "krad/s. Brown: the HB branch continued from that orbit at 13.595 krad/s (chapter step 3c), an isola over "
+         "13.48-13.86 krad/s, stable (solid) from its Neimark-Sacker point at 13.51 to its fold at 13.86 krad/s; "
+         "below, its section at phase 0 runs through all 31 off-curve Poincare points of both sweeps. HB's stable "
+         "stretch 13.61-13.75 krad/s of the continued curve is visited by neither sweep; with the isola every speed "
+         "of the band has a stable period-1 orbit (no grey band)."),
         ("figS47_ch06_diagram_fig44.png", "supplement S47", "Fig. 44's case (Fig. 40 x 100): the diagram is Fig. "
          "40's with every Poincare point times 100 (the model is homogeneous in the loads), under Fig. 44's own "
          "harmonic-balance branches; notice they match Fig. 40's x 100."),

@@ -9,16 +9,20 @@ amplitude (Delta_max - Delta_min)/2 beside the linear open / closed-mesh amplitu
 Dotted verticals: linear natural frequencies; the rug at the bottom: the contact state
 (figures/style.py). Grey bands: the ranges with no stable period-1 orbit (key numbers
 unstable_period1_*_<label>); the period-2 (and period-4) branches switched at the curve's period
-doublings in their own colours (rows of branch id > 0 in frc_<label>.csv). The deepest Delta_min off every natural frequency is pointed at as the
+doublings in their own colours (rows of branch id > 0 in frc_<label>.csv); a branch continued from a
+time-integrated orbit off the curve (key numbers orbit_branch_*_<label>, chapter step 3c) in its own
+style (brown, thicker), and then the grey bands are the ranges with no stable period-1 orbit on any
+period-1 branch (unstable_period1_*_all_branches_<label>). The deepest Delta_min off every natural frequency is pointed at as the
 mesh's bilinear mode (chapter README, reference/scripts/ch06_bilinear_modes.py).
 """
 import json
 import math
 
 from style import (read_params, BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
-                   NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, plot_branch,
-                   plot_doubled_branches, read_csv, rows_of, rug_room, save, shade_no_stable_period1,
-                   unstable_period1_ranges)
+                   ORBIT_BRANCH_COLOUR,
+                   NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, orbit_branches,
+                   plot_branch, plot_doubled_branches, plot_orbit_branches, read_csv, rows_of, rug_room, save,
+                   shade_no_stable_period1, unstable_period1_ranges)
 
 import matplotlib.pyplot as plt
 
@@ -71,13 +75,14 @@ def fold_window(data_dir, label, span):
     return (lo - pad) / 1e3, (hi + pad) / 1e3
 
 
-def delta_panel(ax, data_dir, label, full, w_open, w_closed):
-    """Delta_max, Delta_min, the period-doubled branches, the contact level, the contact rug
-    (period 1) and the bifurcations."""
+def delta_panel(ax, data_dir, label, full, w_open, w_closed, orbits=()):
+    """Delta_max, Delta_min, the period-doubled branches, the branches from time-integrated orbits
+    (`orbits`, orbit_branches), the contact level, the contact rug (period 1) and the bifurcations."""
     d = rows_of(full, 0)
     plot_branch(ax, d, "x_max", "C0", r"$\Delta_{max}$", x="w_k", scale=1e3)
     plot_branch(ax, d, "x_min", "C1", r"$\Delta_{min}$", x="w_k", scale=1e3)
-    plot_doubled_branches(ax, full, x="w_k", scale=1e3, entry_per_branch=False)
+    plot_doubled_branches(ax, full, x="w_k", scale=1e3, entry_per_branch=False, skip=[o[0] for o in orbits])
+    plot_orbit_branches(ax, full, orbits, x="w_k", scale=1e3, omega_scale=1e-3, unit="krad/s")
     kinds = mark_bifurcations(ax, data_dir, label, full)
     ax.axhline(0.0, **CONTACT_LEVEL)
     natural_lines(ax, w_open, w_closed)
@@ -117,11 +122,13 @@ def separation_note(d, params):
             "loads on a model without a back flank" % (gap, gap / rb, rb))
 
 
-def zoom_panel(az, a1, data_dir, label, full, d, zoom, w_open, w_closed):
-    """Delta on the folds' window, framed (dotted) on the whole curve above."""
-    delta_panel(az, data_dir, label, full, w_open, w_closed)
-    inside = [k for k, w in enumerate(d["w_k"]) if zoom[0] <= w <= zoom[1]]
-    ys = [d[y][k] * 1e3 for k in inside for y in ("x_max", "x_min")] + [0.0]
+def zoom_panel(az, a1, data_dir, label, full, d, zoom, w_open, w_closed, orbits=()):
+    """Delta on the folds' window, framed (dotted) on the whole curve above (its height: the
+    period-1 curve's and the orbit branches')."""
+    delta_panel(az, data_dir, label, full, w_open, w_closed, orbits)
+    ys = [0.0]
+    for b in [d] + [rows_of(full, o[0]) for o in orbits]:
+        ys += [b[y][k] * 1e3 for k, w in enumerate(b["w_k"]) if zoom[0] <= w <= zoom[1] for y in ("x_max", "x_min")]
     pad = 0.08 * (max(ys) - min(ys))
     az.set_xlim(*zoom)
     az.set_ylim(min(ys) - pad, max(ys) + pad)
@@ -130,11 +137,12 @@ def zoom_panel(az, a1, data_dir, label, full, d, zoom, w_open, w_closed):
     a1.axvspan(*zoom, fill=False, ec="0.3", ls=":", lw=0.9)   # framed: grey fill marks no stable period 1
 
 
-def amplitude_panel(a2, full, d, lin, s, w_open, w_closed):
+def amplitude_panel(a2, full, d, lin, s, w_open, w_closed, orbits=()):
     """The oscillating amplitude against the linear open and closed meshes (linear_*.csv is for
     Fa = 1e4: scaled by s)."""
     plot_branch(a2, d, "amp", "0.15", r"$(\Delta_{max} - \Delta_{min})/2$", x="w_k", scale=1e3)
-    plot_doubled_branches(a2, full, ys=("amp",), x="w_k", scale=1e3, entry_per_branch=False)
+    plot_doubled_branches(a2, full, ys=("amp",), x="w_k", scale=1e3, entry_per_branch=False, skip=[o[0] for o in orbits])
+    plot_orbit_branches(a2, full, orbits, ys=("amp",), x="w_k", scale=1e3, omega_scale=1e-3, unit="krad/s")
     a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_open"]], **LINEAR_OPEN,
                 label="linear, mesh open")
     a2.semilogy([w / 1e3 for w in lin["omega"]], [v * s * 1e3 for v in lin["delta_closed"]], **LINEAR_CLOSED,
@@ -158,13 +166,16 @@ def case_figure(data_dir, fig_dir, row, name):
     if "x_max_exact" in full:
         full["amp_exact"] = [(a - b) / 2 for a, b in zip(full["x_max_exact"], full["x_min_exact"])]
     d = rows_of(full, 0)
+    with open(data_dir / "key_numbers.json") as f:
+        kn = json.load(f)
+    orbits = orbit_branches(kn, "_" + label)
     p_span = max(d["omega"]) - min(d["omega"])
     zoom = fold_window(data_dir, label, p_span)
     rows = 3 if zoom else 2
     fig_, axes = plt.subplots(rows, 1, figsize=(7.6, 11.6 if zoom else 8.8),
                               gridspec_kw={"height_ratios": [1.2, 1.0, 0.9][:rows]})
     a1, a2 = axes[0], axes[-1]
-    kinds = delta_panel(a1, data_dir, label, full, w_open, w_closed)
+    kinds = delta_panel(a1, data_dir, label, full, w_open, w_closed, orbits)
     a1.set_xlim(min(d["w_k"]), max(d["w_k"]))
     rug_room(a1)
     a1.annotate(r"contact level $\Delta$ = 0 (teeth touch above)", (0.99, 0.0), xycoords=("axes fraction", "data"),
@@ -176,14 +187,14 @@ def case_figure(data_dir, fig_dir, row, name):
     a1.set_title("%s:\n$F_i$ = %g N m, F = %g [1,0,1,1,0,1] N, N m, $k_c$ = %g N/m%s"
                  % (what, row["Fi"], row["Fa"], row["kc"], separation_note(d, read_params(data_dir))), fontsize=9)
     if zoom:
-        zoom_panel(axes[1], a1, data_dir, label, full, d, zoom, w_open, w_closed)
-    amplitude_panel(a2, full, d, lin, row["Fa"] / 1e4, w_open, w_closed)
+        zoom_panel(axes[1], a1, data_dir, label, full, d, zoom, w_open, w_closed, orbits)
+    amplitude_panel(a2, full, d, lin, row["Fa"] / 1e4, w_open, w_closed, orbits)
     h1, _ = a1.get_legend_handles_labels()
     h2, _ = a2.get_legend_handles_labels()
     seen = set()
     handles = [h for h in h1 + h2 if not (h.get_label() in seen or seen.add(h.get_label()))]   # one entry per label
-    with open(data_dir / "key_numbers.json") as f:
-        ranges = unstable_period1_ranges(json.load(f), "_" + label)
+    every = "_all_branches_" + label   # with orbit branches: no stable period-1 orbit on any branch
+    ranges = unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
     handles += shade_no_stable_period1(axes, ranges, scale=1e-3, unit="krad/s")
     fig_.legend(handles=handles + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=2,
                 loc="lower center", framealpha=0.9)
@@ -232,21 +243,31 @@ def diagram_figure(data_dir, fig_dir, label, row):
     d = rows_of(band, 0)
     plot_branch(a1, d, "x_max", "0.15", r"HB period 1: $\Delta_{max}$, $\Delta_{min}$", x="w_k", scale=1e3)
     plot_branch(a1, d, "x_min", "0.15", None, x="w_k", scale=1e3)
-    plot_doubled_branches(a1, band, x="w_k", scale=1e3, entry_per_branch=False)
+    with open(data_dir / "key_numbers.json") as f:
+        kn = json.load(f)
+    orbits = orbit_branches(kn, "_" + label)
+    plot_doubled_branches(a1, band, x="w_k", scale=1e3, entry_per_branch=False, skip=[o[0] for o in orbits])
+    plot_orbit_branches(a1, band, orbits, x="w_k", scale=1e3, omega_scale=1e-3, unit="krad/s")
     a1.axhline(0.0, **CONTACT_LEVEL)
     a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
     handles = draw_hb_section(a2, inside(h), "w_k", "delta", scale=1e3)
+    for k, (bid, w, period) in enumerate(orbits, 1):   # the orbit branches' sections (period 1: chapter step 3c)
+        path = data_dir / ("orbit_branch_section_%s_%d.csv" % (label, k))
+        if path.exists():
+            hk = read_csv(path)
+            hk["w_k"] = [v / 1e3 for v in hk["omega"]]
+            handles += draw_hb_section(a2, inside(hk), "w_k", "delta", scale=1e3, colour=ORBIT_BRANCH_COLOUR,
+                                       label="HB branch %d at the same phase" % bid)
     handles += draw_poincare(a2, p, "w_k", "delta", scale=1e3, sweeps=("up", "down", "from_hb"))
     handles += mark_unresolved(a2, h, rows_of(full, 0), lo, hi, int(read_params(data_dir)["H"]))
     a2.set_ylabel(r"$\Delta$ at phase 0 of each forcing period [mm]")
     a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]")
     a2.set_xlim(lo, hi)
-    with open(data_dir / "key_numbers.json") as f:
-        ranges = unstable_period1_ranges(json.load(f), "_" + label)
+    every = "_all_branches_" + label   # with orbit branches: no stable period-1 orbit on any branch
+    ranges = unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
     handles += shade_no_stable_period1((a1, a2), [r for r in ranges if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
                                        scale=1e-3, unit="krad/s")
-    with open(data_dir / "key_numbers.json") as f:
-        scaled = json.load(f).get("diagram_scaled_by_" + label, {}).get("value")
+    scaled = kn.get("diagram_scaled_by_" + label, {}).get("value")
     how = ("time integration (GSL rk8pd,\nspeed stepped up then down, %d speeds each way)" % len(set(p["omega"]))
            if scaled is None else "time integration: the smaller-load\ncase's points x %g (homogeneous in the loads)"
            % scaled)

@@ -206,12 +206,13 @@ def branch_ids(d):
 PERIOD2_COLOURS = ["C2", "C4", "C9", "C8", "C6", "C5"]   # not red (the diagram draws chaos red), not C0 or C1 (period 1)
 
 
-def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True):
+def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True, skip=()):
     """The period-2 (and period-4) branches of a frequency-response table (its rows with branch
-    id > 0), each in its own colour (PERIOD2_COLOURS, repeated beyond seven), solid where stable
-    and dashed where not; one legend entry per branch, or (entry_per_branch False) one per period."""
+    id > 0, but the ids in `skip`: e.g. orbit branches, drawn by plot_orbit_branches), each in its
+    own colour (PERIOD2_COLOURS, repeated beyond seven), solid where stable and dashed where not;
+    one legend entry per branch, or (entry_per_branch False) one per period."""
     named = set()
-    for n, bid in enumerate(branch_ids(full)):
+    for n, bid in enumerate(b for b in branch_ids(full) if b not in skip):
         d2 = rows_of(full, bid)
         period = int(d2["period"][0]) if "period" in d2 else 2
         label = "period %d (branch %d): max, min over %d periods" % (period, bid, period)
@@ -222,6 +223,33 @@ def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0,
         for k, y in enumerate(ys):
             plot_branch(ax, d2, y, PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], x=x, scale=scale,
                         label=None if k else label)
+
+
+ORBIT_BRANCH_COLOUR = "#8c510a"   # brown: a branch continued from a time-integrated orbit (no period-2 colour, not red)
+
+
+def orbit_branches(kn, suffix=""):
+    """The branches a run continued from time-integrated orbits off its curve (key numbers
+    orbit_branches<suffix>, orbit_branch_id<suffix>_k, orbit_branch_omega<suffix>_k,
+    orbit_branch_period<suffix>_k): [(branch id, omega of the orbit, period)]; none where the run
+    did not write them."""
+    n = int(kn.get("orbit_branches" + suffix, {"value": 0})["value"])
+    get = lambda name, k: kn["%s%s_%d" % (name, suffix, k)]["value"]
+    return [(int(get("orbit_branch_id", k)), get("orbit_branch_omega", k), int(get("orbit_branch_period", k)))
+            for k in range(1, n + 1)]
+
+
+def plot_orbit_branches(ax, full, branches, ys=("x_max", "x_min"), x="omega", scale=1.0, omega_scale=1.0,
+                        unit="rad/s"):
+    """The branches of orbit_branches (rows of their ids in the frequency-response table full) in
+    their own style (ORBIT_BRANCH_COLOUR, thicker), solid where stable and dashed where not; one
+    legend entry each, saying from which orbit it was continued."""
+    for bid, w, period in branches:
+        d = rows_of(full, bid)
+        label = "period-%d branch %d, continued from the time-integrated\norbit at %.5g %s: max, min" % (
+            period, bid, w * omega_scale, unit)
+        for k, y in enumerate(ys):
+            plot_branch(ax, d, y, ORBIT_BRANCH_COLOUR, x=x, scale=scale, label=None if k else label, lw=2.0)
 
 
 def unstable_period1_ranges(kn, suffix=""):

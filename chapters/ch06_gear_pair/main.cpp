@@ -17,7 +17,8 @@
 //
 // The steps, in order (chapter README "Steps"): normal_modes, linear_responses,
 // frequency_responses (per case of the table: its curve, contact summary and
-// what it measures), time_integration_check, harmonic_convergence; own_case for
+// what it measures; its bifurcation diagram, bifurcation_diagram, and the branches through
+// the diagram's orbits off the curve, orbit_branches), time_integration_check, harmonic_convergence; own_case for
 // --case own.
 //
 // Sample runs:
@@ -44,6 +45,7 @@
 #include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
+#include "gearhb/hb/orbit_branch.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -96,6 +98,9 @@ struct CaseDiagram {
   int speeds = 0;
   const char* scaled_from = nullptr;
   const CaseDiagram* next = nullptr;   // a further band of the case (its points follow this band's)
+  // Continue an HB branch from each periodic orbit of the diagram that lies on none of the
+  // curve's branches (step 3c, hb/orbit_branch.hpp).
+  bool orbit_branches = false;
 };
 
 // Fig. 40's second band: its first unstable stretch above 11.6 krad/s (the Neimark-Sacker band
@@ -125,7 +130,7 @@ struct Case {
 // ~60 s CPU (README, step 3b).
 const std::vector<Case> kCases = {
     {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, &kFig40Above}},
-    {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41}},
+    {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41, nullptr, nullptr, true}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
     {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
     {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, "fig40"}},
@@ -224,6 +229,8 @@ class GearPairChapter {
                            const std::vector<PeriodDoubledBranch>& pd, std::map<std::string, BifurcationDiagram>& diagrams) const;
   BifurcationDiagram starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                                   const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d) const;
+  void orbit_branches(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                      const BifurcationDiagram& d, std::vector<PeriodDoubledBranch>& branches) const;
   void time_integration_check(Run& run) const;
   void period_doubled_orbit(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void period2_branch_check(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t pd, double omega,
@@ -383,8 +390,13 @@ void GearPairChapter::frequency_responses(Run& run) const {
     const FrequencyCurve& c = s.curve;
     const GearPairParameters g = gear(cs.mesh);
     const VectorXd T2 = gear_pair_T2(g);
-    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, s.doubled, T2, table_progress(run, c, cs.label)));
-    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, s.doubled));
+    std::vector<PeriodDoubledBranch> branches = s.doubled;   // and those through the diagram's off-curve orbits
+    if (cs.diagram.speeds > 0 && !run.quick()) {
+      bifurcation_diagram(run, cs, hb, c, s.doubled, diagrams);
+      if (cs.diagram.orbit_branches && diagrams.count(cs.label)) orbit_branches(run, cs, hb, c, diagrams[cs.label], branches);
+    }
+    run.write("frc_" + cs.label + ".csv", frequency_response_table(hb, c, branches, T2, table_progress(run, c, cs.label)));
+    run.write("bifurcations_" + cs.label + ".csv", bifurcation_table(c, branches));
     const ContactHistory h = contact_history(hb, c.branch, T2);
     const VectorXd F0 = gear_pair_static_torque(g, cs.load.Fi);
     const MatrixXd K = gear_pair_support_stiffness(g);
@@ -398,7 +410,6 @@ void GearPairChapter::frequency_responses(Run& run) const {
                    cell(std::isfinite(h.changed_hi), h.changed_hi), h.x_max, h.x_min});
     run.key_numbers().add("transitions_" + cs.label, h.transitions, "-");
     measure(run, cs, hb, c);
-    if (cs.diagram.speeds > 0 && !run.quick()) bifurcation_diagram(run, cs, hb, c, s.doubled, diagrams);
   }
   run.write("cases.csv", index);
 }
@@ -467,7 +478,7 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   run.say(cs.label + ": " + diagram_summary(d, [](double w) { return w; }, "rad/s"));
 }
 
-// Step 3c (every computed diagram): the time integration started on every stable HB orbit (period
+// Step 3b, its check from HB (every computed diagram): the time integration started on every stable HB orbit (period
 // 1 and the period-2 (4) branches) at a speed of the grid that no sweep reached, classified as the
 // sweeps' speeds (app diagram_from_hb_orbits): in Fig. 40's grazing region a stable period-1 orbit coexists
 // with the chaotic attractor the sweeps follow (README step 3b; tests/unit/test_fig40_grazing.cpp).
@@ -488,6 +499,161 @@ BifurcationDiagram GearPairChapter::starts_on_hb(Run& run, const Case& cs, const
   run.say(cs.label + ": stable HB orbits no sweep reached: " + std::to_string(s.points.size()) + " (" + os.str() +
           " rad/s); integrated from them: periodic at " + std::to_string(periodic));
   return s;
+}
+
+// The largest Floquet multiplier modulus of the integrated orbit of period p through (x0, v0) at
+// phase 0: the product of p GSL period maps' monodromy matrices (the variational equations on the
+// integrator, not the HB orbit's shooting on the exact flow).
+double integrated_multiplier(const HarmonicBalance& hb, const VectorXd& x0, const VectorXd& v0, double omega, int p,
+                             double x_scale) {
+  TimeIntegrationOptions o;
+  o.x_scale = x_scale;
+  VectorXd x = x0, v = v0, xT, vT;
+  MatrixXd M = MatrixXd::Identity(2 * x0.size(), 2 * x0.size()), Phi;
+  for (int k = 0; k < p; ++k) {
+    TimeIntegrator(hb).period_map(x, v, omega, o, xT, vT, Phi);
+    M = Phi * M;
+    x = xT, v = vT;
+  }
+  return M.eigenvalues().cwiseAbs().maxCoeff();
+}
+
+// Key numbers of orbit branch b (id `id`, suffix `tag`): where it starts, its span and swing of
+// Delta within the range (the largest swing on its stable points too), its stable stretches
+// (stable_intervals), its check against the orbit it starts from.
+void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const VectorXd& T2, const SweepOptions& o,
+                          const std::string& tag) {
+  const ResponseEvaluator ev(*b.model, T2, 256);
+  double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0, stable_swing = 0.0;
+  const auto& P = b.curve.branch.points;
+  for (std::size_t i = 0; i < P.size(); ++i) {
+    const double w = b.period * P[i].omega;
+    if (w < o.omega_min || w > o.omega_max) continue;
+    const ResponseSummary r = ev.summarize(P[i].X);
+    from = std::min(from, w), to = std::max(to, w);
+    lo = std::min(lo, r.x_min), hi = std::max(hi, r.x_max), swing = std::max(swing, r.x_max - r.x_min);
+    if (b.curve.stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
+  }
+  const Intervals st = stable_intervals(b.curve, b.period);
+  key.add("orbit_branch_stable_ranges" + tag, double(st.size()), "-");
+  for (std::size_t j = 0; j < st.size(); ++j) {
+    key.add("orbit_branch_stable_from_omega" + tag + "_" + std::to_string(j + 1), st[j].first, "rad/s");
+    key.add("orbit_branch_stable_to_omega" + tag + "_" + std::to_string(j + 1), st[j].second, "rad/s");
+  }
+  key.add("orbit_branch_stable_swing" + tag, stable_swing, "m");
+  key.add("orbit_branch_id" + tag, id, "-");
+  key.add("orbit_branch_period" + tag, b.period, "-");
+  key.add("orbit_branch_omega" + tag, b.omega, "rad/s");
+  key.add("orbit_branch_from_omega" + tag, from, "rad/s");
+  key.add("orbit_branch_to_omega" + tag, to, "rad/s");
+  key.add("orbit_branch_delta_min" + tag, lo, "m");
+  key.add("orbit_branch_delta_max" + tag, hi, "m");
+  key.add("orbit_branch_swing" + tag, swing, "m");
+  key.add("orbit_branch_hb_vs_time_integration" + tag, b.distance, "m");
+  key.add("orbit_branch_hb_error_bound" + tag, b.bound, "m");
+  key.add("orbit_branch_folds" + tag, double(b.curve.branch.folds.size()), "-");
+  key.add("orbit_branch_bifurcations" + tag, double(b.curve.bifurcations.size()), "-");
+}
+
+// Step 3c (issue 34): the HB branches through the diagram's periodic orbits that lie on none of
+// the curve's branches (the period-1 curve and its period-doubled branches; hb/orbit_branch.hpp
+// off_every_branch, tolerance the classifier's resolution period_tol x x_scale). From the first
+// such orbit (up sweep, then down, in speed order) branch_from_orbit solves HB from its Fourier
+// coefficients, checks it against the orbit within HB's own error and continues it both ways over
+// the sweep's range with the curve's SweepOptions (stability, bifurcations); an orbit on a branch
+// found so far starts none (at most 4 branches, 6 attempts). Each branch takes the next branch id in
+// frc_<label>.csv and bifurcations_<label>.csv. Key numbers (suffix _<label>; _<label>_<k> for
+// branch k): off_curve_orbits (diagram speeds of both sweeps off every branch of the curve),
+// off_curve_orbits_left (of those, off every branch with the new ones too), orbit_branches,
+// curve_swing (the continued curve's largest Delta_max - Delta_min, to compare), the
+// numbers of orbit_branch_numbers, orbit_branch_diagram_speeds (off-curve diagram speeds on
+// branch k: the time integration agrees with it there within HB's own error),
+// orbit_branch_stability_agrees (1 if at each of those speeds the branch's Floquet stability,
+// both ends of its chord, is that of the integrated orbit's GSL monodromy, a chord at a stability
+// change skipped, and at orbit_branch_unstable_checked (up to 3) unstable points spread over its
+// unstable stretches, which no sweep visits, the GSL monodromy from the orbit corrected by
+// shooting has a multiplier outside the unit circle too), and the ranges with no stable period-1 orbit on any period-1 branch,
+// unstable_period1_*_all_branches_<label>. A period-1 branch k also writes its section at phase 0
+// as bifurcation_diagram_hb_<label>.csv does the curve's: orbit_branch_section_<label>_<k>.csv.
+void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                     const BifurcationDiagram& d, std::vector<PeriodDoubledBranch>& branches) const {
+  const SweepOptions o = sweep(cs.mesh, sol_.omega_min, sol_.omega_max);
+  const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = BifurcationDiagramOptions{}.period_tol * xs;
+  const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
+  const std::vector<const DiagramPoint*> off = off_branch_orbits(d, branch_views(hb, c, branches), tol);
+  std::vector<OrbitBranch> found;
+  std::vector<BranchView> mine;
+  int left = 0, attempts = 0;
+  for (const DiagramPoint* p : off) {
+    if (!off_every_branch(*p, mine, tol)) continue;
+    if (found.size() >= 4 || attempts >= 6) {
+      ++left;
+      continue;
+    }
+    ++attempts;
+    OrbitBranch b = run.timed("orbit branch " + cs.label, [&] {
+      return branch_from_orbit(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, o);
+    });
+    run.say(cs.label + ": " + b.why);
+    if (!b.ok) {
+      ++left;
+      continue;
+    }
+    found.push_back(std::move(b));
+    mine.clear();
+    for (const auto& f : found) mine.push_back({f.model.get(), &f.curve, f.period});
+  }
+  KeyNumbers& key = run.key_numbers();
+  key.add("off_curve_orbits_" + cs.label, double(off.size()), "-");
+  key.add("off_curve_orbits_left_" + cs.label, double(left), "-");
+  key.add("orbit_branches_" + cs.label, double(found.size()), "-");
+  const ResponseEvaluator ev(hb, T2, 256);   // the continued curve's largest swing, to compare
+  double curve_swing = 0.0;
+  for (const auto& q : c.branch.points) {
+    const ResponseSummary r = ev.summarize(q.X);
+    curve_swing = std::max(curve_swing, r.x_max - r.x_min);
+  }
+  key.add("curve_swing_" + cs.label, curve_swing, "m");
+  Intervals stable = stable_intervals(c);
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const OrbitBranch& b = found[k];
+    const std::string tag = "_" + cs.label + "_" + std::to_string(k + 1);
+    branches.push_back(table_branch(b));
+    orbit_branch_numbers(key, b, int(branches.size()), T2, o, tag);
+    int on = 0, agree = 1;
+    const auto& st = b.curve.stable;
+    for (const DiagramPoint* p : off) {
+      if (p->n != b.period) continue;
+      const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p->x, p->n, p->omega);
+      if (!(bd.distance <= bd.bound + tol)) continue;
+      ++on;
+      if (st[std::size_t(bd.chord)] != st[std::size_t(bd.chord) + 1]) continue;
+      const bool attracts = integrated_multiplier(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, xs) < 1.0;
+      agree = agree && attracts == st[std::size_t(bd.chord)];
+    }
+    // the unstable stretches no diagram visits: at up to 3 unstable points spread over them (both
+    // neighbours unstable), the GSL monodromy from the point's orbit corrected by shooting
+    std::vector<std::size_t> unstable;
+    for (std::size_t i = 1; i + 1 < st.size(); ++i)
+      if (!st[i - 1] && !st[i] && !st[i + 1] && b.curve.floquet[i].corrected) unstable.push_back(i);
+    for (int j = 0; j < 3 && !unstable.empty(); ++j) {
+      const std::size_t i = unstable[unstable.size() * std::size_t(2 * j + 1) / 6];
+      const PointFloquet& f = b.curve.floquet[i];
+      agree = agree && integrated_multiplier(hb, f.x0, f.v0, b.period * b.curve.branch.points[i].omega, b.period, xs) > 1.0;
+    }
+    key.add("orbit_branch_unstable_checked" + tag, double(std::min<std::size_t>(3, unstable.size())), "-");
+    key.add("orbit_branch_diagram_speeds" + tag, on, "-");
+    key.add("orbit_branch_stability_agrees" + tag, agree, "-");
+    if (b.period == 1) {
+      const Intervals more = stable_intervals(b.curve);
+      stable.insert(stable.end(), more.begin(), more.end());
+      // its section at phase 0, to draw under the diagram's Poincare points
+      Table h(hb_section_columns({"omega"}, "delta"));
+      add_hb_section_rows(h, *b.model, b.curve, d, T2, 1.0, [](double w) { return std::vector<Table::Cell>{w}; });
+      run.write("orbit_branch_section_" + cs.label + "_" + std::to_string(k + 1) + ".csv", h);
+    }
+  }
+  add_unstable_period1_ranges(key, uncovered(o.omega_min, o.omega_max, stable), "_all_branches_" + cs.label);
 }
 
 // Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the

@@ -233,7 +233,10 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
 // false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
 // omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;
 // bifurcation_diagram_hb.csv: omega, period, branch, x at phase 0 of each forcing period of the
-// period-1 branch's and every period-2 (4) branch's orbits, stable, point: to draw beneath and check.
+// period-1 branch's and every period-2 (4) branch's orbits, stable, point: to draw beneath and check;
+// key numbers diagram_off_branch_period1, _period2: the speeds (both sweeps) whose orbit of period
+// 1 (2) lies on none of the HB branches of its period (the curve; its period-2 branches, none at
+// period_doubling depth 0; off_every_branch): HB branches the run has not found.
 void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                                     const std::vector<PeriodDoubledBranch>& pd) const {
   if (!model_.diagram.on) return;
@@ -262,6 +265,9 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");
   run.key_numbers().add("diagram_bands", double(bands.size()), "-");
+  // the diagram's orbits on none of the HB branches (a branch the run has not found; not yet
+  // continued here)
+  off_branch_key_numbers(run.key_numbers(), hb, c, pd, d, model_.diagram.options.period_tol, "");
   run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
 }
 

@@ -539,7 +539,9 @@ void GearPairFromFile::dynamics(Run& run) const {
 // stable period-1 orbit, padded to show period 1 on both sides; false (said in one line) where
 // there is none (every range stable, the key false) or the integration is stiff. Rows of
 // bifurcation_diagram.csv: the DTE at phase 0 of each mesh period, um, and the band (1, 2, ...);
-// bifurcation_diagram_hb.csv: the HB branches' (period 1 and the period-doubled ones, period and branch columns).
+// bifurcation_diagram_hb.csv: the HB branches' (period 1 and the period-doubled ones, period and branch
+// columns); key numbers diagram_off_branch_period1_<i>, _period2_<i>: its orbits on no HB branch of
+// their period (off_branch_key_numbers).
 bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
                                            BifurcationDiagram& d, Table& t, Table& hb_section) const {
   if (!file_.diagram.on) return false;
@@ -574,6 +576,7 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   });
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
   run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
+  off_branch_key_numbers(run.key_numbers(), hb, r.curve, r.doubled, d, file_.diagram.options.period_tol, "_" + n);
   run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));
   return true;
 }

@@ -28,6 +28,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "test_models.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -35,16 +36,7 @@ using Eigen::VectorXd;
 
 namespace {
 
-HarmonicBalance kahraman_singh(double Fa, int H = 20) {
-  LinearSystem s;
-  s.M = MatrixXd::Ones(1, 1);
-  s.C = 0.1 * s.M;
-  s.K = MatrixXd::Zero(1, 1);
-  UnilateralContact drive{VectorXd::Ones(1), 1.0, -1.0, VectorXd::Zero(2 * H + 1)};
-  UnilateralContact back = drive;
-  back.normal = -drive.normal;
-  return HarmonicBalance(s, {drive, back}, Excitation{VectorXd::Constant(1, 0.1), VectorXd::Constant(1, Fa), VectorXd::Zero(1)}, H);
-}
+using test_models::kahraman_singh;
 
 // The state (x, v) after `periods` forcing periods from (x, v) at phase 0, and the product of
 // the period maps' monodromy matrices (variational equations), at tight tolerances.

@@ -78,3 +78,23 @@ inline gearhb::SweepOptions nlvib_ex03_sweep(gearhb::StabilityMethod stability) 
 }
 
 }  // namespace test_models
+
+namespace test_models {
+
+// The Kahraman & Singh (1990) clearance oscillator, scaled: x'' + 0.1 x' + f(x) = 0.1 + Fa
+// cos(Omega t), f the dead zone of half-width 1 (two contacts of unit stiffness).
+inline gearhb::HarmonicBalance kahraman_singh(double Fa, int H = 20) {
+  using Eigen::MatrixXd;
+  using Eigen::VectorXd;
+  gearhb::LinearSystem s;
+  s.M = MatrixXd::Ones(1, 1);
+  s.C = 0.1 * s.M;
+  s.K = MatrixXd::Zero(1, 1);
+  gearhb::UnilateralContact drive{VectorXd::Ones(1), 1.0, -1.0, VectorXd::Zero(2 * H + 1)};
+  gearhb::UnilateralContact back = drive;
+  back.normal = -drive.normal;
+  return gearhb::HarmonicBalance(
+      s, {drive, back}, gearhb::Excitation{VectorXd::Constant(1, 0.1), VectorXd::Constant(1, Fa), VectorXd::Zero(1)}, H);
+}
+
+}  // namespace test_models

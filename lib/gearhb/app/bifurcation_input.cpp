@@ -331,6 +331,33 @@ BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const F
   return run.timed(step, [&] { return diagram_from(run, hb, c, std::size_t(lowest - P.begin()), lo, hi, o, label); });
 }
 
+std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                     const std::vector<PeriodDoubledBranch>& pd) {
+  std::vector<BranchView> v{{&hb, &c, 1}};
+  for (const auto& b : pd)
+    if (has_points(b)) v.push_back({b.model.get(), &b.curve, b.period});
+  return v;
+}
+
+std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
+                                                   double tol) {
+  std::vector<const DiagramPoint*> off;
+  for (const DiagramPoint& p : d.points)
+    if (off_every_branch(p, views, tol)) off.push_back(&p);
+  return off;
+}
+
+void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
+                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
+                            const std::string& suffix) {
+  const double tol = period_tol * c.scaling.x.cwiseAbs().maxCoeff();   // diagram_of_bands' x_scale
+  double off1 = 0.0, off2 = 0.0;
+  for (const DiagramPoint* p : off_branch_orbits(d, branch_views(hb, c, pd), tol))
+    (p->n == 1 ? off1 : off2) += p->n <= 2 ? 1.0 : 0.0;
+  key.add("diagram_off_branch_period1" + suffix, off1, "-");
+  key.add("diagram_off_branch_period2" + suffix, off2, "-");
+}
+
 std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std::function<double(double)>& speed,
                                const std::string& unit) {
   std::string text = "bifurcation diagram over " + std::to_string(bands.size()) + (bands.size() == 1 ? " band: " : " bands: ");

@@ -31,6 +31,7 @@
 #include "gearhb/app/study.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "gearhb/hb/orbit_branch.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
@@ -148,6 +149,24 @@ std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);
+
+// The branches a diagram orbit is compared with (hb/orbit_branch.hpp): the curve c of hb (period
+// 1) and each branch of pd with points (its model, its period).
+std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                     const std::vector<PeriodDoubledBranch>& pd);
+// The periodic points of d that lie on none of `views` (off_every_branch), in d's order; tol: the
+// classifier's resolution, period_tol x the integration's x_scale (diagram_of_curve's: the
+// curve's largest DOF scale).
+std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
+                                                   double tol);
+// Key numbers diagram_off_branch_period1<suffix>, diagram_off_branch_period2<suffix>: the speeds
+// (both sweeps) of d whose orbit of period 1 (2) lies on none of the HB branches of its period
+// (the curve c of hb; the period-2 branches of pd), tol as off_branch_orbits with the diagram's
+// period_tol: an HB branch the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig.
+// 41's, hb/orbit_branch.hpp branch_from_orbit).
+void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
+                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
+                            const std::string& suffix);
 
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
 // frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning

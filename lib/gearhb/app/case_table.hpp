@@ -60,17 +60,21 @@ inline FrequencyCurve timed_sweep(Run& run, const HarmonicBalance& hb, SweepOpti
   return c;
 }
 
-// The ranges of [omega_min, omega_max] with no stable period-1 orbit on c (issue 34 §4; the
-// figures shade them): key numbers unstable_period1_ranges<suffix> and, for each range k,
+// Ranges with no stable period-1 orbit (`gaps`, e.g. of the stable intervals of several period-1
+// branches together): key numbers unstable_period1_ranges<suffix> and, for each range k,
 // unstable_period1_from_omega<suffix>_k, unstable_period1_to_omega<suffix>_k.
-inline void add_unstable_period1_ranges(KeyNumbers& key, const FrequencyCurve& c, double omega_min, double omega_max,
-                                        const std::string& suffix = "") {
-  const Intervals gaps = uncovered(omega_min, omega_max, stable_intervals(c));
+inline void add_unstable_period1_ranges(KeyNumbers& key, const Intervals& gaps, const std::string& suffix) {
   key.add("unstable_period1_ranges" + suffix, double(gaps.size()), "-");
   for (std::size_t k = 0; k < gaps.size(); ++k) {
     key.add("unstable_period1_from_omega" + suffix + "_" + std::to_string(k + 1), gaps[k].first, "rad/s");
     key.add("unstable_period1_to_omega" + suffix + "_" + std::to_string(k + 1), gaps[k].second, "rad/s");
   }
+}
+// The ranges of [omega_min, omega_max] with no stable period-1 orbit on c (issue 34 §4; the
+// figures shade them), as above.
+inline void add_unstable_period1_ranges(KeyNumbers& key, const FrequencyCurve& c, double omega_min, double omega_max,
+                                        const std::string& suffix = "") {
+  add_unstable_period1_ranges(key, uncovered(omega_min, omega_max, stable_intervals(c)), suffix);
 }
 
 // A frequency-response curve and the period-doubled branches switched at its period doublings.
