@@ -63,6 +63,14 @@ void map_periods(const TimeIntegrator& ti, double omega, int periods, VectorXd& 
   }
 }
 
+// HB's period-1 curve of the oscillator over Omega = 0.3 .. 2 (default sweep options).
+FrequencyCurve curve_0_3_to_2(const HarmonicBalance& hb) {
+  SweepOptions so;
+  so.omega_min = 0.3;
+  so.omega_max = 2.0;
+  return sweep_frequency(hb, so, "clearance oscillator F_a 0.5");
+}
+
 }  // namespace
 
 // HB's stable period-1 orbits (H = 20) under the Poincare points, Omega = 0.45 .. 0.85 in steps
@@ -72,10 +80,7 @@ void map_periods(const TimeIntegrator& ti, double omega, int periods, VectorXd& 
 // different orbit or a period-2 split would be off by 0.1 or more.
 TEST(BifurcationDiagram, StablePeriod1HbOrbitLiesOnThePoincarePoints) {
   const HarmonicBalance hb = kahraman_singh(0.5);
-  SweepOptions so;
-  so.omega_min = 0.3;
-  so.omega_max = 2.0;
-  const FrequencyCurve c = sweep_frequency(hb, so, "clearance oscillator F_a 0.5");
+  const FrequencyCurve c = curve_0_3_to_2(hb);
   ASSERT_TRUE(c.complete) << c.failure;
   // The HB orbits at omega, stable at both ends of the branch segment bracketing omega, each
   // solved at omega exactly: their x at phase 0.
@@ -352,16 +357,12 @@ TEST(BifurcationDiagram, Fig41IntegratedLargeOrbitIsAStableHbOrbit) {
 // band end where HB's period-1 orbit is stable (Omega = 1.98, period 1 again from 1.95) it is a
 // periodic orbit of the equations, checked by time integration (one period at tight tolerances
 // returns to it within 2e-4 gap units, HB's truncation at H = 20 as above (measured 2.9e-7 in x,
-// 3.6e-6 in v / Omega; largest multiplier 0.85), while the chaos or a
-// period-2 orbit nearby is off by 0.1 or more) and attracting (the period map's multipliers inside
-// the unit circle); where no stable orbit brackets the end (Omega = 1.25, the chaotic stretch)
+// 3.6e-6 in v / Omega), while the chaos or a period-2 orbit nearby is off by 0.1 or more) and
+// attracting (the period map's multipliers inside the unit circle; measured largest 0.85); where no stable orbit brackets the end (Omega = 1.25, the chaotic stretch)
 // it sets none and clears a start given before.
 TEST(BifurcationDiagram, DownSweepStartIsTheStableOrbitAtTheBandEnd) {
   const HarmonicBalance hb = kahraman_singh(0.5);
-  SweepOptions so;
-  so.omega_min = 0.3;
-  so.omega_max = 2.0;
-  const FrequencyCurve c = sweep_frequency(hb, so, "clearance oscillator F_a 0.5");
+  const FrequencyCurve c = curve_0_3_to_2(hb);
   ASSERT_TRUE(c.complete) << c.failure;
   BifurcationDiagramOptions o;
   const double w = 1.98;
