@@ -14,6 +14,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/gears/sets/planetary_mesh.hpp"
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
@@ -143,29 +144,67 @@ static void BM_planetary_teeth_floquet_point(benchmark::State& state) {
 }
 BENCHMARK(BM_planetary_teeth_floquet_point)->Arg(1310)->Arg(1400)->Arg(1490)->Unit(benchmark::kMillisecond);
 
-// The example's bifurcation diagram by time integration (gearhb_planetary's step: its band, the
-// range with no stable period-1 orbit padded and clipped, diagram_bands; the example file's
-// options, 2 speeds a sweep) from the HB orbit at the band's start: the cost of the step; and the
-// set's defaults (planetary_diagram_defaults, planetary_diagram_speeds) over the same band.
-static void planetary_diagram(benchmark::State& state, bool file_options) {
-  const PlanetaryFile f = pd_example();
-  const HarmonicBalance hb = planetary_response_model(f);
-  const SweepOptions o = planetary_sweep_options(f);
-  const FrequencyCurve c = planetary_response_with_stability(hb, o, "bench");
-  const std::vector<DiagramBand> bands =
-      diagram_bands(c, o.omega_min, o.omega_max, hb.dofs(), planetary_diagram_bands(), 1);
-  if (bands.empty()) return state.SkipWithError("no band");
-  BifurcationDiagramOptions opt = file_options ? f.diagram : planetary_diagram_defaults();
-  if (!file_options) opt.speeds = planetary_diagram_speeds((bands[0].omega_hi - bands[0].omega_lo) / (2.0 * M_PI));
-  opt.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
-  Eigen::VectorXd x0, v0;
-  hb_initial_state(hb, c.branch.points.front().X, c.branch.points.front().omega, x0, v0);
-  for (auto _ : state) {
-    const BifurcationDiagram d = bifurcation_diagram(hb, bands[0].omega_lo, bands[0].omega_hi, x0, v0, opt);
-    state.counters["speeds"] = double(d.points.size());
+// A planetary file's diagram as gearhb_planetary's step sets it up: the model, its curve with
+// the stability, the first band (the range with no stable period-1 orbit padded and clipped,
+// diagram_bands), the file's diagram options (x_scale the curve's) and the HB orbit at the
+// curve's first point, the up sweep's start.
+struct DiagramCase {
+  explicit DiagramCase(const PlanetaryFile& file)
+      : f(file), hb(planetary_response_model(f)), o(planetary_sweep_options(f)),
+        c(planetary_response_with_stability(hb, o, "bench")),
+        bands(diagram_bands(c, o.omega_min, o.omega_max, hb.dofs(), planetary_diagram_bands(), 1)), opt(f.diagram) {
+    opt.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+    hb_initial_state(hb, c.branch.points.front().X, c.branch.points.front().omega, x0, v0);
   }
+  BifurcationDiagram run() const { return bifurcation_diagram(hb, bands[0].omega_lo, bands[0].omega_hi, x0, v0, opt); }
+  PlanetaryFile f;
+  HarmonicBalance hb;
+  SweepOptions o;
+  FrequencyCurve c;
+  std::vector<DiagramBand> bands;
+  BifurcationDiagramOptions opt;
+  Eigen::VectorXd x0, v0;
+};
+
+// The example's bifurcation diagram by time integration (the example file's options, 2 speeds a
+// sweep) from the HB orbit at the band's start: the cost of the step; and the set's defaults
+// (planetary_diagram_defaults, planetary_diagram_speeds) over the same band.
+static void planetary_diagram(benchmark::State& state, bool file_options) {
+  DiagramCase d(pd_example());
+  if (d.bands.empty()) return state.SkipWithError("no band");
+  if (!file_options) {
+    const double x_scale = d.opt.integration.x_scale;
+    d.opt = planetary_diagram_defaults();
+    d.opt.integration.x_scale = x_scale;
+    d.opt.speeds = planetary_diagram_speeds((d.bands[0].omega_hi - d.bands[0].omega_lo) / (2.0 * M_PI));
+  }
+  for (auto _ : state) state.counters["speeds"] = double(d.run().points.size());
 }
 static void BM_planetary_diagram_example(benchmark::State& state) { planetary_diagram(state, true); }
 BENCHMARK(BM_planetary_diagram_example)->Unit(benchmark::kSecond)->Iterations(1);
 static void BM_planetary_diagram_defaults(benchmark::State& state) { planetary_diagram(state, false); }
 BENCHMARK(BM_planetary_diagram_defaults)->Unit(benchmark::kSecond)->Iterations(1);
+
+// The diagram of CTest planetary.diagram.run (tests/data/planetary_diagram/: one band, 2 speeds
+// a sweep, the file's options) as gearhb_planetary runs it: up from the HB orbit nearest the
+// band's start, down from the stable HB orbit at its end on a second thread (set_down_start).
+// Counters per speed (u0 u1 up, d0 d1 down, in sweep order): the transient periods discarded
+// (t_), 1 where periodic by shooting (s_), the Lyapunov periods (l_); Arg: transient_periods.
+static void BM_planetary_diagram_check_case(benchmark::State& state) {
+  DiagramCase c(read_planetary_file(
+      std::string(GEARHB_SOURCE_DIR) + "/tests/data/planetary_diagram/lin_parker_1999_loaded_above_pd.json", {}));
+  if (c.bands.empty()) return state.SkipWithError("no band");
+  c.opt.transient_periods = int(state.range(0));
+  set_down_start(c.hb, c.c, c.bands[0].omega_hi, c.opt);
+  for (auto _ : state) {
+    const BifurcationDiagram d = c.run();
+    for (std::size_t k = 0; k < d.points.size(); ++k) {
+      const DiagramPoint& p = d.points[k];
+      const std::string id = (p.up ? "u" : "d") + std::to_string(p.up ? k : k - d.points.size() / 2);
+      state.counters["t_" + id] = p.transient;
+      state.counters["s_" + id] = p.by_shooting ? 1.0 : 0.0;
+      state.counters["l_" + id] = p.lyapunov_periods;
+    }
+  }
+}
+BENCHMARK(BM_planetary_diagram_check_case)->Arg(300)->Unit(benchmark::kSecond)->Iterations(1);

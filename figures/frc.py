@@ -77,7 +77,7 @@ def diagram_figure(d_dir, model, p, h):
     labels = {}
     for ax, sweep in zip(axes, ("up", "down")):
         for hd in poincare_panel(ax, p, h, model["output"]["direction"], (sweep,),
-                                 "sweep %s (each speed starts from the previous speed's final state)" % sweep):
+                                 "sweep %s (each speed but its first from the previous speed's final state)" % sweep):
             labels.setdefault(hd.get_label(), hd)
     axes[-1].set_xlim(lo, hi)
     for ax in axes:

@@ -198,8 +198,8 @@ def diagram_figure(d_dir, params, torques, diagram):
     for ax in grid[-1]:
         ax.set_xlim(lo, hi)
         ax.set_xlabel("speed of gear 1 n1 [rpm]")
-    fig.suptitle("%s: bifurcation diagram by time integration\n(each speed starts from the previous speed's "
-                 "final state; the DTE once per mesh period, at phase 0)" % params.get("name", "gear pair"),
+    fig.suptitle("%s: bifurcation diagram by time integration\n(each speed but a sweep's first starts from the "
+                 "previous speed's final state; the DTE once per mesh period, at phase 0)" % params.get("name", "gear pair"),
                  fontsize=9)
     fig.legend(handles=list(labels.values()), fontsize=7, loc="lower center", ncol=3, frameon=False)
     fig.tight_layout(rect=(0, 0.09, 1, 0.97))

@@ -171,7 +171,7 @@ def diagram_figure(d_dir, params, diagram):
     fig, axes = plt.subplots(2, 1, figsize=(7.4, 7.0), sharex=True)
     labels = {}
     for ax, sweep in zip(axes, ("up", "down")):
-        for hd in diagram_panel(ax, p, h, (sweep,), "sweep %s (each speed starts from the previous speed's final state)"
+        for hd in diagram_panel(ax, p, h, (sweep,), "sweep %s (each speed but its first from the previous speed's final state)"
                                 % sweep):
             labels.setdefault(hd.get_label(), hd)
     lo, hi = min(p["f_mesh_hz"]), max(p["f_mesh_hz"])

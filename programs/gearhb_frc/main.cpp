@@ -228,7 +228,8 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
 }
 
 // Step 3c: the diagram by time integration (app/bifurcation_input.hpp), up then down over each
-// band of the file's bifurcation_diagram key - by default each range with no stable period-1
+// band of the file's bifurcation_diagram key (down from the stable HB orbit at the band's upper end
+// where there is one, on a second thread: set_down_start) - by default each range with no stable period-1
 // orbit, padded to show period 1 on both sides; none where every range is stable or the key is
 // false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
 // omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;

@@ -535,7 +535,8 @@ void GearPairFromFile::dynamics(Run& run) const {
 }
 
 // The diagram by time integration of torque i (app/bifurcation_input.hpp) into d, up then down
-// over each band of the file's bifurcation_diagram key - by default each speed range with no
+// over each band of the file's bifurcation_diagram key (down from the stable HB orbit at the
+// band's upper end where there is one, on a second thread: set_down_start) - by default each speed range with no
 // stable period-1 orbit, padded to show period 1 on both sides; false (said in one line) where
 // there is none (every range stable, the key false) or the integration is stiff. Rows of
 // bifurcation_diagram.csv: the DTE at phase 0 of each mesh period, um, and the band (1, 2, ...);
@@ -668,15 +669,7 @@ void GearPairFromFile::spectrum_and_history(const HarmonicBalance& hb, std::size
     }
 }
 
-BearingSupport GearPairFromFile::bearings() const {
-  BearingSupport b;
-  for (int i = 0; i < 2; ++i) b.mass[i] = file_.gear[i].mass, b.stiffness[i] = file_.gear[i].bearing_stiffness;
-  b.zeta = file_.dynamics.bearing_zeta;
-  b.pressure_angle = file_.pair.path().mesh.pressure_angle;
-  if (!file_.helical.double_helical) b.helix_tan = std::tan(file_.helical.base_helix_angle());   // 0 for spur
-  for (int i = 0; i < 2; ++i) b.axial_stiffness[i] = file_.gear[i].axial_bearing_stiffness;
-  return b;
-}
+BearingSupport GearPairFromFile::bearings() const { return gear_file_bearings(file_); }
 
 std::string GearPairFromFile::torque_label(std::size_t i) const {
   char label[48];

@@ -388,8 +388,9 @@ Eigen::VectorXd poincare_coordinate(const HarmonicBalance& hb) {
 // Step 4b (issue 34 section 3; with response.stability, unless bifurcation_diagram is false): the
 // bifurcation diagram by time integration (hb/bifurcation_diagram.hpp; app/bifurcation_input.hpp
 // diagram_of_curve) over each band of diagram_bands (planetary_diagram_bands: the ranges with no
-// stable period-1 orbit, padded), up then down, from the HB orbit of the curve nearest the band's
-// start; speeds planetary_diagram_speeds(band width) unless the file's key gives them. Skipped with
+// stable period-1 orbit, padded), up from the HB orbit of the curve nearest the band's start,
+// down from the stable HB orbit at its end where there is one (set_down_start; else from the up
+// sweep's end); speeds planetary_diagram_speeds(band width) unless the file's key gives them. Skipped with
 // one line where the integration is stiff (fastest rate x period > 1e4, gearhb_frc's rule). Key
 // numbers diagram_bands, diagram_<motion>_speeds, diagram_max_period; one line per band.
 void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const SweepOptions& o,
@@ -410,6 +411,7 @@ void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& 
     const double lo = bands[k].omega_lo, hi = bands[k].omega_hi;
     BifurcationDiagramOptions opt = file_.diagram;
     opt.speeds = bands[k].speeds;
+    set_down_start(hb, r.curve, hi, opt);   // the down sweep from the stable orbit at hi, if any
     FrequencyCurve start = r.curve;   // diagram_of_curve starts from its lowest point: the one nearest lo
     start.branch.points = {*std::min_element(P.begin(), P.end(), [lo = lo](const BranchPoint& a, const BranchPoint& b) {
       return std::abs(a.omega - lo) < std::abs(b.omega - lo);

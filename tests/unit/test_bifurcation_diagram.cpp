@@ -22,6 +22,7 @@
 #include <gtest/gtest.h>
 
 #include "gearhb/hb/bifurcation_diagram.hpp"
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/core/newton.hpp"
 #include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/floquet.hpp"
@@ -54,6 +55,14 @@ void map_periods(const TimeIntegrator& ti, double omega, int periods, VectorXd& 
   }
 }
 
+// HB's period-1 curve of the oscillator over Omega = 0.3 .. 2 (default sweep options).
+FrequencyCurve curve_0_3_to_2(const HarmonicBalance& hb) {
+  SweepOptions so;
+  so.omega_min = 0.3;
+  so.omega_max = 2.0;
+  return sweep_frequency(hb, so, "clearance oscillator F_a 0.5");
+}
+
 }  // namespace
 
 // HB's stable period-1 orbits (H = 20) under the Poincare points, Omega = 0.45 .. 0.85 in steps
@@ -63,10 +72,7 @@ void map_periods(const TimeIntegrator& ti, double omega, int periods, VectorXd& 
 // different orbit or a period-2 split would be off by 0.1 or more.
 TEST(BifurcationDiagram, StablePeriod1HbOrbitLiesOnThePoincarePoints) {
   const HarmonicBalance hb = kahraman_singh(0.5);
-  SweepOptions so;
-  so.omega_min = 0.3;
-  so.omega_max = 2.0;
-  const FrequencyCurve c = sweep_frequency(hb, so, "clearance oscillator F_a 0.5");
+  const FrequencyCurve c = curve_0_3_to_2(hb);
   ASSERT_TRUE(c.complete) << c.failure;
   // The HB orbits at omega, stable at both ends of the branch segment bracketing omega, each
   // solved at omega exactly: their x at phase 0.
@@ -337,4 +343,32 @@ TEST(BifurcationDiagram, Fig41IntegratedLargeOrbitIsAStableHbOrbit) {
   EXPECT_LT(fr.modulus, 1.0);
   const VectorXd dh = ResponseEvaluator(hb, T2, 256).history(X);
   EXPECT_LE((dh - d).cwiseAbs().maxCoeff(), T2.cwiseAbs().sum() * fr.orbit_error);
+}
+
+// The down sweep's start (app/bifurcation_input.hpp set_down_start) on the same oscillator: at a
+// band end where HB's period-1 orbit is stable (Omega = 1.98, period 1 again from 1.95) it is a
+// periodic orbit of the equations, checked by time integration (one period at tight tolerances
+// returns to it within 2e-4 gap units, HB's truncation at H = 20 as above (measured 2.9e-7 in x,
+// 3.6e-6 in v / Omega), while the chaos or a period-2 orbit nearby is off by 0.1 or more) and
+// attracting (the period map's multipliers inside the unit circle; measured largest 0.85); where no stable orbit brackets the end (Omega = 1.25, the chaotic stretch)
+// it sets none and clears a start given before.
+TEST(BifurcationDiagram, DownSweepStartIsTheStableOrbitAtTheBandEnd) {
+  const HarmonicBalance hb = kahraman_singh(0.5);
+  const FrequencyCurve c = curve_0_3_to_2(hb);
+  ASSERT_TRUE(c.complete) << c.failure;
+  BifurcationDiagramOptions o;
+  const double w = 1.98;
+  ASSERT_TRUE(set_down_start(hb, c, w, o));
+  ASSERT_EQ(o.down_x0.size(), 1);
+  ASSERT_EQ(o.down_v0.size(), 1);
+  VectorXd x = o.down_x0, v = o.down_v0;
+  MatrixXd M;
+  map_periods(TimeIntegrator(hb), w, 1, x, v, M);
+  EXPECT_LT(std::abs(x[0] - o.down_x0[0]), 2e-4);
+  EXPECT_LT(std::abs(v[0] - o.down_v0[0]) / w, 2e-4);
+  Eigen::EigenSolver<MatrixXd> es(M);
+  EXPECT_LT(es.eigenvalues().cwiseAbs().maxCoeff(), 1.0);
+  EXPECT_FALSE(set_down_start(hb, c, 1.25, o));
+  EXPECT_EQ(o.down_x0.size(), 0);
+  EXPECT_EQ(o.down_v0.size(), 0);
 }

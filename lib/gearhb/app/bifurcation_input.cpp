@@ -57,10 +57,14 @@ BifurcationDiagramInput read_bifurcation_diagram(const nlohmann::json& root, con
   return in;
 }
 
+int diagram_speed_cap(const DiagramBandOptions& o, int dofs) {
+  return std::max(1, int(o.budget_s / (o.speed_s + o.speed_dof_s * std::max(dofs, 1))));
+}
+
 std::vector<DiagramBand> diagram_bands(const FrequencyCurve& c, double omega_min, double omega_max, int dofs,
                                        const DiagramBandOptions& o, int speeds) {
   const int n = std::max(dofs, 1), floor = std::max(o.least, o.floor / n);
-  const double cap = std::max(1.0, double(o.cap) / n);
+  const double cap = diagram_speed_cap(o, n);
   const double full = omega_max - omega_min;
   std::vector<DiagramBand> bands;
   for (const auto& [a, b] : uncovered(omega_min, omega_max, stable_intervals(c))) {
@@ -117,8 +121,10 @@ std::string bifurcation_diagram_help() {
          "                        on either side, clipped to the range, overlapping bands merged; speeds per sweep " +
          num(b.density) + " x band / range,\n"
          "                        at least " + std::to_string(b.floor) + " / n a band (n the DOFs; at least " +
-         std::to_string(b.least) + "), at most " + std::to_string(b.cap) +
-         " / n over all bands; none where every range is stable.\n"
+         std::to_string(b.least) + "), at most " + num(b.budget_s) + " s / (" + num(b.speed_s) + " + " +
+         num(b.speed_dof_s) + " n) s\n"
+         "                        over all bands (a CPU budget over one speed's cost: " + std::to_string(diagram_speed_cap(b, 1)) +
+         " speeds for one DOF, " + std::to_string(diagram_speed_cap(b, 6)) + " for six); none where every range is stable.\n"
          "                        false: none. An object: range (\"unstable\": those bands, default; \"whole\": the whole range, speeds " +
          std::to_string(d.speeds) + "), margin,\n"
          "                        speeds (per sweep of each band, up then down), transient_periods (" +
@@ -298,6 +304,20 @@ BifurcationDiagram diagram_from(Run& run, const HarmonicBalance& hb, const Frequ
 
 }  // namespace
 
+bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, BifurcationDiagramOptions& o) {
+  o.down_x0.resize(0);
+  o.down_v0.resize(0);
+  const auto& P = c.branch.points;
+  for (std::size_t i = std::min(P.size(), c.stable.size()); i-- > 1;) {
+    if ((P[i - 1].omega - hi) * (P[i].omega - hi) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+    Eigen::VectorXd X = std::abs(P[i].omega - hi) <= std::abs(P[i - 1].omega - hi) ? P[i].X : P[i - 1].X;
+    if (!newton_solve(hb, X, hi, c.scaling).converged) continue;
+    hb_initial_state(hb, X, hi, o.down_x0, o.down_v0);
+    return true;
+  }
+  return false;
+}
+
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label) {
@@ -315,6 +335,7 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
       for (std::size_t i = 1; i < P.size(); ++i)
         if (better(i, start)) start = i;
       o.speeds = b.speeds;
+      set_down_start(hb, c, b.omega_hi, o);
       BifurcationDiagram d = diagram_from(run, hb, c, start, b.omega_lo, b.omega_hi, o, label);
       all.points.insert(all.points.end(), std::make_move_iterator(d.points.begin()),
                         std::make_move_iterator(d.points.end()));

@@ -41,20 +41,30 @@ namespace gearhb {
 // side, so that the diagram shows the period-1 motion on both sides, and clipped to [omega_min,
 // omega_max]; padded ranges that overlap become one band. Speeds per sweep of a band: density x
 // its width / (omega_max - omega_min), at least floor / n (n the model's DOFs, and at least
-// `least`); where the bands together would take more than cap / n, each is scaled down to its
-// share of it, still at least that floor (so bands x floor bounds the cost when there are many).
-// Why per DOF: one speed of one sweep (a transient, 64 Poincare points, a Lyapunov exponent where
-// not periodic) cost 30-110 ms for one or two DOFs and 280-350 ms for six on the examples (the
-// loaded 2-core machine), about in proportion to n; the cap keeps a diagram to a few seconds
-// (the measured costs: gearhb_frc's README, gearhb_gear's NOTES).
+// `least`); where the bands together would take more than the cost cap, each is scaled down to
+// its share of it, still at least that floor (so bands x floor bounds the cost when there are
+// many). The cost cap (speeds per sweep over all bands) is a time budget over the cost of one
+// speed: budget_s / (speed_s + speed_dof_s n). One speed of one sweep (the transient, 64 Poincare
+// points, 200 Lyapunov periods with one tangent vector where not periodic; the library's
+// defaults) cost 27.5 ms of CPU for the one-DOF light-load gear and 55 ms for its five-DOF
+// bearing model (gearhb_bench --benchmark_filter=speed_cost, 2468-6000 rpm at 20 N m, 8 speeds
+// a sweep, the loaded 2-core machine): about 20 ms + 7 ms a DOF, far from the old 300 ms for six
+// DOFs (when the Lyapunov exponent carried the whole monodromy), so the cap no longer falls as
+// 1 / n. The budget, 1.1 s of one core a sweep (the two sweeps run at once on two threads where
+// the down sweep starts from HB: set_down_start), keeps the one-DOF cap at the 40 speeds it had
+// and gives five DOFs 19 instead of 8, six 16 instead of 6.7.
 struct DiagramBandOptions {
   double margin = 0.25;       // of the range's width, on either side
   double min_margin = 0.02;   // of the whole range, on either side (a narrow range still shows its sides)
   double density = 300.0;     // speeds per sweep over the whole range's width
   int floor = 12;             // fewest speeds per sweep of a band, for one DOF (divided by n)
   int least = 4;              // ... and never fewer
-  int cap = 40;               // most speeds per sweep of all bands together, for one DOF (divided by n)
+  double budget_s = 1.1;      // CPU seconds per sweep of all bands together: the cost cap
+  double speed_s = 0.020;     // one speed's cost: speed_s + speed_dof_s n [s] (measured, above)
+  double speed_dof_s = 0.0075;
 };
+// The cost cap of a model of `dofs` DOFs: most speeds per sweep over all bands (at least 1).
+int diagram_speed_cap(const DiagramBandOptions& o, int dofs);
 
 struct DiagramBand {
   double omega_lo = 0.0, omega_hi = 0.0;   // rad/s
@@ -143,9 +153,19 @@ std::vector<DiagramBand> input_bands(const BifurcationDiagramInput& in, const Fr
 // (about 2000 rk8pd steps a period; chapter 6's rule).
 std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
 
+// The down sweep's start at a band's upper end hi (BifurcationDiagramOptions::down_x0, down_v0:
+// the down sweep then runs on a second thread, from the attractor that exists above): the HB
+// orbit at hi on the last segment of c, in continuation order, that brackets hi and is stable
+// at both ends (solved at hi by Newton from the segment's end, as add_hb_section_rows does; the
+// last: where stable orbits coexist, the part of the curve that goes on toward the range's upper
+// end, whence a sweep down comes). None (both emptied) where no stable segment brackets hi or
+// Newton fails: the down sweep then follows the up sweep, as before. True if set.
+bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, BifurcationDiagramOptions& o);
+
 // The diagram of every band (their points concatenated: band 1 up and down, band 2 up and down,
-// ...), each band swept from the HB orbit of c nearest its lower end among the stable points
-// (the nearest of all if none is stable), as one timed step.
+// ...), each band swept up from the HB orbit of c nearest its lower end among the stable points
+// (the nearest of all if none is stable) and down from set_down_start's orbit at its upper end
+// where there is one, as one timed step.
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);

@@ -471,6 +471,16 @@ void check_pair(GearFile& f, const json& j, const json& model, const std::string
 
 }  // namespace
 
+BearingSupport gear_file_bearings(const GearFile& f) {
+  BearingSupport b;
+  for (int i = 0; i < 2; ++i) b.mass[i] = f.gear[i].mass, b.stiffness[i] = f.gear[i].bearing_stiffness;
+  b.zeta = f.dynamics.bearing_zeta;
+  b.pressure_angle = f.pair.path().mesh.pressure_angle;
+  if (!f.helical.double_helical) b.helix_tan = std::tan(f.helical.base_helix_angle());   // 0 for spur
+  for (int i = 0; i < 2; ++i) b.axial_stiffness[i] = f.gear[i].axial_bearing_stiffness;
+  return b;
+}
+
 GearFile read_gear_file(const std::string& path, const std::vector<std::pair<std::string, std::string>>& overrides) {
   json j = read_json_file(path);
   only_keys(j, path, "", gear_file_keys());

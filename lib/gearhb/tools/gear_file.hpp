@@ -95,7 +95,11 @@ struct GearFile {
   std::string name;
   ToothModel method = ToothModel::beam;
   PeGear pe[2];                    // the gears in the PE vocabulary (method potential_energy)
-  bool pe_coupling = false;        // model.pe_coupling body_torsion: the bodies' structural coupling
+  bool pe_coupling = false;        // The bearings of the file's six-DOF model (dynamics.model six_dof; gears[i].mass,
+// bearing_stiffness, axial_bearing_stiffness, dynamics.bearing_zeta, the pressure angle and
+// base helix of the pair): gearhb_gear's BearingSupport.
+BearingSupport gear_file_bearings(const GearFile& f);
+// model.pe_coupling body_torsion: the bodies' structural coupling
   FePairOptions fe;                // the FE models of both gears (method fe: model.fe_mesh, rim_radius)
   PairSteModel pair;               // geometry (the transverse section of a helical pair), materials, reliefs, reading
   HelicalPair helical;             // helix angle, normal module and shifts, slices, lead modifications
@@ -125,6 +129,10 @@ const std::vector<std::string>& gear_file_keys();
 // finite elements; sliced for a helical pair (pair_helical.hpp). gearhb_gear's model, built
 // once per file.
 std::unique_ptr<LoadedPair> gear_file_loaded_pair(const GearFile& f);
+// The bearings of the file's six-DOF model (dynamics.model six_dof; gears[i].mass,
+// bearing_stiffness, axial_bearing_stiffness, dynamics.bearing_zeta, the pressure angle and
+// base helix of the pair): gearhb_gear's BearingSupport.
+BearingSupport gear_file_bearings(const GearFile& f);
 // model.pe_coupling body_torsion: pe_body_coupling of both gears [m/N] (0 otherwise).
 double gear_file_pe_coupling(const GearFile& f);
 
