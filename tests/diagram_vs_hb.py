@@ -12,11 +12,13 @@ curve g is then frc_<g>.csv, else frc.csv), or label=L for a chapter case's own 
 rows `point = speed` of the HB table (every segment of a branch stable at both ends that
 brackets the speed, solved by Newton there): the period-1 branch and, where the table has the
 period and branch columns, every period-2 (4) branch, a period-p orbit with its p values at
-phase 0 of its p forcing periods. The tolerance: HB's own error bound, hb_orbit_error of the
-frequency-response table (max |x_HB - x_exact| over the orbit's period, the exact orbit by
-shooting over p forcing periods), its largest value E over the branch's stable points times
-ERROR_SCALE (to VALUE's unit), plus 1e-6 |value| (the classifier's period_tol). At every such
-speed one of the two sweeps must be period p with its p values (sorted) within E of those of
+phase 0 of its p forcing periods. The tolerance: HB's own error bound plus 1e-6 |value| (the
+classifier's period_tol): the orbit's own, column hb_orbit_error of the HB table where the
+program wrote it (the orbit corrected by shooting over p forcing periods at the speed itself:
+sum |q_i| max |x_HB - x_exact|, in VALUE's unit; the program keeps only orbits whose correction
+is stable and of period p), else E, the largest hb_orbit_error of the frequency-response table
+over the branch's stable points times ERROR_SCALE (to VALUE's unit). At every such
+speed one of the two sweeps must be period p with its p values (sorted) within the bound of those of
 one of the stable HB orbits there (coexisting orbits: one of them), or, where the program
 integrated from a stable HB orbit that no sweep was on (rows with sweep `from_hb`: coexisting
 attractors), that integration; such speeds are listed. Periodic points on no
@@ -32,16 +34,18 @@ def rows(path):
 
 
 def orbits_at_speeds(h, X, V):
-    """{speed: [(period, branch, sorted values)]}: the HB orbits solved at the diagram's speeds
-    (rows point = speed; a period-p orbit is p consecutive rows). Tables without the period and
-    branch columns hold the period-1 branch only."""
+    """{speed: [(period, branch, sorted values, own bound or None)]}: the HB orbits solved at the
+    diagram's speeds (rows point = speed; a period-p orbit is p consecutive rows), with the
+    orbit's own error bound where the table has it (column hb_orbit_error: shooting at the speed,
+    in VALUE's unit). Tables without the period and branch columns hold the period-1 branch only."""
     at_speed, i = {}, 0
     speed = [r for r in h if r["point"] == "speed"]
     while i < len(speed):
         r = speed[i]
         p, b = int(r.get("period", "1")), r.get("branch", "0")
         values = sorted(float(q[V]) for q in speed[i:i + p])
-        at_speed.setdefault(float(r[X]), []).append((p, b, values))
+        own = float(r["hb_orbit_error"]) if r.get("hb_orbit_error") else None
+        at_speed.setdefault(float(r[X]), []).append((p, b, values, own))
         i += p
     return at_speed
 
@@ -78,15 +82,16 @@ def main():
             where = "%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w)
             periodic = [(int(rs[0]["n"]), sorted(float(r[V]) for r in rs), k) for k, rs in sweeps.items()
                         if rs[0]["motion"] == "periodic"]
-            orbits = [(p, b, q) for p, b, q in at_speed.get(w, []) if b in E]
-            allowed = lambda b, y: E[b] + 1e-6 * abs(y)  # noqa: E731
+            # each orbit's bound: its own (shooting at the speed) where written, else its branch's E
+            orbits = [(p, b, q, own if own is not None else E[b]) for p, b, q, own in at_speed.get(w, [])
+                      if own is not None or b in E]
 
             def off(n, ys, orbit):   # largest difference, None where not within the bound
-                p, b, q = orbit
+                p, b, q, bound = orbit
                 if p != n or len(ys) != len(q):
                     return None
                 d = [abs(y - z) for y, z in zip(ys, q)]
-                return max(d) if all(e <= allowed(b, y) for e, y in zip(d, ys)) else None
+                return max(d) if all(e <= bound + 1e-6 * abs(y) for e, y in zip(d, ys)) else None
             for n, ys, _ in periodic:
                 if not any(off(n, ys, o) is not None for o in orbits):
                     elsewhere.append("%s (period %d, %s = %s)" % (where, n, V, ", ".join("%.6g" % y for y in ys)))
@@ -103,8 +108,8 @@ def main():
                     coexisting.append(where)
             else:
                 failures.append("%s: HB has a stable orbit (%s), no sweep is periodic on it within its bound (%s)" % (
-                    where, "; ".join("period %d branch %s: %s within %.3g" % (p, b, ", ".join("%.6g" % z for z in q), E[b])
-                                     for p, b, q in orbits),
+                    where, "; ".join("period %d branch %s: %s within %.3g" % (p, b, ", ".join("%.6g" % z for z in q), bound)
+                                     for p, b, q, bound in orbits),
                     "; ".join("%s %s n = %s %s" % (k, rs[0]["motion"], rs[0]["n"], rs[0][V]) for k, rs in sweeps.items())))
     print("speeds compared: %d (largest difference %.3g %s; %s)" % (
         compared, worst, V, ", ".join("period %d: %d" % kv for kv in sorted(by_period.items()))))

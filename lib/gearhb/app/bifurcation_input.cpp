@@ -157,8 +157,7 @@ std::string period_doubling_help() {
 namespace {
 
 // A stable orbit of a branch at a speed of the diagram: its base frequency Omega, unknowns X and
-// the larger hb_orbit_error of the segment's two ends (its distance to the exact orbit; infinite
-// where the curve has no Floquet data).
+// its own distance to the exact orbit (hb_orbit_error; NaN where the model has no exact flow).
 struct SpeedOrbit {
   double Omega;
   Eigen::VectorXd X;
@@ -167,9 +166,15 @@ struct SpeedOrbit {
 
 // The stable orbits of one branch (on its model hb, of `period` forcing periods; its omegas base
 // frequencies omega / period) at the speeds of the diagram's up sweep: on every segment stable
-// at both ends that brackets the speed, Newton from the segment's end.
+// at both ends that brackets the speed, Newton from the segment's end. Where the model has an
+// exact piecewise-linear flow, each is then corrected by shooting at the speed itself (floquet.hpp):
+// kept if the correction converges to a stable orbit of its period (not lower_period), with its
+// own orbit error - a segment's ends do not bound the error inside it (ch. 6 Fig. 40's period-2
+// branch at 10650 rad/s, 2.8 rad/s from its end at HB's branch point: twice the ends' error).
 std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c, int period,
                                      const BifurcationDiagram& d) {
+  bool profile = false;
+  for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
   const auto& P = c.branch.points;
   std::vector<SpeedOrbit> out;
   for (const DiagramPoint& p : d.points) {
@@ -178,8 +183,14 @@ std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyC
     for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
       if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
       Eigen::VectorXd X = P[i].X;
-      const double error = i < c.floquet.size() ? std::max(c.floquet[i - 1].orbit_error, c.floquet[i].orbit_error) : HUGE_VAL;
-      if (newton_solve(hb, X, Omega, c.scaling).converged) out.push_back({Omega, std::move(X), error});
+      if (!newton_solve(hb, X, Omega, c.scaling).converged) continue;
+      double error = NAN;
+      if (!profile && c.stability == StabilityMethod::floquet) {
+        const FloquetResult f = floquet_of_hb_orbit(hb, X, Omega, c.scaling.x[0]);
+        if (!f.corrected || !f.stable || f.lower_period) continue;
+        error = f.orbit_error;
+      }
+      out.push_back({Omega, std::move(X), error});
     }
   }
   return out;
@@ -204,19 +215,20 @@ Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X
 void add_branch_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, int period,
                      const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
                      const std::function<std::vector<Table::Cell>(double)>& lead) {
-  auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point) {
+  auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point, double error) {
     const Eigen::MatrixXd x = phase_states(hb, X, period);
     for (int j = 0; j < period; ++j) {
       std::vector<Table::Cell> row = lead(period * Omega);
       row.emplace_back(scale * q.dot(x.col(j)));
       row.emplace_back(long(stable ? 1 : 0));
       row.emplace_back(std::string(point));
+      row.push_back(cell(std::isfinite(error), scale * q.cwiseAbs().sum() * error));
       t.add_row(std::move(row));
     }
   };
   const auto& P = c.branch.points;
-  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch");
-  for (const SpeedOrbit& o : speed_orbits(hb, c, period, d)) add(o.Omega, o.X, true, "speed");
+  for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch", NAN);
+  for (const SpeedOrbit& o : speed_orbits(hb, c, period, d)) add(o.Omega, o.X, true, "speed", o.error);
 }
 
 // Whether a sweep at the orbit's speed is on it: periodic with its period, each of its phase
@@ -243,7 +255,8 @@ void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forc
                             const BifurcationDiagramOptions& o) {
   for (const SpeedOrbit& orbit : speed_orbits(hb, c, period, d)) {
     const double omega = period * orbit.Omega;
-    if (reached(d, omega, phase_states(hb, orbit.X, period), orbit.error + o.period_tol * o.integration.x_scale)) continue;
+    const double error = std::isfinite(orbit.error) ? orbit.error : HUGE_VAL;   // no exact flow: its period alone
+    if (reached(d, omega, phase_states(hb, orbit.X, period), error + o.period_tol * o.integration.x_scale)) continue;
     Eigen::VectorXd x0, v0;
     hb_initial_state(hb, orbit.X, orbit.Omega, x0, v0);
     out.points.push_back(diagram_point(forced, omega, x0, v0, o));
@@ -285,6 +298,7 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
   lead.push_back(value);
   lead.emplace_back("stable");
   lead.emplace_back("point");
+  lead.emplace_back("hb_orbit_error");
   return lead;
 }
 

@@ -113,8 +113,12 @@ void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::Ve
 // them (bifurcation_diagram_hb.csv): the cells `lead(omega)`, then scale q' x(phase 0), its
 // Floquet stability (1 | 0) and point: `branch` for every point of the branch (in continuation
 // order), then `speed` for the HB orbit at each speed of the diagram's grid on every segment of
-// the branch stable at both ends that brackets it (solved by Newton at that speed);
-// hb_section_columns: the lead columns, `value`, stable, point.
+// the branch stable at both ends that brackets it (solved by Newton at that speed; where the
+// model has an exact flow, corrected there by shooting and kept only if that orbit is stable and
+// of its period), and hb_orbit_error: at a `speed` row, that orbit's own distance to the exact
+// orbit as a bound on the value, scale sum|q_i| max_t,i |x_HB - x_exact| (empty on `branch` rows
+// and without an exact flow); hb_section_columns: the lead columns, `value`, stable, point,
+// hb_orbit_error.
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead);
