@@ -19,7 +19,7 @@ MOTION_LABELS = {"periodic_1": "period 1", "periodic_n": "period n >= 2 (n point
 SWEEP_MARKERS = {"up": ".", "down": "x", "from_hb": "D"}
 SWEEP_LABELS = {"up": "time integration, sweep up", "down": "time integration, sweep down",
                 "from_hb": "time integration started on a stable HB orbit\nno sweep reached (hollow)"}
-BRANCH_COLOURS = [c for c in PERIOD2_COLOURS if c != MOTION_COLOURS["quasi_periodic"]]
+BRANCH_COLOURS = PERIOD2_COLOURS   # the response panels' colours, none the diagram's green
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
 
 
@@ -60,8 +60,7 @@ def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at
     """The HB branches' values at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed
     unstable: period 1 (branch 0) in grey; where the table has the period and branch columns,
     each period-p branch's p values per orbit (the rows of a point come p at a time: its forcing
-    periods j = 0..p-1) as p lines in the branch's colour (not green: the diagram's
-    quasi-periodic points). Legend entries only for the styles drawn. The period-1 line is grey at
+    periods j = 0..p-1) as p lines in the branch's colour (the response panel's). Legend entries only for the styles drawn. The period-1 line is grey at
     the indices `unresolved` of its rows (style.plot_branch)."""
     h = subset(h, lambda i: h["point"][i] == "branch") if "point" in h else h   # the speed rows are for checks
     branch = [int(float(b)) for b in h["branch"]] if "branch" in h else [0] * len(h[x])

@@ -203,13 +203,15 @@ def branch_ids(d):
     return sorted({int(b) for b in d.get("branch", [])} - {0})
 
 
-PERIOD2_COLOURS = ["C2", "C4", "C9", "C8", "C6", "C5"]   # not red (the diagram draws chaos red), not C0 or C1 (period 1)
+# Not red (the diagram draws chaos red), not green (its quasi-periodic points), not C0 or C1
+# (period 1): a branch has the same colour over its response and under the Poincare points.
+PERIOD2_COLOURS = ["C4", "C9", "C8", "C6", "C5"]
 
 
 def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True, skip=()):
     """The period-2 (and period-4) branches of a frequency-response table (its rows with branch
     id > 0, but the ids in `skip`: e.g. orbit branches, drawn by plot_orbit_branches), each in its
-    own colour (PERIOD2_COLOURS, repeated beyond seven), solid where stable and dashed where not;
+    own colour (PERIOD2_COLOURS, repeated beyond five), solid where stable and dashed where not;
     one legend entry per branch, or (entry_per_branch False) one per period."""
     named = set()
     for n, bid in enumerate(b for b in branch_ids(full) if b not in skip):
