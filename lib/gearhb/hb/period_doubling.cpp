@@ -204,10 +204,12 @@ Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalanc
 // the period-1 branch is singular (det changes sign), searched on the chords within two
 // points of the PD, the nearest taken (the chords in order of their distance from the PD's,
 // the lower first, each point's det computed once, where needed: ex. 03, 2 points each where
-// 6 were), located on the chord to a chord fraction of 1e-12 by regula falsi (Illinois) on
-// det relative to its larger end (ex. 03: 11 and 15 trials where bisection took 40; det is
-// resolved to about 1e-11 of its ends, as the trial points to the corrector's tolerance, so
-// the last trials only narrow a bracket that its noise decides). The HB model at
+// 6 were), located on the chord by regula falsi (Illinois) on det relative to its larger end
+// to a chord fraction of 1e-12, or to a trial where that is below 1e-10: det is resolved to
+// about 1e-11 of its ends (the trial points are corrected to the corrector's tolerance), and
+// the trials after such a one only narrowed a bracket that this noise decides (ex. 03: 8 and 11
+// trials where 11 and 15 were, the branch points moved by 2e-13 of the chord, omega by 3e-15
+// relative; bisection took 40). The HB model at
 // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
 // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
 // largest and turns back): then there is no period-2 HB branch to switch to. `lu`: the LU of
@@ -250,8 +252,10 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
     const double w = br.hi - br.lo;
     const double tm = std::clamp(br.lo + w * br.f_lo / (br.f_lo - br.f_hi), br.lo + 0.01 * w, br.hi - 0.01 * w);
     q = trials.at(tm);
-    br.update(tm, relative(det_at(q)));
+    const double f = relative(det_at(q));
+    br.update(tm, f);
     lu_at_q = true;
+    if (std::fabs(f) < 1e-10) break;   // zero to det's resolution
   }
   if (!lu_at_q) det_at(q);
   return q;
