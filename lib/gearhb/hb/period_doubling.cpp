@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -107,10 +108,9 @@ struct SignedLogDet {
   int sign = 1;
   double log_abs = 0.0;
 };
-SignedLogDet signed_log_det(const Eigen::MatrixXd& A) {
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(A);
+SignedLogDet signed_log_det(const Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
   SignedLogDet d{int(lu.permutationP().determinant()), 0.0};
-  for (Eigen::Index i = 0; i < A.rows(); ++i) {
+  for (Eigen::Index i = 0; i < lu.rows(); ++i) {
     const double u = lu.matrixLU()(i, i);
     if (u < 0.0) d.sign = -d.sign;
     d.log_abs += std::log(std::fabs(u));
@@ -202,26 +202,37 @@ Eigen::VectorXd odd_harmonics_of(const HarmonicBalance& hb, const HarmonicBalanc
 
 // The branch point of the period-2 model itself: where the odd block of its Jacobian on
 // the period-1 branch is singular (det changes sign), searched on the chords within two
-// points of the PD, the nearest taken, located on the chord to a chord fraction of 1e-12 by
-// regula falsi (Illinois) on det relative to its larger end (ex. 03: 14 trials where
-// bisection took 40). The HB model at
+// points of the PD, the nearest taken (the chords in order of their distance from the PD's,
+// the lower first, each point's det computed once, where needed: ex. 03, 2 points each where
+// 6 were), located on the chord by regula falsi (Illinois) on det relative to its larger end
+// to a chord fraction of 1e-12, or to a trial where that is below 1e-10: det is resolved to
+// about 1e-11 of its ends (the trial points are corrected to the corrector's tolerance), and
+// the trials after such a one only narrowed a bracket that this noise decides (ex. 03: 8 and 11
+// trials where 11 and 15 were, the branch points moved by 2e-13 of the chord, omega by 3e-15
+// relative; bisection took 40). The HB model at
 // finite H2 has it beside the PD of the exact orbit (ex. 03: 2e-6 at H2 = 80) or not at
 // all (ex. 03 at H2 = 42: the odd block's smallest singular value dips to 1e-5 of its
-// largest and turns back): then there is no period-2 HB branch to switch to.
+// largest and turns back): then there is no period-2 HB branch to switch to. `lu`: the LU of
+// the odd block at the point returned.
 BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalance& hbp, const FrequencyCurve& c,
-                                 const Bifurcation& bf, const SweepOptions& opt, std::vector<int>& odd) {
+                                 const Bifurcation& bf, const SweepOptions& opt, std::vector<int>& odd,
+                                 Eigen::PartialPivLU<Eigen::MatrixXd>& lu) {
   const auto& P = c.branch.points;
   auto det_at = [&](const BranchPoint& q) {
-    return signed_log_det(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
+    lu.compute(odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd));
+    return signed_log_det(lu);
   };
   const int lo_i = std::max(0, bf.after_point - 2), hi_i = std::min(int(P.size()) - 2, bf.after_point + 2);
-  std::vector<SignedLogDet> at;   // at the points lo_i .. hi_i + 1
-  for (int i = lo_i; i <= hi_i + 1; ++i) at.push_back(det_at(P[std::size_t(i)]));
+  std::vector<std::optional<SignedLogDet>> at(std::size_t(std::max(0, hi_i - lo_i + 2)));   // points lo_i .. hi_i + 1
+  auto det_of = [&](int i) -> const SignedLogDet& {
+    auto& d = at[std::size_t(i - lo_i)];
+    if (!d) d = det_at(P[std::size_t(i)]);
+    return *d;
+  };
   int best = -1;
-  for (int i = lo_i; i <= hi_i; ++i)
-    if (at[std::size_t(i - lo_i)].sign != at[std::size_t(i - lo_i + 1)].sign &&
-        (best < 0 || std::abs(i - bf.after_point) < std::abs(best - bf.after_point)))
-      best = i;
+  for (int dist = 0; dist <= 2 && best < 0; ++dist)
+    for (const int i : {bf.after_point - dist, bf.after_point + dist})
+      if (best < 0 && i >= lo_i && i <= hi_i && det_of(i).sign != det_of(i + 1).sign) best = i;
   if (best < 0) {
     std::ostringstream os;
     os << "the period-2 model (H2 = " << hbp.harmonics()
@@ -229,19 +240,24 @@ BranchPoint period2_branch_point(const HarmonicBalance& hb, const HarmonicBalanc
     throw Failed(os.str());
   }
   const BranchPoint &pa = P[std::size_t(best)], &pb = P[std::size_t(best) + 1];
-  const SignedLogDet &da = at[std::size_t(best - lo_i)], &db = at[std::size_t(best - lo_i + 1)];
+  const SignedLogDet &da = det_of(best), &db = det_of(best + 1);
   const double log_ref = std::max(da.log_abs, db.log_abs);
   auto relative = [log_ref](const SignedLogDet& d) { return d.sign * std::exp(d.log_abs - log_ref); };
   Illinois br{0.0, 1.0, relative(da), relative(db)};
   BranchPoint q = pa;
+  bool lu_at_q = false;
   ChordTrials trials(hb, pa, pb, c.scaling, opt.continuation.tolerance);
   for (int it = 0; it < 60 && br.hi - br.lo > 1e-12; ++it) {
     // the secant point, kept inside the bracket's inner 98 % (so the bracket shrinks)
     const double w = br.hi - br.lo;
     const double tm = std::clamp(br.lo + w * br.f_lo / (br.f_lo - br.f_hi), br.lo + 0.01 * w, br.hi - 0.01 * w);
     q = trials.at(tm);
-    br.update(tm, relative(det_at(q)));
+    const double f = relative(det_at(q));
+    br.update(tm, f);
+    lu_at_q = true;
+    if (std::fabs(f) < 1e-10) break;   // zero to det's resolution
   }
+  if (!lu_at_q) det_at(q);
   return q;
 }
 
@@ -290,11 +306,9 @@ SwitchPoint critical_direction(const HarmonicBalance& hb, const FrequencyCurve& 
   }
   sp.phi_floquet = odd_harmonics_of(hb, hbp, eigen_solution(hb, sp.at.X, fr, e, w, xs, pdo.samples, fo));
   std::vector<int> odd;
-  sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd);
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;   // of the odd block at the branch point
+  sp.branch_point = period2_branch_point(hb, hbp, c, bf, opt, odd, lu);
   // its null vector by inverse iteration from the Floquet direction
-  const BranchPoint& q = sp.branch_point;
-  const Eigen::MatrixXd Jo = odd_block(hbp, to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, odd);
-  const Eigen::PartialPivLU<Eigen::MatrixXd> lu(Jo);
   Eigen::VectorXd v(odd.size()), po(odd.size());
   for (std::size_t i = 0; i < odd.size(); ++i) po[Eigen::Index(i)] = sp.phi_floquet[odd[i]];
   v = po;
@@ -513,7 +527,8 @@ void end_at_branch_point(PeriodDoubledBranch& r, Branch& b, const HarmonicBalanc
                          const FrequencyCurve& c, const SweepOptions& opt, double P) {
   try {
     std::vector<int> odd;
-    const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd);
+    Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+    const BranchPoint q = period2_branch_point(hb, hbp, c, c.bifurcations[std::size_t(r.to)], opt, odd, lu);
     b.points.push_back(BranchPoint{to_subharmonic_basis(hb, hbp, 2, q.X), q.omega / 2.0, 0, 0.0, 0.0, 0.0});
     r.omega_end = P * q.omega;
   } catch (const std::exception&) {
