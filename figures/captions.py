@@ -123,9 +123,12 @@ CHAPTERS = [
          "up then down over 7.5-11.2 krad/s, 75 speeds each way, and over 11.5-12.0 krad/s, 21 speeds each way; the "
          "mesh deflection once per forcing period) under the harmonic-balance branches. Notice chaotic motion (red) in both sweeps over 8.45-8.65, 8.8-9.0 and "
          "9.3-10.1 krad/s and most of 10.35-10.65 krad/s, also at 8.25 and 9.3 krad/s where HB's period-1 orbit is "
-         "stable: there two attractors coexist, and the time integration started on the HB orbit stays on it (hollow "
-         "diamonds; CTest ch06_gear_pair.fig40_diagram.diagram_vs_hb: at every stable HB speed a sweep or that start is "
-         "period 1 on it). Periods 2-6 (blue) at 7.9-8.1, 8.7-8.75 (sweep up) and 10.2-10.3 krad/s, quasi-periodic points (green) at 10.15 and "
+         "stable and at 8.0, 9.0 and 10.35 krad/s where a period-2 branch of HB is: there attractors coexist, and the "
+         "time integration started on the HB orbit stays on it (hollow diamonds; CTest "
+         "ch06_gear_pair.fig40_diagram.diagram_vs_hb: at every speed with a stable HB orbit a sweep or that start is "
+         "periodic on it, with its period). Coloured lines below: the period-2 branches at the same phase, their two "
+         "values (a colour each, as above); the one from the non-smooth period doubling at 7.98 krad/s carries the "
+         "sweeps' period-2 points at 8.05-8.1 krad/s. Periods 2-6 (blue) at 7.9-8.1, 8.7-8.75 (sweep up) and 10.2-10.3 krad/s, quasi-periodic points (green) at 10.15 and "
          "10.95-11.05 krad/s, period 1 on HB's orbit again from 10.7 krad/s. Magenta squares: HB points whose shooting "
          "correction fails, so their stability is not resolved at H = 10. At 7.75-7.9 krad/s such points are drawn "
          "unstable, but the orbit is stable (H = 14) and the sweeps sit on it (chapter README, step 3b). In the "
@@ -140,7 +143,8 @@ CHAPTERS = [
          "krad/s. Brown: the HB branch continued from that orbit at 13.595 krad/s (chapter step 3c), an isola over "
          "13.48-13.86 krad/s, stable (solid) from its Neimark-Sacker point at 13.51 to its fold at 13.86 krad/s; "
          "below, its section at phase 0 runs through all 31 off-curve Poincare points of both sweeps. HB's stable "
-         "stretch 13.61-13.75 krad/s of the continued curve is visited by neither sweep; with the isola every speed "
+         "stretches of the continued curve are visited by neither sweep there, but the time integration started on "
+         "their orbits stays on them (hollow diamonds): two stable period-1 orbits coexist. With the isola every speed "
          "of the band has a stable period-1 orbit (no grey band)."),
         ("figS47_ch06_diagram_fig44.png", "supplement S47", "Fig. 44's case (Fig. 40 x 100): the diagram is Fig. "
          "40's with every Poincare point times 100 (the model is homogeneous in the loads), under Fig. 44's own "
@@ -151,10 +155,10 @@ CHAPTERS = [
         ("figS47_ch06_diagram_fig43.png", "supplement S47", "What the gear does where Fig. 43 has no stable period-1 orbit: the "
          "bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over 10-15 krad/s, the "
          "mesh deflection once per forcing period) under the harmonic-balance branches. Notice the two views agree "
-         "where HB's period-1 orbit is stable (the Poincare points on the grey line: CTest "
-         "ch06_gear_pair.fig43_diagram.diagram_vs_hb), period-2 motion in both grey bands where HB's period-2 "
-         "branches are stable, period 4 at a few speeds, and chaotic motion (red) near 12.7-13.0 krad/s in both "
-         "sweeps, where the period-2 branch is unstable (dashed)."),
+         "where HB has a stable orbit (CTest ch06_gear_pair.fig43_diagram.diagram_vs_hb): the period-1 points on the "
+         "grey line, and in both grey bands the period-2 points on the two lines of HB's stable period-2 branches "
+         "(coloured); period 4 at a few speeds, and chaotic motion (red) near 12.7-13.0 krad/s in both sweeps, where "
+         "the period-2 branch is unstable (dashed)."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
         ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "

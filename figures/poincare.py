@@ -60,7 +60,9 @@ def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at
     """The HB branches' values at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed
     unstable: period 1 (branch 0) in grey; where the table has the period and branch columns,
     each period-p branch's p values per orbit (the rows of a point come p at a time: its forcing
-    periods j = 0..p-1) as p lines in the branch's colour (the response panel's). Legend entries only for the styles drawn. The period-1 line is grey at
+    periods j = 0..p-1) as p lines in the branch's colour (the response panel's). Legend entries only for the styles drawn:
+    one per branch up to three branches, else one per period ("a colour each", as the response
+    panel says it: the colours repeat beyond five). The period-1 line is grey at
     the indices `unresolved` of its rows (style.plot_branch)."""
     h = subset(h, lambda i: h["point"][i] == "branch") if "point" in h else h   # the speed rows are for checks
     branch = [int(float(b)) for b in h["branch"]] if "branch" in h else [0] * len(h[x])
@@ -71,15 +73,23 @@ def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at
         drawn = {int(float(s)) for s in one["stable"]}
         handles += [Line2D([], [], color=colour, ls=ls, label="%s (%s)" % (label, word))
                     for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")) if flag in drawn]
-    for n, bid in enumerate(sorted({b for b in branch if b > 0})):
+    ids = sorted({b for b in branch if b > 0})
+    named = set()
+    for n, bid in enumerate(ids):
         rows = subset(h, lambda i: branch[i] == bid)
         period, c = int(float(rows["period"][0])), BRANCH_COLOURS[n % len(BRANCH_COLOURS)]
         for j in range(period):
             plot_branch(ax, subset(rows, lambda i: i % period == j), y, c, None, x=x, scale=scale, values="hb", lw=1.1)
         for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")):
-            if flag in {int(float(s)) for s in rows["stable"]}:
+            if flag not in {int(float(s)) for s in rows["stable"]}:
+                continue
+            if len(ids) <= 3:
                 handles.append(Line2D([], [], color=c, ls=ls, label="HB period %d (branch %d), its %d points (%s)"
                                       % (period, bid, period, word)))
+            elif (period, flag) not in named:
+                named.add((period, flag))
+                handles.append(Line2D([], [], color="0.35", ls=ls, label="HB period-%d branches (a colour each), "
+                                      "their %d points (%s)" % (period, period, word)))
     return handles
 
 
