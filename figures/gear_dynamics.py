@@ -201,8 +201,11 @@ def diagram_figure(d_dir, params, torques, diagram):
     fig.suptitle("%s: bifurcation diagram by time integration\n(each speed but a sweep's first starts from the "
                  "previous speed's final state; the DTE once per mesh period, at phase 0)" % params.get("name", "gear pair"),
                  fontsize=9)
+    # room under the axes for the legend's rows (0.16 in each) and the x label (0.45 in)
+    legend_in = 0.16 * -(-len(labels) // 3)
+    fig.set_figheight(3.4 * len(drawn) + 0.9 + legend_in)
     fig.legend(handles=list(labels.values()), fontsize=7, loc="lower center", ncol=3, frameon=False)
-    fig.tight_layout(rect=(0, 0.09, 1, 0.97))
+    fig.tight_layout(rect=(0, (legend_in + 0.45) / fig.get_figheight(), 1, 0.97))
     fig.savefig(d_dir / "bifurcation_diagram.png")
     plt.close(fig)
 
