@@ -303,7 +303,8 @@ GEAR_CAPTIONS = {
                     "period-1 orbit shaded (where there are any); the rug below the axis is the contact of each "
                     "flank (drive-flank loss, back-flank impact), one row per curve. Under it, per torque with such "
                     "speeds, the bifurcation diagram by time integration (the DTE once per mesh period), by default "
-                    "over a band around each of them (the panel's title gives the bands).",
+                    "over a band around each of them (the panel's title gives the bands); hollow diamonds, where "
+                    "there are any, are integrations started on a stable HB orbit that no sweep reached at its speed.",
     "mesh_stiffness.png": "Mesh stiffness from the teeth (mesh.stiffness tooth_model) over one mesh cycle at the "
                           "static load: the sun-planet mesh by gearhb_gear's pair model of the same pair, the "
                           "ring-planet mesh by the potential-energy method with an internal tooth (or ISO 6336-1's "
@@ -396,12 +397,16 @@ FRC_CAPTIONS = {
                "stability the time integration tested by two Lyapunov exponents filled where stable, open where "
                "unstable, grey where unresolved). Under every response with frequencies where no period-1 "
                "orbit is stable (shaded), the Poincare points of the bifurcation diagram by time integration "
-               "(below), by default over a band around each such range (the panel's title gives the bands).",
+               "(below), by default over a band around each such range (the panel's title gives the bands); "
+               "hollow diamonds, where there are any, are integrations started on a stable HB orbit that no sweep "
+               "reached at its speed.",
     "bifurcation_diagram.png": "The bifurcation diagram by time integration (GSL, exact contact switching): the "
                                "output at phase 0 of each forcing period after the transient, over its bands "
                                "(the title: by default each range with no stable period-1 orbit, padded), sweeping up (top) "
                                "and down (bottom), each point coloured by what the motion is (period n, "
                                "quasi-periodic, chaotic by its largest Lyapunov exponent), under the harmonic "
-                               "balance's period-1 curve at the same phase. Notice that the two views agree where "
+                               "balance's period-1 curve at the same phase; in both panels, where there are any, "
+                               "hollow diamonds: integrations started on a stable HB orbit that no sweep reached "
+                               "at its speed. Notice that the two views agree where "
                                "both apply: the stable HB curve runs through the period-1 points.",
 }

@@ -15,7 +15,9 @@ where unresolved, with a panel of their second frequency as the rotation omega2 
 Floquet value angle / 2 pi of each NS point marked. Where the run wrote bifurcation_diagram.csv (by
 default every run with a range with no stable period-1 orbit, over a band around each), a panel of
 its Poincare points under the response (the whole range) and bifurcation_diagram.png (the bands'
-window; poincare.py)."""
+window; poincare.py), with the rows of sweep from_hb (the integration started on a stable HB orbit
+that no sweep reached at its speed) as hollow diamonds in every panel, named in the legend and the
+panel titles only where the run has such rows."""
 import json
 import pathlib
 import sys
@@ -26,7 +28,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
                    legend_styles, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
                    shade_no_stable_period1, unstable_period1_ranges)
-from poincare import bands_text, draw_hb_section, draw_poincare, value_limits, window, within  # noqa: E402
+from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window,  # noqa: E402
+                      with_hb_starts, within)
 
 
 
@@ -59,8 +62,9 @@ def save_whole(fig, path):
     plt.close(fig)
 
 
-def poincare_panel(ax, p, h, direction, sweeps=("up", "down"), title=None):
-    """The diagram's Poincare points over the HB branch at phase 0, on ax; its legend below."""
+def poincare_panel(ax, p, h, direction, sweeps=with_hb_starts(), title=None):
+    """The diagram's Poincare points over the HB branch at phase 0, on ax (sweeps: which rows, by
+    their sweep); its legend handles."""
     handles = draw_hb_section(ax, h, "omega", "x") + draw_poincare(ax, p, "omega", "x", sweeps=sweeps)
     ax.set_ylabel("q'x at phase 0 of each\nforcing period [m]")
     if title:
@@ -76,8 +80,9 @@ def diagram_figure(d_dir, model, p, h):
     h = within(h, "omega", lo, hi)
     labels = {}
     for ax, sweep in zip(axes, ("up", "down")):
-        for hd in poincare_panel(ax, p, h, model["output"]["direction"], (sweep,),
-                                 "sweep %s (each speed but its first from the previous speed's final state)" % sweep):
+        for hd in poincare_panel(ax, p, h, model["output"]["direction"], with_hb_starts((sweep,)),
+                                 "sweep %s (each speed but its first from the previous speed's final state)%s"
+                                 % (sweep, hb_starts_text(p))):
             labels.setdefault(hd.get_label(), hd)
     axes[-1].set_xlim(lo, hi)
     for ax in axes:
@@ -238,7 +243,8 @@ def poincare_below(axp, r, handles):
         more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
         torus_stability_marks(axp, r["torus"], "section_min", "section_max", labelled=False)
     axp.set_xlabel(r"forcing frequency $\omega$ [rad/s]")
-    axp.set_title("bifurcation diagram by time integration %s" % bands_text(r["diagram"], "omega", "rad/s"), fontsize=8)
+    axp.set_title("bifurcation diagram by time integration %s%s" % (bands_text(r["diagram"], "omega", "rad/s"),
+                                                                     hb_starts_text(r["diagram"])), fontsize=8)
     axp.legend(handles=handles + more, fontsize=6.5, loc="upper center", bbox_to_anchor=(0.5, -0.27), ncol=2,
                frameon=False)
 

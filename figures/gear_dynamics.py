@@ -15,6 +15,9 @@ Writes into DIR:
                     period-1 branch has an unstable stretch and a diagram: the Poincare DTE (once
                     per mesh period) over the HB branch at the same phase (poincare.py);
   bifurcation_diagram.png  the diagram of every torque that has one, sweep up (left) and down (right);
+                    in both figures the rows of sweep from_hb (the integration started on a stable
+                    HB orbit that no sweep reached at its speed) as hollow diamonds in every diagram
+                    panel, in the legend and the titles only where the torque has such rows;
   campbell.png      mesh orders 1..4 against speed with the closed-contact natural frequencies;
   time_history.png  DTE and flank forces over two mesh periods at one impact / loss point;
   dte_spectrum.png  the DTE per mesh order at three speeds, per torque.
@@ -25,7 +28,8 @@ from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
 from style import CONTACT_COLOURS, PERIOD2_COLOURS, branch_ids, plot_branch, read_csv, rows_of, save, torque_colour
-from poincare import bands_text, draw_hb_section, draw_poincare, value_limits, window, within
+from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window, with_hb_starts,
+                      within)
 
 # The drive flank opening is the mesh's intermittent contact (the rug colour of every chapter).
 CONTACT_COLOUR = {"drive_loss": CONTACT_COLOURS["intermittent"], "back_impact": CONTACT_COLOURS["back_impact"],
@@ -145,9 +149,10 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
     extra = {}
     for ax, i in zip(axes[2:], unstable):
-        for hd in diagram_panel(ax, torque_rows(diagram[0], i), torque_rows(diagram[1], i), ("up", "down"),
-                                "%s: bifurcation diagram by time integration (sweeps up and down)\n%s"
-                                % (torque_label(torques[i]), bands_text(torque_rows(diagram[0], i), "speed_rpm", "rpm"))):
+        p = torque_rows(diagram[0], i)
+        for hd in diagram_panel(ax, p, torque_rows(diagram[1], i), with_hb_starts(),
+                                "%s: bifurcation diagram by time integration (sweeps up and down)\n%s%s"
+                                % (torque_label(torques[i]), bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p))):
             extra.setdefault(hd.get_label(), hd)
     shaded = mark_no_stable_period1(axes, kn, torques)
     axes[-1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
@@ -192,8 +197,8 @@ def diagram_figure(d_dir, params, torques, diagram):
         h = within(h, "speed_rpm", lo, hi)
         grid[row][0].set_ylim(*ylim)   # the row shares y
         for ax, sweep in zip(grid[row], ("up", "down")):
-            for hd in diagram_panel(ax, p, h, (sweep,), "%s, sweep %s, %s" % (
-                    torque_label(T), sweep, bands_text(p, "speed_rpm", "rpm"))):
+            for hd in diagram_panel(ax, p, h, with_hb_starts((sweep,)), "%s, sweep %s, %s%s" % (
+                    torque_label(T), sweep, bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p))):
                 labels.setdefault(hd.get_label(), hd)
     for ax in grid[-1]:
         ax.set_xlim(lo, hi)

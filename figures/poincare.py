@@ -4,7 +4,10 @@ of bifurcation_diagram.csv over the HB branch at the same phase (bifurcation_dia
 solid where stable, dashed where unstable).
 
 One convention: the motion's colour (MOTION_COLOURS), the sweep's marker (up: dot, down:
-small x); a period-n speed draws its n points, any other speed its whole cloud. The diagram covers
+small x; from_hb, the time integration started on a stable HB orbit that no sweep reached at its
+speed: a hollow diamond, drawn in every panel with sweeps=with_hb_starts(...), its legend entry
+only where the table has such rows); a period-n speed draws its n points, any other speed its
+whole cloud. The diagram covers
 its bands (column band: by default the ranges with no stable period-1 orbit, padded), the HB
 section the whole branch."""
 from matplotlib.lines import Line2D
@@ -21,6 +24,17 @@ SWEEP_LABELS = {"up": "time integration, sweep up", "down": "time integration, s
                 "from_hb": "time integration started on a stable HB orbit\nno sweep reached (hollow)"}
 BRANCH_COLOURS = PERIOD2_COLOURS   # the response panels' colours, none the diagram's green
 ZORDER = {"chaotic": 4, "periodic_1": 5, "periodic_n": 5, "quasi_periodic": 6, "unsettled": 6}   # the rare ones on top
+
+
+def with_hb_starts(sweeps=("up", "down")):
+    """The sweeps to draw and the starts on HB orbits (sweep from_hb): they belong to no sweep,
+    so every panel of a diagram draws them beside its own sweep(s)."""
+    return tuple(sweeps) + ("from_hb",)
+
+
+def hb_starts_text(d):
+    """A panel title's second line where the table d has from_hb rows, else ''."""
+    return "\nhollow diamonds: started on a stable HB orbit no sweep reached" if "from_hb" in d["sweep"] else ""
 
 
 def motion_key(motion, n):
