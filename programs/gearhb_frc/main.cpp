@@ -256,12 +256,13 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   run.say(model_.name + ": " + diagram_bands_text(bands, rad_s, "rad/s"));
   const BifurcationDiagram d = diagram_of_bands(run, hb, c, bands, model_.diagram.options, "bifurcation_diagram", "");
   Table t(bifurcation_columns({"omega", "band"}, "x"));
-  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, c, pd, d, model_.diagram.options);
+  const SectionOrbits orbits = run.timed("HB orbits at the diagram's speeds", [&] { return section_orbits(hb, c, pd, d); });
+  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, c, pd, orbits, d, model_.diagram.options);
   for (const BifurcationDiagram* e : {&d, &from_hb})
     add_bifurcation_rows(t, *e, model_.output, 1.0, [&](double w) { return std::vector<Table::Cell>{w, band_of(bands, w)}; });
   run.write("bifurcation_diagram.csv", t);
   Table h(hb_section_columns({"omega", "period", "branch"}, "x"));
-  add_hb_section_rows(h, hb, c, pd, d, model_.output, 1.0,
+  add_hb_section_rows(h, hb, c, pd, orbits, model_.output, 1.0,
                       [](double w, int p, int b) { return std::vector<Table::Cell>{w, long(p), long(b)}; });
   run.write("bifurcation_diagram_hb.csv", h);
   diagram_key_numbers(run.key_numbers(), d, "");

@@ -562,14 +562,17 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   };
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
   const BifurcationDiagram& sweeps = d;
-  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, r.curve, r.doubled, d, file_.diagram.options);
+  const SectionOrbits orbits = run.timed("HB orbits at the diagram's speeds " + n, [&] {
+    return section_orbits(hb, r.curve, r.doubled, d);
+  });
+  const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, r.curve, r.doubled, orbits, d, file_.diagram.options);
   for (const BifurcationDiagram* e : {&sweeps, &from_hb})
     add_bifurcation_rows(t, *e, q, 1e6, [&](double w) {
       std::vector<Table::Cell> row = lead(w);
       row.emplace_back(band_of(bands, w));
       return row;
     });
-  add_hb_section_rows(hb_section, hb, r.curve, r.doubled, d, q, 1e6, [&](double w, int p, int b) {
+  add_hb_section_rows(hb_section, hb, r.curve, r.doubled, orbits, q, 1e6, [&](double w, int p, int b) {
     std::vector<Table::Cell> row = lead(w);
     row.emplace_back(long(p));
     row.emplace_back(long(b));

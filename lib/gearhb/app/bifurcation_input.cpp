@@ -156,14 +156,6 @@ std::string period_doubling_help() {
 
 namespace {
 
-// A stable orbit of a branch at a speed of the diagram: its base frequency Omega, unknowns X and
-// its own distance to the exact orbit (hb_orbit_error; NaN where the model has no exact flow).
-struct SpeedOrbit {
-  double Omega;
-  Eigen::VectorXd X;
-  double error;
-};
-
 // The stable orbits of one branch (on its model hb, of `period` forcing periods; its omegas base
 // frequencies omega / period) at the speeds of the diagram's up sweep: on every segment stable
 // at both ends that brackets the speed, Newton from the segment's end. Where the model has an
@@ -210,10 +202,10 @@ Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X
   return x;
 }
 
-// The rows of one branch (as speed_orbits): at each point, then at each of speed_orbits, its
-// `period` values at phase 0 of its forcing periods (phase_states).
+// The rows of one branch: at each point, then at each of its orbits at the diagram's speeds
+// (speed_orbits), its `period` values at phase 0 of its forcing periods (phase_states).
 void add_branch_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, int period,
-                     const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
+                     const std::vector<SpeedOrbit>& orbits, const Eigen::VectorXd& q, double scale,
                      const std::function<std::vector<Table::Cell>(double)>& lead) {
   auto add = [&](double Omega, const Eigen::VectorXd& X, bool stable, const char* point, double error) {
     const Eigen::MatrixXd x = phase_states(hb, X, period);
@@ -228,7 +220,7 @@ void add_branch_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& 
   };
   const auto& P = c.branch.points;
   for (std::size_t i = 0; i < P.size(); ++i) add(P[i].omega, P[i].X, i < c.stable.size() && c.stable[i], "branch", NAN);
-  for (const SpeedOrbit& o : speed_orbits(hb, c, period, d)) add(o.Omega, o.X, true, "speed", o.error);
+  for (const SpeedOrbit& o : orbits) add(o.Omega, o.X, true, "speed", o.error);
 }
 
 // Whether a sweep at the orbit's speed is on it: periodic with its period, each of its phase
@@ -249,11 +241,11 @@ bool reached(const BifurcationDiagram& d, double omega, const Eigen::MatrixXd& x
 }
 
 // The points, integrated on the forced model, from the stable orbits of one branch (on its model
-// hb, as speed_orbits) that no sweep at their speed is on (reached).
+// hb, of `period` forcing periods: speed_orbits) that no sweep at their speed is on (reached).
 void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forced, const HarmonicBalance& hb,
-                            const FrequencyCurve& c, int period, const BifurcationDiagram& d,
+                            int period, const std::vector<SpeedOrbit>& orbits, const BifurcationDiagram& d,
                             const BifurcationDiagramOptions& o) {
-  for (const SpeedOrbit& orbit : speed_orbits(hb, c, period, d)) {
+  for (const SpeedOrbit& orbit : orbits) {
     const double omega = period * orbit.Omega;
     const double error = std::isfinite(orbit.error) ? orbit.error : HUGE_VAL;   // no exact flow: its period alone
     if (reached(d, omega, phase_states(hb, orbit.X, period), error + o.period_tol * o.integration.x_scale)) continue;
@@ -265,15 +257,30 @@ void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forc
 
 }  // namespace
 
+SectionOrbits section_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                             const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d) {
+  SectionOrbits s;
+  s.of_branch.push_back(speed_orbits(hb, c, 1, d));
+  for (const auto& b : pd)
+    s.of_branch.push_back(has_points(b) ? speed_orbits(*b.model, b.curve, b.period, d) : std::vector<SpeedOrbit>{});
+  return s;
+}
+
 BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
                                           BifurcationDiagramOptions o) {
+  return diagram_from_hb_orbits(run, hb, c, pd, section_orbits(hb, c, pd, d), d, o);
+}
+
+BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
+                                          const BifurcationDiagram& d, BifurcationDiagramOptions o) {
   o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
   return run.timed("diagram from the HB orbits", [&] {
     BifurcationDiagram out;
-    add_points_from_orbits(out, hb, hb, c, 1, d, o);
-    for (const auto& b : pd)
-      if (has_points(b)) add_points_from_orbits(out, hb, *b.model, b.curve, b.period, d, o);
+    add_points_from_orbits(out, hb, hb, 1, orbits.of_branch.at(0), d, o);
+    for (std::size_t k = 0; k < pd.size(); ++k)
+      if (has_points(pd[k])) add_points_from_orbits(out, hb, *pd[k].model, pd[k].period, orbits.of_branch.at(k + 1), d, o);
     return out;
   });
 }
@@ -281,16 +288,22 @@ BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, c
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale,
                          const std::function<std::vector<Table::Cell>(double)>& lead) {
-  add_branch_rows(t, hb, c, 1, d, q, scale, lead);
+  add_branch_rows(t, hb, c, 1, speed_orbits(hb, c, 1, d), q, scale, lead);
 }
 
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale, const SectionLead& lead) {
-  add_branch_rows(t, hb, c, 1, d, q, scale, [&](double w) { return lead(w, 1, 0); });
+  add_hb_section_rows(t, hb, c, pd, section_orbits(hb, c, pd, d), q, scale, lead);
+}
+
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
+                         const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
+                         const Eigen::VectorXd& q, double scale, const SectionLead& lead) {
+  add_branch_rows(t, hb, c, 1, orbits.of_branch.at(0), q, scale, [&](double w) { return lead(w, 1, 0); });
   for (std::size_t k = 0; k < pd.size(); ++k)
     if (has_points(pd[k]))
-      add_branch_rows(t, *pd[k].model, pd[k].curve, pd[k].period, d, q, scale,
+      add_branch_rows(t, *pd[k].model, pd[k].curve, pd[k].period, orbits.of_branch.at(k + 1), q, scale,
                       [&](double w) { return lead(w, pd[k].period, int(k) + 1); });
 }
 

@@ -109,6 +109,25 @@ std::string period_doubling_help();
 // them within period_tol), any other all its recorded points, a failed one none.
 void add_bifurcation_rows(Table& t, const BifurcationDiagram& d, const Eigen::VectorXd& q, double scale,
                           const std::function<std::vector<Table::Cell>(double)>& lead);
+// A stable orbit of a branch at a speed of the diagram: its base frequency Omega, unknowns X and
+// its own distance to the exact orbit (hb_orbit_error; NaN where the model has no exact flow).
+struct SpeedOrbit {
+  double Omega;
+  Eigen::VectorXd X;
+  double error;
+};
+// The stable orbits of every branch at the speeds of a diagram's up sweep, as add_hb_section_rows
+// solves them (Newton on every segment stable at both ends that brackets the speed; where the
+// model has an exact flow, each corrected by shooting at the speed and kept only if stable and of
+// its period): of_branch[0] the period-1 curve's, of_branch[k + 1] those of branch k of pd (empty
+// for a branch without points). Computed once (section_orbits) for both add_hb_section_rows and
+// diagram_from_hb_orbits: each shooting is paid once.
+struct SectionOrbits {
+  std::vector<std::vector<SpeedOrbit>> of_branch;
+};
+SectionOrbits section_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                             const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d);
+
 // The HB branch at the same section (phase 0), to draw under the Poincare points and to check
 // them (bifurcation_diagram_hb.csv): the cells `lead(omega)`, then scale q' x(phase 0), its
 // Floquet stability (1 | 0) and point: `branch` for every point of the branch (in continuation
@@ -131,6 +150,10 @@ using SectionLead = std::function<std::vector<Table::Cell>(double omega, int per
 void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
                          const Eigen::VectorXd& q, double scale, const SectionLead& lead);
+// The same with the orbits at the diagram's speeds already solved (section_orbits(hb, c, pd, d)).
+void add_hb_section_rows(Table& t, const HarmonicBalance& hb, const FrequencyCurve& c,
+                         const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
+                         const Eigen::VectorXd& q, double scale, const SectionLead& lead);
 std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const std::string& value);
 
 // The diagram checked from the HB side: at every speed of d's up sweep where no sweep is on a
@@ -145,6 +168,10 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
 BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
                                           BifurcationDiagramOptions o);
+// The same from the orbits already solved (section_orbits(hb, c, pd, d)).
+BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
+                                          const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
+                                          const BifurcationDiagram& d, BifurcationDiagramOptions o);
 
 // The bands a program draws its diagram over for the curve c on [omega_min, omega_max]: the one
 // band of the whole range ("range": "whole": speeds given or the library's 200), else
