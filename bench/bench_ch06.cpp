@@ -7,30 +7,16 @@
 
 #include <algorithm>
 
-#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
+#include "../tests/unit/gear_pair_models.hpp"
 
 using namespace gearhb;
 
 namespace {
-HarmonicBalance fig40_model() {
-  const GearPairParameters g;   // thesis values, kc = 5e8 N/m
-  Eigen::VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  return HarmonicBalance(gear_pair_system(g), {gear_pair_mesh(g)},
-                         Excitation{gear_pair_static_torque(g, 1e5), F, Eigen::VectorXd::Zero(6)}, 10);
-}
+HarmonicBalance fig40_model() { return test_models::ch06_gear_pair(1e5); }
 SweepOptions fig40_sweep(bool stability) {
-  SweepOptions o;
-  o.omega_min = 2000.0;
-  o.omega_max = 62000.0;
-  o.continuation.ds_max = 0.005;
-  o.continuation.tolerance = 1e-9;
-  o.continuation.corrector_max_iterations = 12;
-  o.continuation.ds_min = 1e-8;
-  o.stability = stability ? StabilityMethod::floquet : StabilityMethod::none;
-  return o;
+  return test_models::ch06_sweep(stability ? StabilityMethod::floquet : StabilityMethod::none);
 }
 }  // namespace
 
@@ -62,11 +48,7 @@ BENCHMARK(BM_ch06_floquet_point)->Unit(benchmark::kMicrosecond);
 // an LU of 2H+2 rows) or dense (DenseLinearization: an LU of 6(2H+1)+1 rows).
 static void BM_ch06_bordered_solve(benchmark::State& state) {
   const int H = int(state.range(0));
-  const GearPairParameters g;
-  Eigen::VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
-                           Excitation{gear_pair_static_torque(g, 1e5), F, Eigen::VectorXd::Zero(6)}, H);
+  const HarmonicBalance hb = test_models::ch06_gear_pair(1e5, H);
   const double w = 9000.0;
   const Scaling s = hb.scaling(2000.0, 62000.0);
   const Eigen::VectorXd X = 20.0 * hb.closed_contact_solution(w);   // intermittent contact

@@ -9,30 +9,22 @@
 //   build/bin/gearhb_bench --benchmark_filter=orbit_branch
 #include <benchmark/benchmark.h>
 
-#include "gearhb/gears/pair/gear_pair.hpp"
 #include "gearhb/hb/orbit_branch.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "../tests/unit/gear_pair_models.hpp"
+#include "../tests/unit/test_models.hpp"
 
 using namespace gearhb;
 
 static void BM_orbit_branch_fig41_isola(benchmark::State& state) {
-  const GearPairParameters g;
-  Eigen::VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
-                           Excitation{gear_pair_static_torque(g, 1e7), F, Eigen::VectorXd::Zero(6)}, 10);
+  const HarmonicBalance hb = test_models::ch06_gear_pair(1e7);
   const double w = 13700.0;
   TimeIntegrationOptions to;
   to.x_scale = 1e-3;
   Eigen::VectorXd x0, v0;
   hb_initial_state(hb, hb.closed_contact_solution(w), w, x0, v0);
   const SteadyState s = TimeIntegrator(hb).steady_state(x0, v0, w, to);
-  SweepOptions o;
-  o.omega_min = 2000.0;
-  o.omega_max = 62000.0;
-  o.continuation.ds_max = 0.005;
-  o.continuation.tolerance = 1e-9;
-  o.continuation.ds_min = 1e-8;
+  const SweepOptions o = test_models::ch06_sweep();
   for (auto _ : state) {
     const OrbitBranch b = branch_from_orbit(hb, s.x0, s.v0, w, 1, o);
     state.counters["ok"] = b.ok ? 1.0 : 0.0;
@@ -43,19 +35,10 @@ static void BM_orbit_branch_fig41_isola(benchmark::State& state) {
 BENCHMARK(BM_orbit_branch_fig41_isola)->Unit(benchmark::kMillisecond);
 
 static void BM_orbit_branch_one_sided(benchmark::State& state) {
-  const int H = 12;
-  LinearSystem sys;
-  sys.M = Eigen::MatrixXd::Ones(1, 1);
-  sys.C = 0.1 * sys.M;
-  sys.K = Eigen::MatrixXd::Ones(1, 1);
-  UnilateralContact c{Eigen::VectorXd::Ones(1), 4.0, -1.0, Eigen::VectorXd::Zero(2 * H + 1)};
-  const HarmonicBalance hb(sys, {c}, Excitation{Eigen::VectorXd::Zero(1), Eigen::VectorXd::Constant(1, 0.5),
-                                                Eigen::VectorXd::Zero(1)}, H);
+  const HarmonicBalance hb = test_models::one_sided_clearance();
   const SteadyState s = TimeIntegrator(hb).steady_state(Eigen::VectorXd::Constant(1, 4.0), Eigen::VectorXd::Zero(1),
                                                         1.26, TimeIntegrationOptions{});
-  SweepOptions o;
-  o.omega_min = 0.5;
-  o.omega_max = 3.0;
+  const SweepOptions o = test_models::one_sided_clearance_range();
   for (auto _ : state) {
     const OrbitBranch b = branch_from_orbit(hb, s.x0, s.v0, 1.26, 1, o);
     state.counters["ok"] = b.ok ? 1.0 : 0.0;

@@ -555,6 +555,82 @@ void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const V
   key.add("orbit_branch_bifurcations" + tag, double(b.curve.bifurcations.size()), "-");
 }
 
+// Step 3c, its first part: from each orbit of `off` (in order) that lies on none of the branches
+// found so far, branch_from_orbit (at most 4 branches, 6 attempts); `left`: the orbits off every
+// branch that started none (a failed attempt, or past the limits).
+std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label, const HarmonicBalance& hb,
+                                              const std::vector<const DiagramPoint*>& off, const SweepOptions& o,
+                                              double tol, int& left) {
+  std::vector<OrbitBranch> found;
+  std::vector<BranchView> mine;
+  int attempts = 0;
+  left = 0;
+  for (const DiagramPoint* p : off) {
+    if (!off_every_branch(*p, mine, tol)) continue;
+    if (found.size() >= 4 || attempts >= 6) {
+      ++left;
+      continue;
+    }
+    ++attempts;
+    OrbitBranch b = run.timed("orbit branch " + label, [&] {
+      return branch_from_orbit(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, o);
+    });
+    run.say(label + ": " + b.why);
+    if (!b.ok) {
+      ++left;
+      continue;
+    }
+    found.push_back(std::move(b));
+    mine.clear();
+    for (const auto& f : found) mine.push_back({f.model.get(), &f.curve, f.period});
+  }
+  return found;
+}
+
+// The continued curve's largest swing Delta_max - Delta_min (to compare the orbit branches with).
+double curve_swing(const HarmonicBalance& hb, const FrequencyCurve& c, const VectorXd& T2) {
+  const ResponseEvaluator ev(hb, T2, 256);
+  double swing = 0.0;
+  for (const auto& q : c.branch.points) {
+    const ResponseSummary r = ev.summarize(q.X);
+    swing = std::max(swing, r.x_max - r.x_min);
+  }
+  return swing;
+}
+
+// Step 3c, the check of orbit branch b against the time integration (suffix `tag`):
+// orbit_branch_diagram_speeds (the off-curve orbits on b within HB's own error), and
+// orbit_branch_stability_agrees: at each of them b's Floquet stability (both ends of its chord; a
+// chord at a stability change skipped) is that of the integrated orbit's GSL monodromy, and at
+// orbit_branch_unstable_checked (up to 3) unstable points spread over its unstable stretches
+// (both neighbours unstable), the GSL monodromy from the orbit corrected by shooting has a
+// multiplier outside the unit circle too. xs: the integration's x_scale.
+void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const OrbitBranch& b,
+                         const std::vector<const DiagramPoint*>& off, double tol, double xs, const std::string& tag) {
+  int on = 0, agree = 1;
+  const auto& st = b.curve.stable;
+  for (const DiagramPoint* p : off) {
+    if (p->n != b.period) continue;
+    const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p->x, p->n, p->omega);
+    if (!(bd.distance <= bd.bound + tol)) continue;
+    ++on;
+    if (st[std::size_t(bd.chord)] != st[std::size_t(bd.chord) + 1]) continue;
+    const bool attracts = integrated_multiplier(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, xs) < 1.0;
+    agree = agree && attracts == st[std::size_t(bd.chord)];
+  }
+  std::vector<std::size_t> unstable;
+  for (std::size_t i = 1; i + 1 < st.size(); ++i)
+    if (!st[i - 1] && !st[i] && !st[i + 1] && b.curve.floquet[i].corrected) unstable.push_back(i);
+  for (int j = 0; j < 3 && !unstable.empty(); ++j) {
+    const std::size_t i = unstable[unstable.size() * std::size_t(2 * j + 1) / 6];
+    const PointFloquet& f = b.curve.floquet[i];
+    agree = agree && integrated_multiplier(hb, f.x0, f.v0, b.period * b.curve.branch.points[i].omega, b.period, xs) > 1.0;
+  }
+  key.add("orbit_branch_unstable_checked" + tag, double(std::min<std::size_t>(3, unstable.size())), "-");
+  key.add("orbit_branch_diagram_speeds" + tag, on, "-");
+  key.add("orbit_branch_stability_agrees" + tag, agree, "-");
+}
+
 // Step 3c (issue 34): the HB branches through the diagram's periodic orbits that lie on none of
 // the curve's branches (the period-1 curve and its period-doubled branches; hb/orbit_branch.hpp
 // off_every_branch, tolerance the classifier's resolution period_tol x x_scale). From the first
@@ -581,69 +657,20 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = BifurcationDiagramOptions{}.period_tol * xs;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
   const std::vector<const DiagramPoint*> off = off_branch_orbits(d, branch_views(hb, c, branches), tol);
-  std::vector<OrbitBranch> found;
-  std::vector<BranchView> mine;
-  int left = 0, attempts = 0;
-  for (const DiagramPoint* p : off) {
-    if (!off_every_branch(*p, mine, tol)) continue;
-    if (found.size() >= 4 || attempts >= 6) {
-      ++left;
-      continue;
-    }
-    ++attempts;
-    OrbitBranch b = run.timed("orbit branch " + cs.label, [&] {
-      return branch_from_orbit(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, o);
-    });
-    run.say(cs.label + ": " + b.why);
-    if (!b.ok) {
-      ++left;
-      continue;
-    }
-    found.push_back(std::move(b));
-    mine.clear();
-    for (const auto& f : found) mine.push_back({f.model.get(), &f.curve, f.period});
-  }
+  int left = 0;
+  const std::vector<OrbitBranch> found = branches_from_orbits(run, cs.label, hb, off, o, tol, left);
   KeyNumbers& key = run.key_numbers();
   key.add("off_curve_orbits_" + cs.label, double(off.size()), "-");
   key.add("off_curve_orbits_left_" + cs.label, double(left), "-");
   key.add("orbit_branches_" + cs.label, double(found.size()), "-");
-  const ResponseEvaluator ev(hb, T2, 256);   // the continued curve's largest swing, to compare
-  double curve_swing = 0.0;
-  for (const auto& q : c.branch.points) {
-    const ResponseSummary r = ev.summarize(q.X);
-    curve_swing = std::max(curve_swing, r.x_max - r.x_min);
-  }
-  key.add("curve_swing_" + cs.label, curve_swing, "m");
+  key.add("curve_swing_" + cs.label, curve_swing(hb, c, T2), "m");
   Intervals stable = stable_intervals(c);
   for (std::size_t k = 0; k < found.size(); ++k) {
     const OrbitBranch& b = found[k];
     const std::string tag = "_" + cs.label + "_" + std::to_string(k + 1);
     branches.push_back(table_branch(b));
     orbit_branch_numbers(key, b, int(branches.size()), T2, o, tag);
-    int on = 0, agree = 1;
-    const auto& st = b.curve.stable;
-    for (const DiagramPoint* p : off) {
-      if (p->n != b.period) continue;
-      const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p->x, p->n, p->omega);
-      if (!(bd.distance <= bd.bound + tol)) continue;
-      ++on;
-      if (st[std::size_t(bd.chord)] != st[std::size_t(bd.chord) + 1]) continue;
-      const bool attracts = integrated_multiplier(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, xs) < 1.0;
-      agree = agree && attracts == st[std::size_t(bd.chord)];
-    }
-    // the unstable stretches no diagram visits: at up to 3 unstable points spread over them (both
-    // neighbours unstable), the GSL monodromy from the point's orbit corrected by shooting
-    std::vector<std::size_t> unstable;
-    for (std::size_t i = 1; i + 1 < st.size(); ++i)
-      if (!st[i - 1] && !st[i] && !st[i + 1] && b.curve.floquet[i].corrected) unstable.push_back(i);
-    for (int j = 0; j < 3 && !unstable.empty(); ++j) {
-      const std::size_t i = unstable[unstable.size() * std::size_t(2 * j + 1) / 6];
-      const PointFloquet& f = b.curve.floquet[i];
-      agree = agree && integrated_multiplier(hb, f.x0, f.v0, b.period * b.curve.branch.points[i].omega, b.period, xs) > 1.0;
-    }
-    key.add("orbit_branch_unstable_checked" + tag, double(std::min<std::size_t>(3, unstable.size())), "-");
-    key.add("orbit_branch_diagram_speeds" + tag, on, "-");
-    key.add("orbit_branch_stability_agrees" + tag, agree, "-");
+    orbit_branch_checks(key, hb, b, off, tol, xs, tag);
     if (b.period == 1) {
       const Intervals more = stable_intervals(b.curve);
       stable.insert(stable.end(), more.begin(), more.end());

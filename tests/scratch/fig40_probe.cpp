@@ -22,6 +22,7 @@
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "../unit/gear_pair_models.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -31,24 +32,10 @@ namespace {
 
 const GearPairParameters kGear;
 
-HarmonicBalance fig40(int H) {
-  VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  return HarmonicBalance(gear_pair_system(kGear), {gear_pair_mesh(kGear)},
-                         Excitation{gear_pair_static_torque(kGear, 1e5), F, VectorXd::Zero(6)}, H);
-}
+HarmonicBalance fig40(int H) { return test_models::ch06_gear_pair(1e5, H); }
 
 // The chapter's Fig. 40 curve (ch06 main.cpp: sweep(), Corrector): 2-62 krad/s, ds_max 0.005.
-FrequencyCurve fig40_curve(const HarmonicBalance& hb) {
-  SweepOptions o;
-  o.omega_min = 2000.0;
-  o.omega_max = 62000.0;
-  o.continuation.ds_max = 0.005;
-  o.continuation.tolerance = 1e-9;
-  o.continuation.corrector_max_iterations = 12;
-  o.continuation.ds_min = 1e-8;
-  return sweep_frequency(hb, o, "fig40");
-}
+FrequencyCurve fig40_curve(const HarmonicBalance& hb) { return sweep_frequency(hb, test_models::ch06_sweep(), "fig40"); }
 
 // Delta at phase 0 of the Poincare points of 64 periods after `transient` from (x0, v0): min, max.
 void poincare_range(const HarmonicBalance& hb, const VectorXd& x0, const VectorXd& v0, double w, int transient,

@@ -29,6 +29,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "gear_pair_models.hpp"
 #include "test_models.hpp"
 
 using namespace gearhb;
@@ -319,13 +320,9 @@ TEST(BifurcationDiagram, GearPairDiagramScalesWithTheLoads) {
 // (a probe run found the same at 13.65 krad/s; at 13.80 the integration from that start is not
 // period 1).
 TEST(BifurcationDiagram, Fig41IntegratedLargeOrbitIsAStableHbOrbit) {
-  const GearPairParameters g;
-  Eigen::VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
-                           Excitation{gear_pair_static_torque(g, 1e7), F, VectorXd::Zero(6)}, 10);
+  const HarmonicBalance hb = test_models::ch06_gear_pair(1e7);
   const double w = 13700.0;
-  const VectorXd T2 = gear_pair_T2(g);
+  const VectorXd T2 = gear_pair_T2(GearPairParameters{});
   TimeIntegrationOptions o;
   o.x_scale = 1e-3;
   o.samples_per_period = 256;

@@ -17,6 +17,7 @@
 #include "gearhb/hb/floquet.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "gear_pair_models.hpp"
 
 using namespace gearhb;
 using Eigen::MatrixXd;
@@ -27,28 +28,13 @@ namespace {
 const GearPairParameters kGear;
 constexpr double kXScale = 1e-5;   // the order of Fig. 40's Delta in this band [m]
 
-HarmonicBalance fig40(int H) {
-  VectorXd F(6);
-  F << 1e4, 0.0, 1e4, 1e4, 0.0, 1e4;
-  return HarmonicBalance(gear_pair_system(kGear), {gear_pair_mesh(kGear)},
-                         Excitation{gear_pair_static_torque(kGear, 1e5), F, VectorXd::Zero(6)}, H);
-}
+HarmonicBalance fig40(int H) { return test_models::ch06_gear_pair(1e5, H); }
 
 // The chapter's H = 10 branch (its continuation settings; no stability: the tests take the
 // multipliers themselves).
 const FrequencyCurve& fig40_curve() {
   static const HarmonicBalance hb = fig40(10);
-  static const FrequencyCurve c = [] {
-    SweepOptions o;
-    o.omega_min = 2000.0;
-    o.omega_max = 62000.0;
-    o.stability = StabilityMethod::none;
-    o.continuation.ds_max = 0.005;
-    o.continuation.tolerance = 1e-9;
-    o.continuation.corrector_max_iterations = 12;
-    o.continuation.ds_min = 1e-8;
-    return sweep_frequency(hb, o, "fig40");
-  }();
+  static const FrequencyCurve c = sweep_frequency(hb, test_models::ch06_sweep(StabilityMethod::none), "fig40");
   return c;
 }
 

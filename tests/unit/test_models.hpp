@@ -81,20 +81,41 @@ inline gearhb::SweepOptions nlvib_ex03_sweep(gearhb::StabilityMethod stability) 
 
 namespace test_models {
 
+// A unit mass with damping c and stiffness k.
+inline gearhb::LinearSystem unit_oscillator(double c, double k) {
+  return {Eigen::MatrixXd::Ones(1, 1), Eigen::MatrixXd::Constant(1, 1, c), Eigen::MatrixXd::Constant(1, 1, k)};
+}
+
 // The Kahraman & Singh (1990) clearance oscillator, scaled: x'' + 0.1 x' + f(x) = 0.1 + Fa
 // cos(Omega t), f the dead zone of half-width 1 (two contacts of unit stiffness).
 inline gearhb::HarmonicBalance kahraman_singh(double Fa, int H = 20) {
-  using Eigen::MatrixXd;
   using Eigen::VectorXd;
-  gearhb::LinearSystem s;
-  s.M = MatrixXd::Ones(1, 1);
-  s.C = 0.1 * s.M;
-  s.K = MatrixXd::Zero(1, 1);
+  const gearhb::LinearSystem s = unit_oscillator(0.1, 0.0);
   gearhb::UnilateralContact drive{VectorXd::Ones(1), 1.0, -1.0, VectorXd::Zero(2 * H + 1)};
   gearhb::UnilateralContact back = drive;
   back.normal = -drive.normal;
   return gearhb::HarmonicBalance(
       s, {drive, back}, gearhb::Excitation{VectorXd::Constant(1, 0.1), VectorXd::Constant(1, Fa), VectorXd::Zero(1)}, H);
+}
+
+}  // namespace test_models
+
+namespace test_models {
+
+// The one-sided clearance oscillator x'' + 0.1 x' + x + 4 max(x - 1, 0) = 0.5 cos(omega t): a
+// hardening contact whose resonance leans right between two folds, two stable orbits coexisting
+// at omega = 1.26 (tests/unit/test_orbit_branch.cpp); its range 0.5-3 rad/s.
+inline gearhb::HarmonicBalance one_sided_clearance(int H = 12) {
+  using Eigen::VectorXd;
+  const gearhb::LinearSystem s = unit_oscillator(0.1, 1.0);
+  gearhb::UnilateralContact c{VectorXd::Ones(1), 4.0, -1.0, VectorXd::Zero(2 * H + 1)};
+  return gearhb::HarmonicBalance(s, {c}, gearhb::Excitation{VectorXd::Zero(1), VectorXd::Constant(1, 0.5),
+                                                            VectorXd::Zero(1)}, H);
+}
+inline gearhb::SweepOptions one_sided_clearance_range() {
+  gearhb::SweepOptions o;
+  o.omega_min = 0.5, o.omega_max = 3.0;
+  return o;
 }
 
 }  // namespace test_models

@@ -34,21 +34,9 @@ namespace {
 
 const double OMEGA = 1.26;
 
-HarmonicBalance one_sided(int H = 12) {
-  LinearSystem s;
-  s.M = MatrixXd::Ones(1, 1);
-  s.C = 0.1 * s.M;
-  s.K = MatrixXd::Ones(1, 1);
-  UnilateralContact c{VectorXd::Ones(1), 4.0, -1.0, VectorXd::Zero(2 * H + 1)};
-  return HarmonicBalance(s, {c}, Excitation{VectorXd::Zero(1), VectorXd::Constant(1, 0.5), VectorXd::Zero(1)}, H);
-}
+HarmonicBalance one_sided(int H = 12) { return test_models::one_sided_clearance(H); }
 
-SweepOptions range() {
-  SweepOptions o;
-  o.omega_min = 0.5;
-  o.omega_max = 3.0;
-  return o;
-}
+SweepOptions range() { return test_models::one_sided_clearance_range(); }
 
 // The periodic orbit reached from x(0) = x_start, v(0) = 0 (its state at phase 0).
 SteadyState settle(const HarmonicBalance& hb, double x_start, double omega) {

@@ -19,6 +19,7 @@
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "gear_pair_models.hpp"
 #include "test_models.hpp"
 
 using namespace gearhb;
@@ -327,17 +328,8 @@ TEST(PeriodDoubling, GearPairDoublingInTheStepOfANeimarkSackerIsLocatedAndEndsTh
   // located (the parity of the real multipliers below -1 changes on the step), checked against
   // GSL's variational monodromy (rk8pd on the original model, independent of the exact-flow
   // exponentials), and the branch from 9290 ends at it.
-  GearPairParameters g;
-  Eigen::VectorXd fc(6);
-  fc << 1e4, 0, 1e4, 1e4, 0, 1e4;
-  const HarmonicBalance hb(gear_pair_system(g), {gear_pair_mesh(g)},
-                           Excitation{gear_pair_static_torque(g, 1e5), fc, Eigen::VectorXd::Zero(6)}, 10);
-  SweepOptions o;
-  o.omega_min = 2000;
-  o.omega_max = 62000;
-  o.continuation.ds_max = 0.005;
-  o.continuation.tolerance = 1e-9;
-  o.continuation.ds_min = 1e-8;
+  const HarmonicBalance hb = test_models::ch06_gear_pair(1e5);
+  const SweepOptions o = test_models::ch06_sweep();
   const FrequencyCurve c = sweep_frequency(hb, o, "fig40");
   ASSERT_TRUE(c.complete) << c.failure;
   int found = -1, next = -1;
