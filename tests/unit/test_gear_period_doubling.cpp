@@ -15,7 +15,9 @@
 
 #include <gtest/gtest.h>
 
+#include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
+#include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -53,6 +55,22 @@ const std::vector<PeriodDoubledBranch>& light_cascade() {
   static const std::vector<PeriodDoubledBranch> all = period_doubling_cascade(light().hb, light().c, light().o, 2);
   return all;
 }
+
+// The same mesh over gearhb_gear's whole speed range (thesis_pair_light_load.json: 300-5000 Hz
+// mesh frequency, ds_max 0.05) and its branches to depth 2 as the program computes them
+// (`--set period_doubling.depth=2`: all[k] is branch k + 1 of frc_1.csv). About 4 s.
+struct LightLoadWhole {
+  HarmonicBalance hb;
+  SweepOptions o;
+  FrequencyCurve c;
+  std::vector<PeriodDoubledBranch> all;
+  LightLoadWhole() : hb(gear_mesh_model(LightLoad::mesh(), MeshDofs::one_dof, {}, 10, 0, DteModel::constant)) {
+    o.omega_min = 2.0 * M_PI * 300.0, o.omega_max = 2.0 * M_PI * 5000.0;
+    o.continuation.ds_max = 0.05;
+    c = sweep_frequency(hb, o, "light load, whole range");
+    all = period_doubling_cascade(hb, c, o, 2);
+  }
+};
 
 // GSL rk8pd on the ORIGINAL model at the mesh frequency from point i's HB state of branch b
 // (period p mesh periods): `transient` mesh periods (a multiple of p), then p more; the state
@@ -209,4 +227,55 @@ TEST(GearPeriodDoubling, EverySmoothPeriodDoublingSwitchesFromACriticalMultiplie
     EXPECT_LT(nearest, 1e-4) << b.why;
   }
   EXPECT_GE(switches, 5);
+}
+
+TEST(GearPeriodDoubling, LightLoadNarrowStablePeriodFourStretchesAttractTheTimeIntegration) {
+  // gearhb_gear's light-load example at depth 2: its period-4 branch 6 is stable on two stretches
+  // near 2206 and 2262 rpm narrower than one continuation step (each holds one point, between a
+  // fold and a period doubling: |mu| 0.43 and 0.44), far narrower than the bifurcation diagram's
+  // speed spacing (99 rpm), so no diagram speed and no from_hb start ever reached them. At each
+  // stable point of the branch between two unstable ones, the time integration of the ORIGINAL
+  // mesh model (GSL rk8pd, contact switches located) started on HB's period-4 orbit:
+  //  - as from_hb integrates it (diagram_point, the sweeps' options): periodic with n = 4, and
+  //    each of HB's four states at phase 0 within HB's own error (hb_orbit_error) plus the
+  //    classifier's resolution (period_tol x_scale) of a Poincare point;
+  //  - 2000 mesh periods on: back at the shooting-corrected state (exact flow) every four mesh
+  //    periods and not every two (expect_period_p).
+  static const LightLoadWhole e;
+  ASSERT_TRUE(e.c.complete) << e.c.failure;
+  ASSERT_GE(e.all.size(), 6u);
+  const PeriodDoubledBranch& b = e.all[5];   // branch 6
+  ASSERT_EQ(b.period, 4);
+  ASSERT_TRUE(has_points(b)) << b.why;
+  const TimeIntegrator ti(e.hb);
+  TimeIntegrationOptions to;
+  to.x_scale = e.c.scaling.x[0];
+  BifurcationDiagramOptions bo;
+  bo.integration.x_scale = to.x_scale;
+  const auto& P = b.curve.branch.points;
+  const auto& st = b.curve.stable;
+  std::vector<double> rpm;
+  for (std::size_t i = 1; i + 1 < P.size(); ++i) {
+    if (!st[i] || st[i - 1] || st[i + 1]) continue;
+    const PointFloquet& f = b.curve.floquet[i];
+    ASSERT_TRUE(f.corrected);
+    const double omega = 4.0 * P[i].omega;   // the mesh frequency
+    Eigen::VectorXd x0, v0;
+    hb_initial_state(*b.model, P[i].X, P[i].omega, x0, v0);
+    const DiagramPoint dp = diagram_point(e.hb, omega, x0, v0, bo);
+    EXPECT_EQ(dp.motion, Motion::periodic) << omega;
+    EXPECT_EQ(dp.n, 4) << omega;
+    const Eigen::MatrixXd states = phase_states(*b.model, P[i].X, 4);
+    for (int j = 0; j < 4; ++j) {
+      double nearest = INFINITY;
+      for (Eigen::Index r = 0; r < dp.x.rows(); ++r)
+        nearest = std::min(nearest, (dp.x.row(r).transpose() - states.col(j)).cwiseAbs().maxCoeff());
+      EXPECT_LE(nearest, f.orbit_error + bo.period_tol * bo.integration.x_scale) << omega << ", phase " << j;
+    }
+    Eigen::MatrixXd xs, vs;
+    expect_period_p(ti, b, i, 2000, to, 1e-3, xs, vs);
+    rpm.push_back(60.0 * omega / (2.0 * M_PI) / 50.0);   // z1 = 50
+  }
+  ASSERT_EQ(rpm.size(), 2u);
+  for (double n : rpm) EXPECT_TRUE(std::fabs(n - 2206.0) < 2.0 || std::fabs(n - 2262.5) < 2.0) << n;
 }

@@ -188,19 +188,6 @@ std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyC
   return out;
 }
 
-// x at phase 0 of each of the `period` forcing periods of the orbit X of hb (columns; base phase
-// 2 pi j / period).
-Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X, int period) {
-  const int n = hb.dofs(), H = hb.harmonics();
-  Eigen::MatrixXd x(n, period);
-  for (int j = 0; j < period; ++j) {
-    const double phi = 2.0 * M_PI * j / period;
-    x.col(j) = X.segment(hb.index(0, 0), n);
-    for (int l = 1; l <= H; ++l)
-      x.col(j) += std::cos(l * phi) * X.segment(hb.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hb.index(2 * l, 0), n);
-  }
-  return x;
-}
 
 // The rows of one branch: at each point, then at each of its orbits at the diagram's speeds
 // (speed_orbits), its `period` values at phase 0 of its forcing periods (phase_states).
@@ -256,6 +243,18 @@ void add_points_from_orbits(BifurcationDiagram& out, const HarmonicBalance& forc
 }
 
 }  // namespace
+
+Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X, int period) {
+  const int n = hb.dofs(), H = hb.harmonics();
+  Eigen::MatrixXd x(n, period);
+  for (int j = 0; j < period; ++j) {
+    const double phi = 2.0 * M_PI * j / period;
+    x.col(j) = X.segment(hb.index(0, 0), n);
+    for (int l = 1; l <= H; ++l)
+      x.col(j) += std::cos(l * phi) * X.segment(hb.index(2 * l - 1, 0), n) + std::sin(l * phi) * X.segment(hb.index(2 * l, 0), n);
+  }
+  return x;
+}
 
 SectionOrbits section_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
                              const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d) {

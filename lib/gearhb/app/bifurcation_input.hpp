@@ -128,6 +128,11 @@ struct SectionOrbits {
 SectionOrbits section_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
                              const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d);
 
+// The states x at phase 0 of each of the `period` forcing periods of the orbit X of hb (hb's base
+// frequency omega / period): column j at base phase 2 pi j / period, the Poincare points of a
+// period-`period` motion.
+Eigen::MatrixXd phase_states(const HarmonicBalance& hb, const Eigen::VectorXd& X, int period);
+
 // The HB branch at the same section (phase 0), to draw under the Poincare points and to check
 // them (bifurcation_diagram_hb.csv): the cells `lead(omega)`, then scale q' x(phase 0), its
 // Floquet stability (1 | 0) and point: `branch` for every point of the branch (in continuation
