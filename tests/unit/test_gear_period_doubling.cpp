@@ -12,6 +12,7 @@
 //    stability flags of the points themselves.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 #include <gtest/gtest.h>
 
@@ -266,15 +267,20 @@ TEST(GearPeriodDoubling, LightLoadNarrowStablePeriodFourStretchesAttractTheTimeI
     EXPECT_EQ(dp.motion, Motion::periodic) << omega;
     EXPECT_EQ(dp.n, 4) << omega;
     const Eigen::MatrixXd states = phase_states(*b.model, P[i].X, 4);
+    double farthest = 0.0;
     for (int j = 0; j < 4; ++j) {
       double nearest = INFINITY;
       for (Eigen::Index r = 0; r < dp.x.rows(); ++r)
         nearest = std::min(nearest, (dp.x.row(r).transpose() - states.col(j)).cwiseAbs().maxCoeff());
       EXPECT_LE(nearest, f.orbit_error + bo.period_tol * bo.integration.x_scale) << omega << ", phase " << j;
+      farthest = std::max(farthest, nearest);
     }
     Eigen::MatrixXd xs, vs;
     expect_period_p(ti, b, i, 2000, to, 1e-3, xs, vs);
     rpm.push_back(60.0 * omega / (2.0 * M_PI) / 50.0);   // z1 = 50
+    std::printf("branch 6 at %.4f rpm: |mu| %.4f, %s n = %d after %d transient periods; HB's phase-0 values %.3g m "
+                "from the Poincare points, hb_orbit_error %.3g m\n", rpm.back(), f.modulus, to_string(dp.motion), dp.n,
+                dp.transient, farthest, f.orbit_error);
   }
   ASSERT_EQ(rpm.size(), 2u);
   for (double n : rpm) EXPECT_TRUE(std::fabs(n - 2206.0) < 2.0 || std::fabs(n - 2262.5) < 2.0) << n;
