@@ -6,6 +6,8 @@
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
+#include <cmath>
+#include <ctime>
 
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
@@ -106,3 +108,38 @@ static void BM_ch06_fig40_diagram(benchmark::State& state) {
 }
 BENCHMARK(BM_ch06_fig40_diagram)->ArgsProduct({{0, 1}, {0, 1}})->ArgNames({"down_from_hb", "sequential_stop"})->Unit(benchmark::kSecond)
     ->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();
+
+// What one speed of Fig. 40's diagram costs above 12 krad/s (the chapter's bands there, step 3b
+// of its README): 4 speeds each way from `lo` rad/s in the band's step (12.7 krad/s: chaos, 100
+// rad/s; 36 krad/s: the period-3 orbit, 200; 40 krad/s: chaos, 200; 60 krad/s: period 2, 500),
+// the chapter's options there (period_tol 1e-8, lyapunov_min_periods 50, x_scale the whole
+// curve's), the up sweep from the curve's orbit nearest lo, the down sweep after it (one
+// thread). The curve is outside the timing. cpu_s_per_speed: the process' CPU time / 8.
+static void BM_ch06_fig40_diagram_speed(benchmark::State& state) {
+  static const HarmonicBalance hb = fig40_model();
+  static const FrequencyCurve c = require_complete(sweep_frequency(hb, fig40_sweep(false), "bench"), "bench");
+  const double lo = double(state.range(0)), step = double(state.range(1));
+  const auto nearest = std::min_element(c.branch.points.begin(), c.branch.points.end(), [lo](const auto& a, const auto& b) {
+    return std::abs(a.omega - lo) < std::abs(b.omega - lo);
+  });
+  Eigen::VectorXd x0, v0;
+  hb_initial_state(hb, nearest->X, nearest->omega, x0, v0);
+  BifurcationDiagramOptions d;
+  d.speeds = 4;
+  d.period_tol = 1e-8;
+  d.lyapunov_min_periods = 50;
+  d.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
+  long periodic = 0;
+  double cpu = 0.0;
+  for (auto _ : state) {
+    const std::clock_t t0 = std::clock();
+    const BifurcationDiagram b = bifurcation_diagram(hb, lo, lo + 3.0 * step, x0, v0, d);
+    cpu = double(std::clock() - t0) / CLOCKS_PER_SEC;
+    periodic = 0;
+    for (const DiagramPoint& p : b.points) periodic += p.motion == Motion::periodic;
+  }
+  state.counters["periodic_speeds"] = double(periodic);
+  state.counters["cpu_s_per_speed"] = cpu / 8.0;
+}
+BENCHMARK(BM_ch06_fig40_diagram_speed)->Args({12700, 100})->Args({36000, 200})->Args({40000, 200})->Args({60000, 500})
+    ->ArgNames({"lo", "step"})->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime()->MeasureProcessCPUTime();

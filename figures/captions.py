@@ -119,9 +119,11 @@ CHAPTERS = [
         ("figS46_*.png", "supplement S46", "Beyond Fig. 43's first period doubling. Notice the time-integrated orbit "
          "repeats after two forcing periods, not one; dashed: the unstable period-1 orbit of harmonic balance."),
         ("figS47_ch06_diagram_fig40.png", "supplement S47", "What the gear does where Fig. 40 has no stable "
-         "period-1 orbit below 12 krad/s: the bifurcation diagram by time integration (GSL rk8pd, the speed stepped "
-         "up then down over 7.5-11.2 krad/s, 75 speeds each way, and over 11.5-12.0 krad/s, 21 speeds each way; the "
-         "mesh deflection once per forcing period) under the harmonic-balance branches. Notice chaotic motion (red) in both sweeps over 8.45-8.65, 8.8-9.0 and "
+         "period-1 orbit: the bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over "
+         "eight bands, 255 speeds each way; the mesh deflection once per forcing period) under the harmonic-balance "
+         "branches, in four columns: 7.5-12 krad/s (bands 7.5-11.2 and 11.5-12.0 krad/s, 75 and 21 speeds), "
+         "12.4-15.5, 17.6-18.4 and 26.2-62 krad/s (hatched: between two bands, no diagram; the HB curves may leave "
+         "the panel there). First column: notice chaotic motion (red) in both sweeps over 8.45-8.65, 8.8-9.0 and "
          "9.3-10.1 krad/s and most of 10.35-10.65 krad/s, also at 8.25 and 9.3 krad/s where HB's period-1 orbit is "
          "stable and at 8.0, 9.0 and 10.35 krad/s where a period-2 branch of HB is: there attractors coexist, and the "
          "time integration started on the HB orbit stays on it (hollow diamonds; CTest "
@@ -133,8 +135,13 @@ CHAPTERS = [
          "correction fails, so their stability is not resolved at H = 10. At 7.75-7.9 krad/s such points are drawn "
          "unstable, but the orbit is stable (H = 14) and the sweeps sit on it (chapter README, step 3b). In the "
          "second band, the Neimark-Sacker stretch 11.63-11.87 krad/s: quasi-periodic (green), then chaotic from "
-         "11.7 krad/s, and the up sweep stays chaotic to 11.9 krad/s. The seven unstable stretches from 12.7 krad/s "
-         "up are not in the bands."),
+         "11.7 krad/s, and the up sweep stays chaotic to 11.9 krad/s. Second column: chaos at 12.7-13.3 krad/s in "
+         "both sweeps, then period 2 on HB's period-2 branch to 15.1 krad/s (period 4 at 14.2 krad/s, past that "
+         "branch's period doubling at 14.20). Third: at 17.7-18.4 krad/s mostly period 4 (chaos at 17.8-17.85 krad/s), "
+         "the down sweep back on HB's period-1 orbit from 18.25. Fourth: period 2 and chaos at 26.3-27.3 krad/s; a period-3 orbit at 34.8-37.6 and 42.6-43.5 "
+         "krad/s, also where HB's period-1 orbit is stable (34.8-35.0, 42.6-42.9 krad/s: the start on HB's orbit "
+         "stays on it, two attractors); quasi-periodic at 36.4-39.0 and 43.4-46.5, chaotic at 39.8-41.0 krad/s; "
+         "period 2 on HB's period-2 branch at 47.5-52 and 55-62 krad/s, period 4 and chaos at 52.5-54.5 krad/s."),
         ("figS47_ch06_diagram_fig41.png", "supplement S47", "What the gear does where Fig. 41 has no stable "
          "period-1 orbit: the bifurcation diagram by time integration over 13.4-14.0 krad/s (41 speeds each way) "
          "under the harmonic-balance branches. Notice the up sweep leaves HB's orbit at 13.595 krad/s for a period-1 "
@@ -147,18 +154,21 @@ CHAPTERS = [
          "their orbits stays on them (hollow diamonds): two stable period-1 orbits coexist. With the isola every speed "
          "of the band has a stable period-1 orbit (no grey band)."),
         ("figS47_ch06_diagram_fig44.png", "supplement S47", "Fig. 44's case (Fig. 40 x 100): the diagram is Fig. "
-         "40's with every Poincare point times 100 (the model is homogeneous in the loads), under Fig. 44's own "
-         "harmonic-balance branches; notice they match Fig. 40's x 100."),
+         "40's with every Poincare point times 100 (the starts on HB's orbits too; the model is homogeneous in the "
+         "loads), in the same four columns, under Fig. 44's own harmonic-balance branches; notice they match Fig. 40's x 100."),
         ("figS47_ch06_diagram_fig45.png", "supplement S47", "Fig. 45's case (Fig. 43 x 100): the diagram is Fig. "
          "43's with every Poincare point times 100, under Fig. 45's own harmonic-balance branches; notice the "
          "period-1 points lie on HB's stable orbit as in Fig. 43."),
         ("figS47_ch06_diagram_fig43.png", "supplement S47", "What the gear does where Fig. 43 has no stable period-1 orbit: the "
-         "bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over 10-15 krad/s, the "
-         "mesh deflection once per forcing period) under the harmonic-balance branches. Notice the two views agree "
+         "bifurcation diagram by time integration (GSL rk8pd, the speed stepped up then down over 10-15 krad/s, 150 "
+         "speeds each way, and over 15.8-17.3 krad/s, 16; the mesh deflection once per forcing period; hatched: "
+         "between the two bands, no diagram) under the harmonic-balance branches. Notice the two views agree "
          "where HB has a stable orbit (CTest ch06_gear_pair.fig43_diagram.diagram_vs_hb): the period-1 points on the "
          "grey line, and in both grey bands the period-2 points on the two lines of HB's stable period-2 branches "
          "(coloured); period 4 at a few speeds, and chaotic motion (red) near 12.7-13.0 krad/s in both sweeps, where "
-         "the period-2 branch is unstable (dashed)."),
+         "the period-2 branch is unstable (dashed). In the second band, the Neimark-Sacker stretch 16.02-17.04 "
+         "krad/s: quasi-periodic (green) and not settled at most speeds, chaotic at one speed in each sweep, period 1 "
+         "on HB's orbit on either side."),
     ]},
     {"program": "ch07_ste", "title": "Chapter 7: static transmission error from a beam FE tooth model", "figures": [
         ("fig46_*.png", "Fig. 46", "The four-beam model of two meshing tooth pairs drawn from the run's nodes (1-44; "

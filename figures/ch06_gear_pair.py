@@ -226,30 +226,110 @@ def draw(data_dir, fig_dir):
     return out
 
 
+# The diagram figure's columns: a case whose bands spread far is drawn in columns split at these
+# speeds [krad/s] (Fig. 40: the grazing region 7.5-12 krad/s in 25-50 rad/s steps; 12.4-15.5
+# krad/s, Delta to -4 mm; the narrow band 17.6-18.4 krad/s; the bands of 26-62 krad/s, Delta
+# within 0.3 mm); a case not listed: one column.
+DIAGRAM_COLUMNS = {"fig40": (12.2, 16.5, 22.0), "fig44": (12.2, 16.5, 22.0)}
+
+
 def diagram_figure(data_dir, fig_dir, label, row):
-    """Supplement: the case's bifurcation diagram by time integration over its band (bifurcation_diagram_<label>.csv)
-    under its harmonic-balance curves: above, Delta_max and Delta_min of every branch; below, Delta at
-    phase 0 of each forcing period (the Poincare section) over the HB period-1 branch at that phase."""
-    from poincare import draw_hb_section, draw_poincare
+    """Supplement: the case's bifurcation diagram by time integration over its bands (bifurcation_diagram_<label>.csv)
+    under its harmonic-balance curves, a column per group of bands (DIAGRAM_COLUMNS): above, Delta_max and
+    Delta_min of every branch; below, Delta at phase 0 of each forcing period (the Poincare section) over the
+    HB branches at that phase. Hatched: the gaps between a column's bands (no diagram computed there)."""
     full = read_csv(data_dir / ("frc_%s.csv" % label))
     p, h = (read_csv(data_dir / ("bifurcation_diagram_%s.csv" % label)),
             read_csv(data_dir / ("bifurcation_diagram_hb_%s.csv" % label)))
-    lo, hi = min(p["omega"]) / 1e3, max(p["omega"]) / 1e3
-    full["w_k"] = [w / 1e3 for w in full["omega"]]
-    h["w_k"], p["w_k"] = [w / 1e3 for w in h["omega"]], [w / 1e3 for w in p["omega"]]
-    fig, (a1, a2) = plt.subplots(2, 1, figsize=(7.6, 8.6), sharex=True, gridspec_kw={"height_ratios": [1.0, 1.2]})
-    inside = lambda d: {c: [v[i] for i in range(len(v)) if lo <= d["w_k"][i] <= hi] for c, v in d.items()}
-    band = inside(full)
-    d = rows_of(band, 0)
-    plot_branch(a1, d, "x_max", "0.15", r"HB period 1: $\Delta_{max}$, $\Delta_{min}$", x="w_k", scale=1e3)
-    plot_branch(a1, d, "x_min", "0.15", None, x="w_k", scale=1e3)
+    for d in (full, h, p):
+        d["w_k"] = [w / 1e3 for w in d["omega"]]
     with open(data_dir / "key_numbers.json") as f:
         kn = json.load(f)
+    bands = diagram_bands(p["w_k"])
+    cuts = DIAGRAM_COLUMNS.get(label, ())
+    columns = [c for c in ([b for b in bands if a <= b[0] < z] for a, z in zip((-math.inf,) + cuts, cuts + (math.inf,)))
+               if c]
+    fig, axes = plt.subplots(2, len(columns), figsize=(7.6 if len(columns) == 1 else 4.8 * len(columns), 8.6), sharex="col",
+                             squeeze=False, gridspec_kw={"height_ratios": [1.0, 1.2]})
+    handles = []
+    for k, col in enumerate(columns):
+        handles += diagram_column(axes[0][k], axes[1][k], data_dir, label, (full, p, h, kn), col)
+    axes[0][0].set_ylabel(r"mesh deflection $\Delta$ [mm]")
+    axes[1][0].set_ylabel(r"$\Delta$ at phase 0 of each forcing period [mm]")
+    scaled = kn.get("diagram_scaled_by_" + label, {}).get("value")
+    speeds = len(set(p["omega"]))
+    how = ("time integration (GSL rk8pd, speed stepped up then down, %d speeds each way%s)"
+           % (speeds, "" if len(bands) == 1 else " over %d bands" % len(bands))
+           if scaled is None else "time integration: the smaller-load case's points x %g (homogeneous in the loads)"
+           % scaled)
+    title = ("Fig. %d's case ($F_i$ = %g N m, F = %g): bifurcation diagram by %s under the harmonic-balance branches"
+             % (int(row["figure"]), row["Fi"], row["Fa"], how))
+    if len(columns) == 1:
+        axes[0][0].set_title(title.replace(" (", "\n(", 1) if scaled is None else title.replace(": the", ":\nthe"),
+                             fontsize=9)
+    else:
+        fig.suptitle(title, fontsize=10)
+    handles += shade_no_stable_period1((), no_stable_period1(kn, label), scale=1e-3, unit="krad/s")   # its entry
+    h1, l1 = axes[0][0].get_legend_handles_labels()
+    styles = [hd for hd in legend_styles() if "rug" not in hd.get_label()]   # no contact rug here
+    if len(columns) > 1:   # a branch's colour is its column's: one entry per period and style
+        handles = [generic_branch_entry(hd) for hd in handles]
+    seen, unique = set(), []
+    for hd in h1 + handles + styles:
+        if hd.get_label() not in seen:
+            seen.add(hd.get_label())
+            unique.append(hd)
+    fig.tight_layout()
+    fig.legend(handles=unique, fontsize=7, ncol=2 if len(columns) == 1 else 4, loc="upper center",
+               bbox_to_anchor=(0.5, 0.0), framealpha=0.9)
+    path = fig_dir / ("figS47_ch06_diagram_%s.png" % label)
+    fig.savefig(path, bbox_inches="tight")   # the legend below the axes, inside the image
+    plt.close(fig)
+    return str(path)
+
+
+def generic_branch_entry(handle):
+    """A legend entry "HB period p (branch b), its p points (...)" as poincare.draw_hb_section's
+    entry for many branches (grey, "a colour each"); any other entry as it is."""
+    import re
+    from matplotlib.lines import Line2D
+    m = re.match(r"HB period (\d+) \(branch \d+\), its \d+ points \((\w+)\)", handle.get_label())
+    if not m:
+        return handle
+    return Line2D([], [], color="0.35", ls=handle.get_linestyle(), label="HB period-%s branches (a colour each), "
+                  "their %s points (%s)" % (m.group(1), m.group(1), m.group(2)))
+
+
+def diagram_bands(speeds):
+    """[(lo, hi)] of the diagram's bands from its speeds: a new band where the gap to the next
+    speed exceeds 1.5 times the step before it (each band's speeds are uniform)."""
+    w = sorted(set(speeds))
+    bands, start = [], 0
+    for i in range(1, len(w)):
+        step = w[i - 1] - w[i - 2] if i - 1 > start else None
+        if step is not None and w[i] - w[i - 1] > 1.5 * step:
+            bands.append((w[start], w[i - 1]))
+            start = i
+    bands.append((w[start], w[-1]))
+    return bands
+
+
+def diagram_column(a1, a2, data_dir, label, data, bands):
+    """One column of the diagram figure: the bands `bands` [(lo, hi)] krad/s of the case's diagram,
+    the HB branches over the whole column (y limits from what lies in the bands), the gaps between
+    the bands hatched. Returns the legend handles of the lower panel."""
+    from poincare import draw_hb_section, draw_poincare
+    full, p, h, kn = data
+    lo, hi = bands[0][0], bands[-1][1]
+    inside = lambda d, one_row_points=False: rows_near(d, lo, hi, one_row_points)
+    band = inside(full, True)
+    plot_branch(a1, rows_of(band, 0), "x_max", "0.15", r"HB period 1: $\Delta_{max}$, $\Delta_{min}$", x="w_k",
+                scale=1e3)
+    plot_branch(a1, rows_of(band, 0), "x_min", "0.15", None, x="w_k", scale=1e3)
     orbits = orbit_branches(kn, "_" + label)
     plot_doubled_branches(a1, band, x="w_k", scale=1e3, entry_per_branch=False, skip=[o[0] for o in orbits])
     plot_orbit_branches(a1, band, orbits, x="w_k", scale=1e3, omega_scale=1e-3, unit="krad/s")
     a1.axhline(0.0, **CONTACT_LEVEL)
-    a1.set_ylabel(r"mesh deflection $\Delta$ [mm]")
     handles = draw_hb_section(a2, inside(h), "w_k", "delta", scale=1e3)
     for k, (bid, w, period) in enumerate(orbits, 1):   # the orbit branches' sections (period 1: chapter step 3c)
         path = data_dir / ("orbit_branch_section_%s_%d.csv" % (label, k))
@@ -258,30 +338,53 @@ def diagram_figure(data_dir, fig_dir, label, row):
             hk["w_k"] = [v / 1e3 for v in hk["omega"]]
             handles += draw_hb_section(a2, inside(hk), "w_k", "delta", scale=1e3, colour=ORBIT_BRANCH_COLOUR,
                                        label="HB branch %d at the same phase" % bid)
-    handles += draw_poincare(a2, p, "w_k", "delta", scale=1e3, sweeps=("up", "down", "from_hb"))
+    handles += draw_poincare(a2, p, "w_k", "delta", scale=1e3, sweeps=("up", "down", "from_hb"),
+                             keep=lambda i: lo <= p["w_k"][i] <= hi)
     handles += mark_unresolved(a2, h, rows_of(full, 0), lo, hi, int(read_params(data_dir)["H"]))
-    a2.set_ylabel(r"$\Delta$ at phase 0 of each forcing period [mm]")
     a2.set_xlabel(r"forcing frequency $\omega$ [krad/s]")
-    a2.set_xlim(lo, hi)
-    every = "_all_branches_" + label   # with orbit branches: no stable period-1 orbit on any branch
-    ranges = unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
-    handles += shade_no_stable_period1((a1, a2), [r for r in ranges if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
-                                       scale=1e-3, unit="krad/s")
-    scaled = kn.get("diagram_scaled_by_" + label, {}).get("value")
-    how = ("time integration (GSL rk8pd,\nspeed stepped up then down, %d speeds each way)" % len(set(p["omega"]))
-           if scaled is None else "time integration: the smaller-load\ncase's points x %g (homogeneous in the loads)"
-           % scaled)
-    a1.set_title("Fig. %d's case ($F_i$ = %g N m, F = %g): bifurcation diagram by %s under the harmonic-balance "
-                 "branches" % (int(row["figure"]), row["Fi"], row["Fa"], how), fontsize=9)
-    h1, _ = a1.get_legend_handles_labels()
-    styles = [hd for hd in legend_styles() if "rug" not in hd.get_label()]   # no contact rug here
-    fig.tight_layout()
-    fig.legend(handles=h1 + handles + styles, fontsize=7, ncol=2, loc="upper center", bbox_to_anchor=(0.5, 0.0),
-               framealpha=0.9)
-    path = fig_dir / ("figS47_ch06_diagram_%s.png" % label)
-    fig.savefig(path, bbox_inches="tight")   # the legend below the axes, inside the image
-    plt.close(fig)
-    return str(path)
+    pad = 0.01 * (hi - lo)
+    a2.set_xlim(lo - pad, hi + pad)
+    in_bands = lambda w: any(a <= w <= b for a, b in bands)
+    fit_to_bands(a1, [v * 1e3 for y in ("x_max", "x_min") for w, v in zip(band["w_k"], band[y]) if in_bands(w)])
+    fit_to_bands(a2, [v * 1e3 for w, v in zip(p["w_k"] + h["w_k"], p["delta"] + h["delta"]) if in_bands(w)])
+    for (a, b), (c, _) in zip(bands, bands[1:]):
+        for ax in (a1, a2):
+            ax.axvspan(b, c, facecolor="none", edgecolor="0.8", hatch="///", lw=0, zorder=0)
+    if len(bands) > 1:
+        from matplotlib.patches import Patch
+        handles.append(Patch(facecolor="none", edgecolor="0.6", hatch="///", label="between the bands: no diagram"))
+    shade_no_stable_period1((a1, a2), [r for r in no_stable_period1(kn, label) if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
+                            scale=1e-3)
+    return handles
+
+
+def no_stable_period1(kn, label):
+    """The case's ranges with no stable period-1 orbit [(from, to)] rad/s: on any period-1 branch
+    where it has orbit branches (chapter step 3c), else on its continued curve."""
+    every = "_all_branches_" + label
+    return unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
+
+
+def rows_near(d, lo, hi, one_row_points):
+    """The rows of table d with w_k in [lo, hi] krad/s, and the rows next to them on the same
+    branch (columns branch, point where the table has them), so that a branch's line reaches the
+    panel's edge where the continuation stepped across it; with one_row_points False (the HB
+    section, a period-p orbit in p consecutive rows) the neighbours of period-1 rows only."""
+    n = len(d["w_k"])
+    same = lambda i, j: all(d[c][i] == d[c][j] for c in ("branch", "point") if c in d)
+    near = lambda i, j: same(i, j) and (one_row_points or str(d.get("period", ["1"] * n)[i]) in ("1", "1.0"))
+    keep = [lo <= w <= hi for w in d["w_k"]]
+    keep = [keep[i] or any(0 <= j < n and keep[j] and near(i, j) for j in (i - 1, i + 1)) for i in range(n)]
+    return {c: [v[i] for i in range(n) if keep[i]] for c, v in d.items()}
+
+
+def fit_to_bands(ax, values):
+    """y limits from the values that lie in the bands, 5 % margin (the HB curves between the bands
+    may leave the panel)."""
+    if values:
+        a, b = min(values), max(values)
+        m = 0.05 * (b - a) if b > a else 0.05 * abs(a) + 1e-12
+        ax.set_ylim(a - m, b + m)
 
 
 def mark_unresolved(ax, h, curve, lo, hi, H):

@@ -60,6 +60,25 @@ def error_bounds(frc, scale):
     return E
 
 
+def split_starts(sweeps):
+    """{sweep: rows} of one speed with the rows of sweep from_hb split into one entry per start
+    (from_hb, from_hb 2, ...): the program integrates from every stable HB orbit at the speed
+    that no sweep reached (a period-1 orbit and a period-2 one may both be there), writing the
+    points one after the other, n rows for a periodic one of period n, else rows of one motion."""
+    out = {k: rs for k, rs in sweeps.items() if k != "from_hb"}
+    rs, i, k = sweeps.get("from_hb", []), 0, 1
+    while i < len(rs):
+        if rs[i]["motion"] == "periodic":
+            j = i + int(rs[i]["n"])
+        else:
+            j = i + 1
+            while j < len(rs) and (rs[j]["motion"], rs[j]["lyapunov"]) == (rs[i]["motion"], rs[i]["lyapunov"]):
+                j += 1
+        out["from_hb" if k == 1 else "from_hb %d" % k] = rs[i:j]
+        i, k = j, k + 1
+    return out
+
+
 def main():
     d_dir, X, V, scale, min_compared = sys.argv[1], sys.argv[2], sys.argv[3], float(sys.argv[4]), int(sys.argv[5])
     group = sys.argv[6] if len(sys.argv) > 6 else None
@@ -78,6 +97,8 @@ def main():
         for r in diagram:
             if group is None or r[group] == g:
                 points.setdefault(float(r[X]), {}).setdefault(r["sweep"], []).append(r)
+        for w in points:
+            points[w] = split_starts(points[w])
         for w, sweeps in points.items():
             where = "%s%s = %g" % ("" if g is None else "curve %s, " % g, X, w)
             periodic = [(int(rs[0]["n"]), sorted(float(r[V]) for r in rs), k) for k, rs in sweeps.items()
@@ -104,7 +125,7 @@ def main():
                 e, p, _ = min(offs)
                 worst = max(worst, e)
                 by_period[p] = by_period.get(p, 0) + 1
-                if all(k == "from_hb" for _, _, k in offs):
+                if all(k.startswith("from_hb") for _, _, k in offs):
                     coexisting.append(where)
             else:
                 failures.append("%s: HB has a stable orbit (%s), no sweep is periodic on it within its bound (%s)" % (

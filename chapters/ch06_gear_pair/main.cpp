@@ -101,11 +101,31 @@ struct CaseDiagram {
   // Continue an HB branch from each periodic orbit of the diagram that lies on none of the
   // curve's branches (step 3c, hb/orbit_branch.hpp).
   bool orbit_branches = false;
+  // The classifier's period_tol in this band (0: BifurcationDiagramOptions' 1e-6): its
+  // resolution is period_tol x x_scale (the curve's largest DOF scale).
+  double period_tol = 0.0;
 };
 
+// Fig. 40's bands above 12 krad/s, one per unstable stretch from 12.7 krad/s up (the two at
+// 35.1-38.3 and 39.0-41.8 krad/s share one), each with the stable orbit on either side (the
+// last ends at the range's end, unstable there: its down sweep follows the up sweep). Speeds
+// by cost and width (README step 3b): 50 rad/s steps over the narrow 17.8-18.2 krad/s stretch,
+// 100-200 rad/s over the others, 500 over the last (14 krad/s wide). period_tol 1e-8: HB's own
+// error on these branches is down to 1e-9 m (59-62 krad/s), below the default resolution
+// 1e-6 x 7.1 mm, where the sweeps' slowly settling period-2 points (|mu| 0.98) stop 3e-9 m off.
+const CaseDiagram kFig40Top = {47500.0, 62000.0, 30, nullptr, nullptr, false, 1e-8};
+const CaseDiagram kFig40Pd43 = {42600.0, 46500.0, 27, nullptr, &kFig40Top, false, 1e-8};
+const CaseDiagram kFig40Pd35 = {34800.0, 42200.0, 38, nullptr, &kFig40Pd43, false, 1e-8};
+const CaseDiagram kFig40Pd26 = {26200.0, 27600.0, 15, nullptr, &kFig40Pd35, false, 1e-8};
+const CaseDiagram kFig40Pd18 = {17600.0, 18400.0, 17, nullptr, &kFig40Pd26, false, 1e-8};
+const CaseDiagram kFig40Pd13 = {12400.0, 15500.0, 32, nullptr, &kFig40Pd18, false, 1e-8};
 // Fig. 40's second band: its first unstable stretch above 11.6 krad/s (the Neimark-Sacker band
 // 11.63-11.87 krad/s) with the stable orbit on either side.
-const CaseDiagram kFig40Above = {11500.0, 12000.0, 21, nullptr};
+const CaseDiagram kFig40Above = {11500.0, 12000.0, 21, nullptr, &kFig40Pd13};
+
+// Fig. 43's second band: its Neimark-Sacker stretch 16.02-17.04 krad/s with the stable orbit on
+// either side, in 100 rad/s steps (its quasi-periodic speeds each run the 200-period Lyapunov estimate).
+const CaseDiagram kFig43Ns = {15800.0, 17300.0, 16, nullptr};
 
 struct Case {
   std::string label;       // --case LABEL; data file frc_<label>.csv
@@ -123,18 +143,19 @@ struct Case {
 
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
 // chapter README); every figure again with the printed kc (suffix _kc_alt).
-// Diagram bands: each covers its figure's unstable stretches below 11.1 krad/s (Fig. 40: the
-// eight of 7.8-11.1 krad/s, and in a second band the first above 11.6 krad/s; its seven from
-// 12.7 krad/s up are left out for time) or all of them (Figs. 41, 43); 44 and 45 are 40 and 43
-// scaled. Speeds: the chapter's diagrams within
-// ~60 s CPU (README, step 3b).
+// Diagram bands: every unstable stretch of Figs. 40, 41 and 43 lies in a band, with the stable
+// orbit on either side (Fig. 40: the eight of 7.8-11.1 krad/s in the first band, the one at
+// 11.6-11.9 in a second, the seven from 12.7 to 62 krad/s in six more; Fig. 43: its two
+// period-doubling stretches, and its Neimark-Sacker stretch in a second band); 44 and 45 are 40
+// and 43 scaled. Speeds by cost (README, step 3b): fine steps where the motion changes fast
+// (the grazing region), coarser where a stretch is wide.
 const std::vector<Case> kCases = {
     {"fig40", "40", Mesh::kc, {1e5, 1e4}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, nullptr, &kFig40Above}},
     {"fig41", "41", Mesh::kc, {1e7, 1e4}, true, 13570, {Measure::separation}, {13400.0, 14000.0, 41, nullptr, nullptr, true}},
     {"fig42", "42", Mesh::kc, {-1e8, 1e4}, false, 0, {}},
-    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150}},
-    {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, "fig40"}},
-    {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}, {10000.0, 15000.0, 150, "fig43"}},
+    {"fig43", "43", Mesh::kc, {-1e6, 1e4}, true, 11000, {Measure::first_touch}, {10000.0, 15000.0, 150, nullptr, &kFig43Ns}},
+    {"fig44", "44", Mesh::kc, {1e7, 1e6}, false, 0, {Measure::separation}, {7500.0, 11200.0, 75, "fig40", &kFig40Above}},
+    {"fig45", "45", Mesh::kc, {-1e8, 1e6}, false, 0, {Measure::first_touch}, {10000.0, 15000.0, 150, "fig43", &kFig43Ns}},
     {"fig40_kc_alt", "40", Mesh::kc_alt, {1e5, 1e4}, false, 0, {}},
     {"fig41_kc_alt", "41", Mesh::kc_alt, {1e7, 1e4}, false, 0, {}},
     {"fig42_kc_alt", "42", Mesh::kc_alt, {-1e8, 1e4}, false, 0, {}},
@@ -195,6 +216,7 @@ BifurcationDiagram case_diagram(Run& run, const Case& cs, const HarmonicBalance&
     BifurcationDiagramOptions o;
     o.speeds = b->speeds;
     o.lyapunov_min_periods = 50;
+    if (b->period_tol > 0.0) o.period_tol = b->period_tol;
     down_start(hb, c, b->hi, (b->hi - b->lo) / (b->speeds - 1), o);
     std::ostringstream step;
     step << "bifurcation diagram " << cs.label;
@@ -380,7 +402,7 @@ void GearPairChapter::frequency_responses(Run& run) const {
   Table index({"label", "figure", "mesh", "kc", "Fi", "Fa", "static_delta_open", "static_delta_closed", "points",
                "folds", "unstable_points", "bifurcations", "rejected_steps", "transitions", "start", "end",
                "changed_lo", "changed_hi", "delta_max", "delta_min"});
-  std::map<std::string, BifurcationDiagram> diagrams;   // by case label, for the scaled ones
+  std::map<std::string, BifurcationDiagram> diagrams;   // by case label, and "<label> from_hb": for the scaled ones
   for (const Case& cs : kCases) {
     if (!run.wants(cs.label, cs.quick)) continue;
     const HarmonicBalance hb = model(cs.mesh, cs.load, sol_.H);
@@ -469,7 +491,10 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   auto lead = [](double w) { return std::vector<Table::Cell>{w}; };
   Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega", "period", "branch"}, "delta"));
   add_bifurcation_rows(t, d, T2, times, lead);
-  if (!b.scaled_from) add_bifurcation_rows(t, starts_on_hb(run, cs, hb, c, pd, d), T2, 1.0, lead);
+  // the starts on HB's orbits (a scaled diagram: those of the case it is scaled from, times the ratio)
+  const std::string starts = (times == 1.0 ? cs.label : std::string(b.scaled_from)) + " from_hb";
+  if (times == 1.0) diagrams[starts] = starts_on_hb(run, cs, hb, c, pd, d);
+  add_bifurcation_rows(t, diagrams[starts], T2, times, lead);
   add_hb_section_rows(h, hb, c, pd, d, T2, 1.0,
                       [](double w, int p, int br) { return std::vector<Table::Cell>{w, long(p), long(br)}; });
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
