@@ -231,16 +231,21 @@ void march(Scaled& S, const ContinuationOptions& opt, Eigen::VectorXd y, Eigen::
       b.failures.push_back(failure);
       return;
     }
-    // 3. Accept; locate a fold between the two points.
+    // 3. Accept; locate a fold between the two points (not at a branch point `end` stops past).
     const double w_new = S.omega(st.y);
     BranchPoint pt{S.X(st.y), w_new, st.iterations, st.residual, ds, st.t[n]};
-    if ((t[n] > 0) != (st.t[n] > 0) && t[n] != 0.0) {
+    EndAt at = EndAt::no;
+    if (end) {
+      if (w_new < end->omega_min || w_new > end->omega_max) at = EndAt::here;
+      else if (end->stop) at = end->stop(pt.X, pt.omega);
+    }
+    if ((t[n] > 0) != (st.t[n] > 0) && t[n] != 0.0 && at != EndAt::past_branch_point) {
       const Eigen::VectorXd yf = locate_fold(S, y, t, st.y, st.t, opt.tolerance, opt.locate_iterations);
       b.folds.push_back({S.omega(yf), S.X(yf), int(b.points.size()) - 1});
     }
     // 4. Reached the end of the range: finish with a Newton solve exactly at omega_end.
     if (end) {
-      if (w_new < end->omega_min || w_new > end->omega_max || (end->stop && end->stop(pt.X, pt.omega))) {
+      if (at != EndAt::no) {
         b.points.push_back(pt);
         b.complete = true;
         return;

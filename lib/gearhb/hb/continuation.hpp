@@ -124,10 +124,15 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
                                const Scaling& s, const ContinuationOptions& opt);
 
 // Where arc_length_continuation_from ends a branch (complete): at the first point outside
-// [omega_min, omega_max], or at the first point where stop(X, omega) is true; both kept.
+// [omega_min, omega_max], or at the first point where stop(X, omega) says so; both kept.
+// `past_branch_point`: the branch ends there because the chord to it passed a branch point (a
+// period-2 branch meeting the period-1 branch: its odd part reversed or vanished). Omega is
+// stationary at such a branch point (the vertex of the pitchfork's parabola), which is no fold
+// of the branch: no fold is located on that chord.
+enum class EndAt { no, here, past_branch_point };
 struct ContinuationEnd {
   double omega_min = -INFINITY, omega_max = INFINITY;
-  std::function<bool(const Eigen::VectorXd&, double)> stop;
+  std::function<EndAt(const Eigen::VectorXd&, double)> stop;
 };
 
 // Pseudo-arc-length continuation off the solution (X, omega) along `direction` (scaled,

@@ -113,7 +113,7 @@ Branch one_way(const HarmonicBalance& model, const Eigen::VectorXd& X, double Om
       met = odd.dot(prev_odd) < 0.0 || odd.norm() <= 1e-8 * largest;
       prev_odd = odd;
     }
-    return back || met;
+    return met ? EndAt::past_branch_point : back ? EndAt::here : EndAt::no;
   };
   return arc_length_continuation_from(model, X, Omega, d, co.ds_initial, s, co, end);
 }

@@ -414,10 +414,10 @@ struct Period2Continuation {
     end.omega_min = opt.omega_min / 2.0;
     end.omega_max = opt.omega_max / 2.0;
     end.stop = [this](const Eigen::VectorXd& X, double) {
-      if (merge_at(X) != Merge::none) return true;
+      if (merge_at(X) != Merge::none) return EndAt::past_branch_point;
       prev_odd = subharmonic_part(hbp, 2, X);
       largest = std::max(largest, prev_odd.norm());
-      return false;
+      return EndAt::no;
     };
   }
   Period2Continuation(const Period2Continuation&) = delete;   // end.stop holds `this`
@@ -444,7 +444,7 @@ struct Period2Continuation {
   // last chord is walked again from its start with steps ten times shorter, up to five times.
   void refine_overshoot(Branch& b, double xs) {
     auto odd_norm = [this](const BranchPoint& q) { return subharmonic_part(hbp, 2, q.X).norm(); };
-    for (int refine = 0; refine < 5 && b.complete && b.points.size() >= 2 && end.stop(b.points.back().X, 0.0); ++refine) {
+    for (int refine = 0; refine < 5 && b.complete && b.points.size() >= 2 && end.stop(b.points.back().X, 0.0) != EndAt::no; ++refine) {
       double largest = 0.0;
       for (const auto& q : b.points) largest = std::max(largest, odd_norm(q));
       const BranchPoint a = b.points[b.points.size() - 2], z = b.points.back();
