@@ -308,7 +308,8 @@ GEAR_CAPTIONS = {
                        "Below: the stress along both fillets there, tension under the loaded flank, compression under "
                        "the other; its peak lies near, not at, ISO's 30-degree point.",
     "response.png": "DTE RMS and dynamic factor K_v over speed per torque (stable solid, unstable dashed, "
-                    "bifurcations marked, ISO 6336-1 K_v dotted where computed), the period-2 (period-4) branches "
+                    "magenta squares where a stretch labelled stable has no converged shooting correction: "
+                    "stability unresolved, where there are any; bifurcations marked, ISO 6336-1 K_v dotted where computed), the period-2 (period-4) branches "
                     "switched at the period doublings in colours of their own and the speeds with no stable "
                     "period-1 orbit shaded (where there are any); the rug below the axis is the contact of each "
                     "flank (drive-flank loss, back-flank impact), one row per curve. Under it, per torque with such "
@@ -399,8 +400,9 @@ PLANETARY_CAPTIONS = {
 # The figures of a gearhb_frc run, copied as frc_<example>_<figure>: figure -> caption.
 FRC_CAPTIONS = {
     "frc.png": "The frequency response of a model file (gearhb_frc): the output's largest and least value over a "
-               "period against the forcing frequency, stable solid, unstable dashed (Floquet), bifurcations "
-               "marked, the contact state as a rug at the bottom (one row per branch, named by a tick in its "
+               "period against the forcing frequency, stable solid, unstable dashed (Floquet; magenta squares "
+               "where a stretch labelled stable has no converged shooting correction: stability unresolved, "
+               "where there are any), bifurcations marked, the contact state as a rug at the bottom (one row per branch, named by a tick in its "
                "colour at the left). Where the file asks for them: the period-2 "
                "branches switched at the period doublings (colours of their own, x_min close up on the right), a "
                "torus past a Neimark-Sacker point (dash-dot, its rotation number on the right; the points whose "

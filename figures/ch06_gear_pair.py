@@ -19,7 +19,7 @@ import json
 import math
 
 from style import (read_params, BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_LEVEL, LINEAR_CLOSED, LINEAR_OPEN, NATURAL_CLOSED,
-                   ORBIT_BRANCH_COLOUR,
+                   ORBIT_BRANCH_COLOUR, UNRESOLVED_MARKER,
                    NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, orbit_branches,
                    plot_branch, plot_doubled_branches, plot_orbit_branches, read_csv, rows_of, rug_room, save,
                    shade_no_stable_period1, unstable_period1_ranges)
@@ -396,10 +396,9 @@ def mark_unresolved(ax, h, curve, lo, hi, H):
     bad = [i for i, e in zip(branch, curve["exact"]) if e == "not_converged" and lo <= h["w_k"][i] <= hi]
     if not bad:
         return []
-    style = dict(ls="none", marker="s", ms=5, mfc="none", mec="m", mew=0.9)
-    ax.plot([h["w_k"][i] for i in bad], [h["delta"][i] * 1e3 for i in bad], zorder=7, **style)
+    ax.plot([h["w_k"][i] for i in bad], [h["delta"][i] * 1e3 for i in bad], zorder=7, **UNRESOLVED_MARKER)
     return [Line2D([], [], label="HB point whose shooting correction fails:\nstability not resolved at H = %d" % H,
-                   **style)]
+                   **UNRESOLVED_MARKER)]
 
 
 def period_doubling_figure(data_dir, fig_dir):

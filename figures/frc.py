@@ -26,7 +26,7 @@ sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
-                   legend_styles, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
+                   legend_styles, mark_unresolved_stable, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
                    shade_no_stable_period1, unstable_period1_ranges)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window,  # noqa: E402
                       with_hb_starts, within)
@@ -160,6 +160,7 @@ def period2_closeup(ins, full, d, ids):
     for n, bid in enumerate(ids):
         d2 = rows_of(full, bid)
         plot_branch(ins, d2, "x_min", PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
+        mark_unresolved_stable(ins, d2, "x_min")
         ys += d2["x_min"]
     span = max(ys) - min(ys)
     near = [i for i, w in enumerate(d["omega"]) if lo2 - pad <= w <= hi2 + pad
@@ -256,7 +257,9 @@ def main():
     ax = axes["main"]
     plot_branch(ax, r["d"], "x_max", "C0", r"$x_{max}$ (upper), $x_{min}$ (lower)")
     plot_branch(ax, r["d"], "x_min", "C0")
-    plot_doubled_branches(ax, r["full"])
+    for y in ("x_max", "x_min"):   # "stable" on a failed shooting correction: unresolved, not stable
+        mark_unresolved_stable(ax, r["d"], y)
+    plot_doubled_branches(ax, r["full"], mark_unresolved=True)
     if r["ids"]:
         period2_closeup(axes["closeup"], r["full"], r["d"], r["ids"])
     if r["torus"] is not None:

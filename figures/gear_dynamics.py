@@ -27,7 +27,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
-from style import CONTACT_COLOURS, PERIOD2_COLOURS, branch_ids, plot_branch, read_csv, rows_of, save, torque_colour
+from style import (CONTACT_COLOURS, PERIOD2_COLOURS, UNRESOLVED_MARKER, branch_ids, mark_unresolved_stable, plot_branch,
+                   read_csv, rows_of, save, torque_colour)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window, with_hb_starts,
                       within)
 
@@ -130,10 +131,12 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     curves = branches(torques, frc)
     fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
+    unresolved = False   # a "stable" point on a failed shooting correction: magenta square, not stable
     for ax, y, scale, label in ((axes[0], "x_rms_ac", 1e6, "DTE RMS (oscillating part) [um]"),
                                 (axes[1], "dynamic_factor", 1.0, "dynamic factor K_v = max |mesh force| / F0")):
         for label_c, col, d, _ in curves:
             plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c, scale=scale)
+            unresolved = mark_unresolved_stable(ax, d, y, x="speed_rpm", scale=scale) or unresolved
         for i, T in enumerate(torques):   # each event on the curve of its branch
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
                 on = rows_of(frc[i], int(bif[i]["branch"][k]) if "branch" in bif[i] else 0)
@@ -159,6 +162,8 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     handles = [Line2D([], [], color=col, label=label_c) for label_c, col, _, _ in curves]
     handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
                 Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
+    handles += [Line2D([], [], label="HB point labelled stable whose shooting correction\nfails: stability unresolved",
+                       **UNRESOLVED_MARKER)] if unresolved else []
     handles += [Line2D([], [], color="k", ls="none", marker=m, mfc="none", label=t.replace("_", " "))
                 for t, m in BIF_MARKER.items() if any(t in (b["type"] or []) for b in bif)]
     handles += [Patch(color=c, label=k.replace("+", " + ").replace("_", " ") + " (bands below 0, one row per curve)")

@@ -159,6 +159,39 @@ def untrusted_stability(d, x="omega"):
     return sorted(set(failed) | set(flickering_stability(d, x=x)))
 
 
+# An HB point whose "stable" label rests on a failed shooting correction (ch. 6's S47, gearhb_gear, gearhb_frc).
+UNRESOLVED_MARKER = dict(ls="none", marker="s", ms=5, mfc="none", mec="m", mew=0.9)
+
+
+def unresolved_stable(d):
+    """Indices of the rows of one branch d that lie in an unresolved stretch: a run of consecutive
+    stable rows none of which has a converged shooting correction (exact = not_converged), so
+    "stable" there rests on uncorrected multipliers (lib/gearhb/hb/period_doubling.hpp
+    resolved_stable: the programs report such stretches as unresolved, not as stable)."""
+    st, ex, out, i = [int(s) for s in d["stable"]], d.get("exact", []), [], 0
+    while ex and i < len(st):
+        j = i
+        while st[i] and j + 1 < len(st) and st[j + 1]:
+            j += 1
+        if st[i] and all(ex[k] == "not_converged" for k in range(i, j + 1)):
+            out += range(i, j + 1)
+        i = j + 1
+    return out
+
+
+def mark_unresolved_stable(ax, d, y, x="omega", scale=1.0):
+    """Magenta squares (UNRESOLVED_MARKER) at the HB values of d's unresolved_stable rows; one
+    legend entry per axes. Whether any was drawn."""
+    bad = unresolved_stable(d)
+    if bad:
+        first = not getattr(ax, "_gearhb_unresolved_marked", False)
+        ax._gearhb_unresolved_marked = True
+        ax.plot([d[x][i] for i in bad], [d[y][i] * scale for i in bad], zorder=7,
+                label="HB point labelled stable whose shooting correction\nfails: stability unresolved" if first else None,
+                **UNRESOLVED_MARKER)
+    return bool(bad)
+
+
 def unresolved_handle(H):
     """H: the harmonics (an int, or a text such as "1 and 5") whose stability is not resolved."""
     from matplotlib.lines import Line2D
@@ -208,11 +241,13 @@ def branch_ids(d):
 PERIOD2_COLOURS = ["C4", "C9", "C8", "C6", "C5"]
 
 
-def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True, skip=()):
+def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0, entry_per_branch=True, skip=(),
+                          mark_unresolved=False):
     """The period-2 (and period-4) branches of a frequency-response table (its rows with branch
     id > 0, but the ids in `skip`: e.g. orbit branches, drawn by plot_orbit_branches), each in its
     own colour (PERIOD2_COLOURS, repeated beyond five), solid where stable and dashed where not;
-    one legend entry per branch, or (entry_per_branch False) one per period."""
+    one legend entry per branch, or (entry_per_branch False) one per period. mark_unresolved:
+    their unresolved_stable points as magenta squares (mark_unresolved_stable)."""
     named = set()
     for n, bid in enumerate(b for b in branch_ids(full) if b not in skip):
         d2 = rows_of(full, bid)
@@ -225,6 +260,8 @@ def plot_doubled_branches(ax, full, ys=("x_max", "x_min"), x="omega", scale=1.0,
         for k, y in enumerate(ys):
             plot_branch(ax, d2, y, PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], x=x, scale=scale,
                         label=None if k else label)
+            if mark_unresolved:
+                mark_unresolved_stable(ax, d2, y, x=x, scale=scale)
 
 
 ORBIT_BRANCH_COLOUR = "#8c510a"   # brown: a branch continued from a time-integrated orbit (no period-2 colour, not red)

@@ -198,6 +198,7 @@ class GearPairFromFile {
   DteGear mesh_at(std::size_t i) const;
   Response response(Run& run, std::size_t i, const DteGear& mesh, const HarmonicBalance& hb) const;
   void doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o, Response& r) const;
+  std::string rpm_list(const std::string& head, const Intervals& iv) const;
   Table mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
                    const BranchLabel& label, const RowProgress& progress) const;
   void response_tables(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
@@ -726,22 +727,35 @@ void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicB
                                                                    dte_coordinate(file_.dynamics.dofs, bearings()))
                                               : MeshCurveSummary{});
     if (!has_points(b)) continue;
-    // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods)
+    // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods);
+    // a stable stretch with no converged shooting correction is listed apart (resolved_stable)
     char part[120];
     std::snprintf(part, sizeof part, ": period-%d branch %zu, %.0f to %.0f rpm:", b.period, k + 1,
                   speed_rpm(b.omega_start), speed_rpm(b.omega_end));
-    std::string line = torque_label(i) + part;
-    const Intervals st = stable_intervals(b.curve, b.period);
-    for (std::size_t j = 0; j < st.size(); ++j) {
-      std::snprintf(part, sizeof part, "%s %.0f-%.0f", j == 0 ? " stable at" : ",", speed_rpm(st[j].first),
-                    speed_rpm(st[j].second));
-      line += part;
-    }
+    const Intervals st = resolved_stable_intervals(b.curve, b.period);
+    std::string line = torque_label(i) + part + rpm_list(st.empty() ? "" : " stable at", st);
     const MeshCurveSummary& m = r.doubled_summary.back();
     std::snprintf(part, sizeof part, " rpm; largest stable K_v %.2f, DTE RMS %.2f um", m.dynamic_factor_peak,
                   m.dte_rms_peak * 1e6);
-    run.say(st.empty() ? line + " unstable everywhere" : line + part);
+    line += st.empty() ? " unstable everywhere" : part;
+    const Intervals unresolved = unresolved_stable_stretches(b.curve, b.period);
+    if (!unresolved.empty())
+      line += rpm_list("; stability unresolved (shooting correction failed) at", unresolved) + " rpm";
+    run.say(line);
   }
+}
+
+// " <head> a-b, c-d" (rpm of the forcing-frequency intervals; a one-point interval as one speed).
+std::string GearPairFromFile::rpm_list(const std::string& head, const Intervals& iv) const {
+  std::string out = head;
+  char part[64];
+  for (std::size_t j = 0; j < iv.size(); ++j) {
+    const double a = speed_rpm(iv[j].first), b = speed_rpm(iv[j].second);
+    if (a == b) std::snprintf(part, sizeof part, "%s %.0f", j == 0 ? "" : ",", a);
+    else std::snprintf(part, sizeof part, "%s %.0f-%.0f", j == 0 ? "" : ",", a, b);
+    out += part;
+  }
+  return out;
 }
 
 // The rows of one curve of a torque (the common columns, then the gear's); `label` its period
@@ -822,6 +836,8 @@ void GearPairFromFile::axial_key_numbers(Run& run, std::size_t i, const Harmonic
 // curve's stable intervals; unstable_period1_ranges_<i>, each unstable_period1_from_rpm_<i>_<k>,
 // unstable_period1_to_rpm_<i>_<k>), and the largest K_v and DTE RMS of the motion that exists
 // (max_kv_any_motion_<i>, max_dte_rms_any_motion_um_<i>): every stable period-1 and period-2 orbit
+// (period 2: where its label is resolved, resolved_stable; the period-1 ranges keep stable_intervals,
+// as the diagram's bands do)
 // and, at the diagram's speeds in those ranges where it is not period 1, the time-integrated motion
 // (16 mesh periods from its first Poincare state, 512 samples each: mesh_motion_measures);
 // max_kv_any_motion_from_<i>: which gave the largest K_v (1, 2: the HB orbit of that period; 0: the
@@ -843,10 +859,11 @@ void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const Har
   int from = 1;
   for (std::size_t b = 0; b < r.doubled.size(); ++b) {
     if (!has_points(r.doubled[b])) continue;
-    const Intervals more = stable_intervals(r.doubled[b].curve, r.doubled[b].period);
+    const Intervals more = resolved_stable_intervals(r.doubled[b].curve, r.doubled[b].period);
     stable.insert(stable.end(), more.begin(), more.end());
-    for (std::size_t k = 0; k < r.doubled[b].curve.stable.size(); ++k) {
-      if (!r.doubled[b].curve.stable[k]) continue;
+    const std::vector<bool> resolved = resolved_stable(r.doubled[b].curve);
+    for (std::size_t k = 0; k < resolved.size(); ++k) {
+      if (!resolved[k]) continue;
       const MeshOrbitMeasures& m = r.doubled_summary[b].points[k];
       if (m.dynamic_factor > kv) kv = m.dynamic_factor, from = r.doubled[b].period;
       rms = std::max(rms, m.dte_rms);

@@ -134,6 +134,18 @@ class PlanetarySetFromFile {
   void draw(Run& run) const;
 };
 
+// " <head> a-b, c-d" (Hz of the mesh-frequency intervals; a one-point interval as one frequency).
+std::string hz_list(const std::string& head, const Intervals& iv) {
+  std::string out = head;
+  char part[64];
+  for (std::size_t j = 0; j < iv.size(); ++j) {
+    if (iv[j].first == iv[j].second) std::snprintf(part, sizeof part, "%s %.1f", j == 0 ? "" : ",", hz(iv[j].first));
+    else std::snprintf(part, sizeof part, "%s %.1f-%.1f", j == 0 ? "" : ",", hz(iv[j].first), hz(iv[j].second));
+    out += part;
+  }
+  return out;
+}
+
 std::string mesh_name(int i, int planets) {
   return (i < planets ? "sun_" : "ring_") + std::to_string(i % planets + 1);
 }
@@ -365,17 +377,19 @@ void PlanetarySetFromFile::doubled_branches(Run& run, const HarmonicBalance& hb,
     std::snprintf(part, sizeof part, ": period-%d branch %zu, %.1f to %.1f Hz:", b.period, k + 1, hz(b.omega_start),
                   hz(b.omega_end));
     std::string line = file_.name + part;
-    const Intervals st = stable_intervals(b.curve, b.period);
-    for (std::size_t j = 0; j < st.size(); ++j) {
-      std::snprintf(part, sizeof part, "%s %.1f-%.1f", j == 0 ? " stable at" : ",", hz(st[j].first), hz(st[j].second));
-      line += part;
-    }
+    // a stable stretch with no converged shooting correction listed apart (resolved_stable)
+    const Intervals st = resolved_stable_intervals(b.curve, b.period);
+    line += hz_list(st.empty() ? "" : " stable at", st);
+    const std::vector<bool> resolved = resolved_stable(b.curve);
     double kv = 0.0;
-    for (std::size_t p = 0; p < b.curve.stable.size(); ++p)
+    for (std::size_t p = 0; p < resolved.size(); ++p)
       for (const PlanetaryMeshOrbit& m : r.doubled_measures.back()[p].meshes)
-        if (b.curve.stable[p]) kv = std::max(kv, m.dynamic_factor);
+        if (resolved[p]) kv = std::max(kv, m.dynamic_factor);
     std::snprintf(part, sizeof part, " Hz; largest stable K_v %.3f", kv);
-    run.say(st.empty() ? line + " unstable everywhere" : line + part);
+    line += st.empty() ? " unstable everywhere" : part;
+    const Intervals unresolved = unresolved_stable_stretches(b.curve, b.period);
+    if (!unresolved.empty()) line += hz_list("; stability unresolved (shooting correction failed) at", unresolved) + " Hz";
+    run.say(line);
   }
 }
 
@@ -586,7 +600,8 @@ void PlanetarySetFromFile::response_key_numbers(Run& run, const FrequencyCurve& 
 }
 
 // Issue 34 §4, as gearhb_gear's: the largest K_v of the motion that exists (max_kv_any_motion):
-// over the meshes of every stable period-1 and period-2 (4) point and, at the diagram's speeds in
+// over the meshes of every stable period-1 and period-2 (4) point (whose label is resolved:
+// resolved_stable, hb/period_doubling.hpp) and, at the diagram's speeds in
 // the ranges with no stable period-1 orbit where it is not period 1, the time-integrated motion
 // (16 mesh periods from its first Poincare state, 512 samples each: planetary_sampled_dynamic_factor;
 // its largest max_kv_time_integration); max_kv_any_motion_from: the orbit that gave it (1, 2, 4:
@@ -600,9 +615,10 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const HarmonicBalanc
   double kv = 0.0;
   int from = 1;
   auto take = [&](const FrequencyCurve& c, const std::vector<PointMeasures>& m, int period) {
-    for (std::size_t p = 0; p < c.stable.size(); ++p)
+    const std::vector<bool> resolved = resolved_stable(c);
+    for (std::size_t p = 0; p < resolved.size(); ++p)
       for (const PlanetaryMeshOrbit& mesh : m[p].meshes)
-        if (c.stable[p] && mesh.dynamic_factor > kv) kv = mesh.dynamic_factor, from = period;
+        if (resolved[p] && mesh.dynamic_factor > kv) kv = mesh.dynamic_factor, from = period;
   };
   take(r.curve, r.measures, 1);
   Intervals stable = stable_intervals(r.curve);
@@ -610,7 +626,7 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const HarmonicBalanc
   for (std::size_t b = 0; b < r.doubled.size(); ++b) {
     if (!has_points(r.doubled[b])) continue;
     take(r.doubled[b].curve, r.doubled_measures[b], r.doubled[b].period);
-    const Intervals more = stable_intervals(r.doubled[b].curve, r.doubled[b].period);
+    const Intervals more = resolved_stable_intervals(r.doubled[b].curve, r.doubled[b].period);
     stable.insert(stable.end(), more.begin(), more.end());
   }
   KeyNumbers& key = run.key_numbers();

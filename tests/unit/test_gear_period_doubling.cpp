@@ -9,7 +9,7 @@
 //    that HB's own orbit error gives (|rms_ac(a) - rms_ac(b)| <= max |a - b|; |N_a - N_b| <=
 //    kc max |x_a - x_b| for the piecewise-linear flank law);
 //  - stable_intervals / uncovered (the ranges with no stable period-1 orbit) against the
-//    stability flags of the points themselves.
+//    stability flags of the points themselves; resolved_stable on a hand-made curve.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -168,6 +168,27 @@ TEST(GearPeriodDoubling, UncoveredIsTheComplement) {
   EXPECT_EQ(gaps[1], std::make_pair(4.0, 9.0));
   EXPECT_EQ(uncovered(0.0, 1.0, {}).size(), 1u);
   EXPECT_TRUE(uncovered(0.0, 1.0, {{-1.0, 2.0}}).empty());
+}
+
+TEST(GearPeriodDoubling, StableStretchWithoutACorrectedPointIsUnresolved) {
+  // Seven points at omega 1..7: stable 0 1 1 0 1 1 0, corrected 1 0 1 1 0 0 1. The stretch 2-3 has
+  // a corrected point (resolved, kept); the stretch 5-6 has none (unresolved: not stable, listed).
+  FrequencyCurve c;
+  const std::vector<bool> stable{false, true, true, false, true, true, false}, corrected{true, false, true, true,
+                                                                                       false, false, true};
+  for (std::size_t k = 0; k < stable.size(); ++k) {
+    c.branch.points.push_back({});
+    c.branch.points.back().omega = double(k + 1);
+    c.floquet.push_back({});
+    c.floquet.back().corrected = corrected[k];
+  }
+  c.stable = stable;
+  EXPECT_EQ(resolved_stable(c), (std::vector<bool>{false, true, true, false, false, false, false}));
+  EXPECT_EQ(unresolved_stable_stretches(c, 2), (Intervals{{10.0, 12.0}}));
+  EXPECT_EQ(resolved_stable_intervals(c), (Intervals{{1.5, 3.5}}));   // to the chord midpoints (no bifurcation listed)
+  EXPECT_EQ(stable_intervals(c), (Intervals{{1.5, 3.5}, {4.5, 6.5}}));
+  c.floquet.clear();   // no Floquet data (Hill): every label as it is
+  EXPECT_EQ(resolved_stable(c), stable);
 }
 
 TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration) {

@@ -779,32 +779,81 @@ std::vector<PeriodDoubledBranch> period_doubling_cascade(const HarmonicBalance& 
   return out;
 }
 
-Intervals stable_intervals(const FrequencyCurve& c, int period) {
+namespace {
+
+// stable_intervals with the labels `stable` (one per point of c).
+Intervals intervals_of(const FrequencyCurve& c, const std::vector<bool>& stable, int period) {
   const auto& P = c.branch.points;
   Intervals out;
-  if (c.stable.size() != P.size()) return out;
+  if (stable.size() != P.size()) return out;
   for (std::size_t k = 0; k + 1 < P.size(); ++k) {
     const double a = period * P[k].omega, b = period * P[k + 1].omega;
-    if (c.stable[k] && c.stable[k + 1]) {
+    if (stable[k] && stable[k + 1]) {
       out.emplace_back(std::min(a, b), std::max(a, b));
-    } else if (c.stable[k] != c.stable[k + 1]) {
+    } else if (stable[k] != stable[k + 1]) {
       double at = 0.5 * (a + b);
       for (const auto& bf : c.bifurcations)
         if (bf.after_point == int(k)) {
           at = period * bf.omega;
           break;
         }
-      const double from = c.stable[k] ? a : b;
+      const double from = stable[k] ? a : b;
       out.emplace_back(std::min(from, at), std::max(from, at));
     }
   }
-  if (P.size() == 1 && c.stable[0]) out.emplace_back(period * P[0].omega, period * P[0].omega);
+  if (P.size() == 1 && stable[0]) out.emplace_back(period * P[0].omega, period * P[0].omega);
   std::sort(out.begin(), out.end());
   Intervals merged;
   for (const auto& iv : out)
     if (!merged.empty() && iv.first <= merged.back().second) merged.back().second = std::max(merged.back().second, iv.second);
     else merged.push_back(iv);
   return merged;
+}
+
+// The runs [first, last] of consecutive stable points with no corrected point.
+std::vector<std::pair<std::size_t, std::size_t>> unresolved_runs(const FrequencyCurve& c) {
+  std::vector<std::pair<std::size_t, std::size_t>> runs;
+  const std::size_t n = c.branch.points.size();
+  if (c.stable.size() != n || c.floquet.size() != n) return runs;
+  for (std::size_t i = 0; i < n;) {
+    if (!c.stable[i]) {
+      ++i;
+      continue;
+    }
+    std::size_t j = i;
+    bool corrected = c.floquet[i].corrected;
+    for (; j + 1 < n && c.stable[j + 1]; ++j) corrected = corrected || c.floquet[j + 1].corrected;
+    if (!corrected) runs.emplace_back(i, j);
+    i = j + 1;
+  }
+  return runs;
+}
+
+}  // namespace
+
+Intervals stable_intervals(const FrequencyCurve& c, int period) { return intervals_of(c, c.stable, period); }
+
+std::vector<bool> resolved_stable(const FrequencyCurve& c) {
+  std::vector<bool> st = c.stable;
+  for (const auto& [i, j] : unresolved_runs(c))
+    for (std::size_t k = i; k <= j; ++k) st[k] = false;
+  return st;
+}
+
+Intervals resolved_stable_intervals(const FrequencyCurve& c, int period) {
+  return intervals_of(c, resolved_stable(c), period);
+}
+
+Intervals unresolved_stable_stretches(const FrequencyCurve& c, int period) {
+  Intervals out;
+  for (const auto& [i, j] : unresolved_runs(c)) {
+    double lo = INFINITY, hi = -INFINITY;
+    for (std::size_t k = i; k <= j; ++k)
+      lo = std::min(lo, period * c.branch.points[k].omega), hi = std::max(hi, period * c.branch.points[k].omega);
+    out.emplace_back(lo, hi);
+  }
+  std::sort(out.begin(), out.end());
+  return out;
 }
 
 Intervals uncovered(double lo, double hi, Intervals covered) {

@@ -191,6 +191,17 @@ std::vector<int> branch_starts(const FrequencyCurve& c, const std::vector<Period
 // midpoint if none is listed there); `period`: the curve's omegas are omega / period.
 using Intervals = std::vector<std::pair<double, double>>;
 Intervals stable_intervals(const FrequencyCurve& c, int period = 1);
+// Which stable labels are resolved: c.stable, false at every point of an unresolved stretch - a
+// run of consecutive stable points none of which has a converged shooting correction
+// (PointFloquet::corrected; the tables' `exact` = not_converged): their multipliers are those of
+// the best uncorrected iterate, so "stable" there is not established (the light-load gear's
+// period-4 branch at 2088 rpm: |mu| 0.41, yet the time integration from HB's orbit is chaotic).
+// A stretch with one corrected point keeps its label. A curve without Floquet data: c.stable.
+std::vector<bool> resolved_stable(const FrequencyCurve& c);
+// stable_intervals on the resolved labels: what a program reports as "stable at".
+Intervals resolved_stable_intervals(const FrequencyCurve& c, int period = 1);
+// The unresolved stretches [first, last point's omega] x period, in increasing omega.
+Intervals unresolved_stable_stretches(const FrequencyCurve& c, int period = 1);
 // [lo, hi] less the union of `covered`: the gaps, in increasing omega (none narrower than
 // 1e-9 (hi - lo)).
 Intervals uncovered(double lo, double hi, Intervals covered);

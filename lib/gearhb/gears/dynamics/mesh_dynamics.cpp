@@ -11,6 +11,7 @@
 #include "gearhb/core/linear_dynamics.hpp"
 #include "gearhb/core/units.hpp"
 #include "gearhb/hb/contact.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
 
@@ -255,11 +256,12 @@ MeshCurveSummary mesh_curve_summary(const HarmonicBalance& hb, const FrequencyCu
                                     const Eigen::VectorXd& q) {
   MeshCurveSummary s;
   const auto& P = c.branch.points;
+  const std::vector<bool> stable = resolved_stable(c);
   for (std::size_t i = 0; i < P.size(); ++i) {
     s.points.push_back(mesh_orbit_measures(hb, P[i].X, F0, q));
     const MeshOrbitMeasures& m = s.points.back();
-    if (c.stable[i] && m.dte_rms > s.dte_rms_peak) s.dte_rms_peak = m.dte_rms, s.dte_rms_peak_omega = P[i].omega;
-    if (c.stable[i] && m.dynamic_factor > s.dynamic_factor_peak)
+    if (stable[i] && m.dte_rms > s.dte_rms_peak) s.dte_rms_peak = m.dte_rms, s.dte_rms_peak_omega = P[i].omega;
+    if (stable[i] && m.dynamic_factor > s.dynamic_factor_peak)
       s.dynamic_factor_peak = m.dynamic_factor, s.dynamic_factor_peak_omega = P[i].omega;
     s.mean_force_rel_dev = std::max(s.mean_force_rel_dev, std::fabs(dte_mean_contact_force(hb, P[i].X) - F0) / F0);
   }

@@ -161,8 +161,10 @@ MeshOrbitMeasures mesh_orbit_measures(const HarmonicBalance& hb, const Eigen::Ve
 // What one curve shows (stable points only where the key numbers ask for them).
 struct MeshCurveSummary {
   std::vector<MeshOrbitMeasures> points;      // per branch point
-  double dte_rms_peak = 0.0, dte_rms_peak_omega = NAN;          // largest stable DTE RMS
-  double dynamic_factor_peak = 0.0, dynamic_factor_peak_omega = NAN;   // largest stable K_v
+  // largest DTE RMS and K_v of the points whose stable label is resolved (resolved_stable,
+  // hb/period_doubling.hpp: not where a stable stretch has no converged shooting correction)
+  double dte_rms_peak = 0.0, dte_rms_peak_omega = NAN;
+  double dynamic_factor_peak = 0.0, dynamic_factor_peak_omega = NAN;
   double drive_loss_first_omega = NAN;        // first drive-flank loss along the branch (refined); NaN: none
   double back_impact_first_omega = NAN;       // first back-flank touch along the branch (refined); NaN: none
   double mean_force_rel_dev = 0.0;            // max |mean N - F0| / F0 over the points
