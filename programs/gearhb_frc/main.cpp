@@ -53,7 +53,6 @@ struct Response {
   SweepOptions o;
   FrequencyCurve c;
   std::vector<PeriodDoubledBranch> branches;
-  std::size_t doubled = 0;   // branches[0, doubled): from the period doublings
   std::vector<TorusBranch> tori;
 };
 
@@ -161,7 +160,7 @@ void FrequencyResponseFromFile::natural_frequencies(Run& run) const {
 // Step 3: one arc-length continuation over the range, every point's stability and contact;
 // the period-2 (4) branches from its located PDs.
 Response FrequencyResponseFromFile::frequency_response(Run& run) const {
-  Response r{model_.harmonic_balance(), {}, {}, {}, 0, {}};
+  Response r{model_.harmonic_balance(), {}, {}, {}, {}};
   SweepOptions& o = r.o;
   o.omega_min = std::min(model_.omega_from, model_.omega_to);
   o.omega_max = std::max(model_.omega_from, model_.omega_to);
@@ -181,7 +180,6 @@ Response FrequencyResponseFromFile::frequency_response(Run& run) const {
   // one line and the rest of the run stands.
   if (model_.period_doubling_depth >= 1)
     r.branches = run.timed("period-2 branches", [&] { return period_doubling_cascade(r.hb, c, o, model_.period_doubling_depth); });
-  r.doubled = r.branches.size();
   for (const auto& b : r.branches) run.say(model_.name + ": " + b.why);
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
   if (model_.period_doubling_depth >= 1) period2_key_numbers(run, r.branches);
@@ -287,7 +285,8 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // branch_from_orbit solves HB from its Fourier coefficients, checks it against the orbit within
 // HB's own error and continues it both ways over the range with the sweep's options (stability,
 // bifurcations); an orbit on a branch found so far starts none (at most 4 branches). Each takes
-// the next branch id in frc.csv and bifurcations.csv; one that starts on a branch the run has is
+// the next branch id in frc.csv and bifurcations.csv (none, said in one line, for a model without
+// an exact flow: has_exact_flow); one that starts on a branch the run has is
 // not added (known_branch_holding). Key numbers: orbit_branches, off_curve_orbits_left (orbits
 // off every branch that started none), off_curve_orbits_on_known (whose branch is one the run
 // has: off_every_branch missed it at that speed), and per branch k
@@ -296,6 +295,11 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // against the GSL monodromy of the integrated orbits and at up to 3 of its unstable points); the
 // ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches.
 void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const {
+  if (!has_exact_flow(r.hb)) {
+    run.say(model_.name + ": no branches from the diagram's orbits: with a time-varying contact stiffness an HB "
+            "point has no error bound at phase 0 to tell an orbit on a branch from one off it");
+    return;
+  }
   const double xs = r.c.scaling.x.cwiseAbs().maxCoeff(), tol = model_.diagram.options.period_tol * xs;
   const std::vector<BranchView> known = branch_views(r.hb, r.c, r.branches);
   std::vector<const DiagramPoint*> off = off_branch_orbits(d, known, tol);
@@ -409,8 +413,9 @@ int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
-              "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches: columns\n"
-              "period, branch), bifurcations.csv,\n"
+              "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches, and the\n"
+              "branches continued from the diagram's orbits off every branch: columns period, branch),\n"
+              "bifurcations.csv,\n"
               "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
               "and frc.png; where some range has no stable period-1 orbit (or with bifurcation_diagram.range\n"
               "whole) also bifurcation_diagram.csv, bifurcation_diagram_hb.csv and bifurcation_diagram.png;\n"
