@@ -411,13 +411,17 @@ FRC_CAPTIONS = {
                "orbit is stable (shaded), the Poincare points of the bifurcation diagram by time integration "
                "(below), by default over a band around each such range (the panel's title gives the bands); "
                "hollow diamonds, where there are any, are integrations started on a stable HB orbit that no sweep "
-               "reached at its speed.",
+               "reached at its speed. Where the diagram has periodic orbits (period 1 or 2) on none of those "
+               "branches, the HB branch continued from such an orbit in brown, thicker (and at phase 0 under the "
+               "Poincare points); the shading then marks where no period-1 branch, the new ones included, is "
+               "stable.",
     "bifurcation_diagram.png": "The bifurcation diagram by time integration (GSL, exact contact switching): the "
                                "output at phase 0 of each forcing period after the transient, over its bands "
                                "(the title: by default each range with no stable period-1 orbit, padded), sweeping up (top) "
                                "and down (bottom), each point coloured by what the motion is (period n, "
                                "quasi-periodic, chaotic by its largest Lyapunov exponent), under the harmonic "
-                               "balance's period-1 curve at the same phase; in both panels, where there are any, "
+                               "balance's period-1 curve at the same phase (and, brown, any branch continued from "
+                               "the diagram's orbits off the others); in both panels, where there are any, "
                                "hollow diamonds: integrations started on a stable HB orbit that no sweep reached "
                                "at its speed. Notice that the two views agree where "
                                "both apply: the stable HB curve runs through the period-1 points.",

@@ -7,7 +7,10 @@ wrote bifurcations.csv) marked with a legend; the title is the model's name and
 harmonics (from params.json, the resolved model). Period-2 branches (rows with
 period 2 in frc.csv, one per branch id) in their own colour (x_max and x_min over two
 forcing periods); the contact rug and the bifurcation markers are those of the period-1
-branch (branch 0) and of each period-2 branch on its own curve. Torus branches (torus.csv,
+branch (branch 0) and of each period-2 branch on its own curve. A branch the run continued from a
+time-integrated orbit of the diagram that lies on none of the others (key numbers orbit_branch_*)
+in its own colour (style.plot_orbit_branches), thicker, its contact rug row and its section at
+phase 0 under the Poincare points in that colour too. Torus branches (torus.csv,
 gearhb_frc's torus key: quasi-periodic motion past a Neimark-Sacker point by two-frequency
 harmonic balance) in black dash-dot (x_max and x_min over the torus), the points whose
 stability the flow tested (torus.csv `stable`) filled where stable, open where unstable, grey
@@ -25,8 +28,9 @@ import sys
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 import matplotlib.pyplot as plt  # noqa: E402
 
-from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, PERIOD2_COLOURS, branch_ids, contact_rug,  # noqa: E402
-                   legend_styles, mark_unresolved_stable, plot_branch, plot_doubled_branches, read_csv, rows_of, rug_room, save,
+from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, ORBIT_BRANCH_COLOUR, PERIOD2_COLOURS,  # noqa: E402
+                   branch_ids, contact_rug, legend_styles, mark_unresolved_stable, orbit_branches, plot_branch,
+                   plot_doubled_branches, plot_orbit_branches, read_csv, rows_of, rug_room, save,
                    shade_no_stable_period1, unstable_period1_ranges)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window,  # noqa: E402
                       with_hb_starts, within)
@@ -62,17 +66,17 @@ def save_whole(fig, path):
     plt.close(fig)
 
 
-def poincare_panel(ax, p, h, direction, sweeps=with_hb_starts(), title=None):
+def poincare_panel(ax, p, h, direction, sweeps=with_hb_starts(), title=None, orbit=()):
     """The diagram's Poincare points over the HB branch at phase 0, on ax (sweeps: which rows, by
-    their sweep); its legend handles."""
-    handles = draw_hb_section(ax, h, "omega", "x") + draw_poincare(ax, p, "omega", "x", sweeps=sweeps)
+    their sweep; orbit: the ids of the orbit branches); its legend handles."""
+    handles = draw_hb_section(ax, h, "omega", "x", orbit=orbit) + draw_poincare(ax, p, "omega", "x", sweeps=sweeps)
     ax.set_ylabel("q'x at phase 0 of each\nforcing period [m]")
     if title:
         ax.set_title(title, fontsize=9)
     return handles
 
 
-def diagram_figure(d_dir, model, p, h):
+def diagram_figure(d_dir, model, p, h, orbit=()):
     """bifurcation_diagram.png: the up sweep above, the down sweep below."""
     fig, axes = plt.subplots(2, 1, figsize=(6.8, 6.8), sharex=True)
     lo, hi = window(p, "omega")
@@ -82,7 +86,7 @@ def diagram_figure(d_dir, model, p, h):
     for ax, sweep in zip(axes, ("up", "down")):
         for hd in poincare_panel(ax, p, h, model["output"]["direction"], with_hb_starts((sweep,)),
                                  "sweep %s (each speed but its first from the previous speed's final state)%s"
-                                 % (sweep, hb_starts_text(p))):
+                                 % (sweep, hb_starts_text(p)), orbit):
             labels.setdefault(hd.get_label(), hd)
     axes[-1].set_xlim(lo, hi)
     for ax in axes:
@@ -114,10 +118,13 @@ def torus_panel(ax, t, b):
 
 
 def no_stable_period1(d_dir, axes):
-    """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*)
-    on every panel; its legend entry (none without such ranges)."""
+    """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*;
+    where the run continued branches from the diagram's orbits, unstable_period1_*_all_branches: on
+    none of its period-1 branches) on every panel; its legend entry (none without such ranges)."""
     kn_file = d_dir / "key_numbers.json"
-    return shade_no_stable_period1(axes, unstable_period1_ranges(json.load(open(kn_file)) if kn_file.exists() else {}))
+    kn = json.load(open(kn_file)) if kn_file.exists() else {}
+    return shade_no_stable_period1(axes, unstable_period1_ranges(
+        kn, "_all_branches" if "unstable_period1_ranges_all_branches" in kn else ""))
 
 
 def read_run(d_dir):
@@ -130,7 +137,10 @@ def read_run(d_dir):
          "bif": table("bifurcations.csv"), "diagram": None, "diagram_hb": None}
     if table("bifurcation_diagram_hb.csv") is not None:
         r["diagram"], r["diagram_hb"] = table("bifurcation_diagram.csv"), table("bifurcation_diagram_hb.csv")
-    r["d"], r["ids"] = rows_of(r["full"], 0), branch_ids(r["full"])
+    kn_file = d_dir / "key_numbers.json"
+    r["orbit"] = orbit_branches(json.load(open(kn_file)) if kn_file.exists() else {})
+    r["orbit_ids"] = [bid for bid, _, _ in r["orbit"]]
+    r["d"], r["ids"] = rows_of(r["full"], 0), [b for b in branch_ids(r["full"]) if b not in r["orbit_ids"]]
     return r
 
 
@@ -198,14 +208,17 @@ def torus_stability_marks(ax, t, lo="x_min", hi="x_max", labelled=True):
                     color=colour, mfc=face, zorder=4, label=label if labelled and n == 0 and idx else None)
 
 
-def contact_rugs(ax, full, ids):
-    """One rug row per branch (period 1 at the bottom, then each period-2 branch in its colour):
-    on coexisting branches the reader sees which one loses contact."""
-    contact_rug(ax, per_contact_state(rows_of(full, 0)), row=0, colour="C0" if ids else None)
+def contact_rugs(ax, full, ids, orbit_ids=()):
+    """One rug row per branch (period 1 at the bottom, then each period-2 branch in its colour,
+    then each orbit branch in its own): on coexisting branches the reader sees which one loses
+    contact."""
+    contact_rug(ax, per_contact_state(rows_of(full, 0)), row=0, colour="C0" if ids or orbit_ids else None)
     for n, bid in enumerate(ids):
         contact_rug(ax, per_contact_state(rows_of(full, bid)), row=n + 1,
                     colour=PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)])
-    rug_room(ax, rows=1 + len(ids))
+    for n, bid in enumerate(orbit_ids):
+        contact_rug(ax, per_contact_state(rows_of(full, bid)), row=len(ids) + n + 1, colour=ORBIT_BRANCH_COLOUR)
+    rug_room(ax, rows=1 + len(ids) + len(orbit_ids))
 
 
 def bifurcation_markers(ax, full, b):
@@ -238,7 +251,7 @@ def labels(ax, model, d):
 
 def poincare_below(axp, r, handles):
     """The diagram's Poincare points under the response, the torus' section on them; the legend."""
-    more = poincare_panel(axp, r["diagram"], r["diagram_hb"], r["model"]["output"]["direction"])
+    more = poincare_panel(axp, r["diagram"], r["diagram_hb"], r["model"]["output"]["direction"], orbit=r["orbit_ids"])
     if r["torus"] is not None:   # the torus' section theta1 = 0: where its Poincare points lie
         torus_curves(axp, r["torus"], "section_min", "section_max", "torus (HB): least, largest q'x on the section")
         more += [x for x in axp.get_lines() if x.get_label().startswith("torus")]
@@ -259,7 +272,8 @@ def main():
     plot_branch(ax, r["d"], "x_min", "C0")
     for y in ("x_max", "x_min"):   # "stable" on a failed shooting correction: unresolved, not stable
         mark_unresolved_stable(ax, r["d"], y)
-    plot_doubled_branches(ax, r["full"], mark_unresolved=True)
+    plot_doubled_branches(ax, r["full"], skip=r["orbit_ids"], mark_unresolved=True)
+    plot_orbit_branches(ax, r["full"], r["orbit"])
     if r["ids"]:
         period2_closeup(axes["closeup"], r["full"], r["d"], r["ids"])
     if r["torus"] is not None:
@@ -268,14 +282,14 @@ def main():
         torus_panel(axes["torus"], r["torus"], r["bif"])
     if r["bif"] is not None:
         bifurcation_markers(ax, r["full"], r["bif"])
-    contact_rugs(ax, r["full"], r["ids"])
+    contact_rugs(ax, r["full"], r["ids"], r["orbit_ids"])
     shaded = no_stable_period1(d_dir, [a for a in (ax, axes["poincare"]) if a is not None])
     labels(ax, r["model"], r["d"])
     handles = ax.get_legend_handles_labels()[0] + shaded + legend_styles(ax)
     if axes["poincare"] is not None:
         ax.set_xlabel("")
         poincare_below(axes["poincare"], r, handles)
-        diagram_figure(d_dir, r["model"], r["diagram"], r["diagram_hb"])
+        diagram_figure(d_dir, r["model"], r["diagram"], r["diagram_hb"], r["orbit_ids"])
     else:
         fig.legend(handles=handles, fontsize=7, loc="upper center", bbox_to_anchor=(0.5, 0.0), ncol=3,
                    frameon=False)

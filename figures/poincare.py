@@ -12,7 +12,7 @@ its bands (column band: by default the ranges with no stable period-1 orbit, pad
 section the whole branch."""
 from matplotlib.lines import Line2D
 
-from style import PERIOD2_COLOURS, plot_branch
+from style import ORBIT_BRANCH_COLOUR, PERIOD2_COLOURS, plot_branch
 
 MOTION_COLOURS = {"periodic_1": "0.15", "periodic_n": "C0", "quasi_periodic": "C2", "chaotic": "C3",
                   "unsettled": "C1"}
@@ -70,14 +70,17 @@ def subset(h, keep):
     return {c: [v[i] for i in range(len(v)) if keep(i)] for c, v in h.items()}
 
 
-def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase", unresolved=()):
+def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at the same phase", unresolved=(),
+                    orbit=()):
     """The HB branches' values at phase 0 (bifurcation_diagram_hb.csv), solid stable, dashed
     unstable: period 1 (branch 0) in grey; where the table has the period and branch columns,
     each period-p branch's p values per orbit (the rows of a point come p at a time: its forcing
     periods j = 0..p-1) as p lines in the branch's colour (the response panel's). Legend entries only for the styles drawn:
     one per branch up to three branches, else one per period ("a colour each", as the response
     panel says it: the colours repeat beyond five). The period-1 line is grey at
-    the indices `unresolved` of its rows (style.plot_branch)."""
+    the indices `unresolved` of its rows (style.plot_branch). The branch ids in `orbit` (branches
+    continued from a time-integrated orbit, style.orbit_branches) in ORBIT_BRANCH_COLOUR, thicker,
+    a legend entry each."""
     h = subset(h, lambda i: h["point"][i] == "branch") if "point" in h else h   # the speed rows are for checks
     branch = [int(float(b)) for b in h["branch"]] if "branch" in h else [0] * len(h[x])
     one = subset(h, lambda i: branch[i] == 0)
@@ -87,7 +90,15 @@ def draw_hb_section(ax, h, x, y, scale=1.0, colour="0.55", label="HB period 1 at
         drawn = {int(float(s)) for s in one["stable"]}
         handles += [Line2D([], [], color=colour, ls=ls, label="%s (%s)" % (label, word))
                     for flag, ls, word in ((1, "-", "stable"), (0, "--", "unstable")) if flag in drawn]
-    ids = sorted({b for b in branch if b > 0})
+    for bid in sorted(set(orbit) & set(branch)):
+        rows = subset(h, lambda i: branch[i] == bid)
+        period = int(float(rows["period"][0]))
+        for j in range(period):
+            plot_branch(ax, subset(rows, lambda i: i % period == j), y, ORBIT_BRANCH_COLOUR, None, x=x, scale=scale,
+                        values="hb", lw=1.8)
+        handles.append(Line2D([], [], color=ORBIT_BRANCH_COLOUR, lw=1.8, label="HB period %d (branch %d) continued from "
+                              "a time-integrated orbit%s" % (period, bid, ", its %d points" % period if period > 1 else "")))
+    ids = sorted({b for b in branch if b > 0} - set(orbit))
     named = set()
     for n, bid in enumerate(ids):
         rows = subset(h, lambda i: branch[i] == bid)

@@ -38,6 +38,7 @@
 
 #include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/case_table.hpp"
+#include "gearhb/app/orbit_branches.hpp"
 #include "gearhb/app/solver_settings.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
@@ -526,92 +527,6 @@ BifurcationDiagram GearPairChapter::starts_on_hb(Run& run, const Case& cs, const
   return s;
 }
 
-// The largest Floquet multiplier modulus of the integrated orbit of period p through (x0, v0) at
-// phase 0: the product of p GSL period maps' monodromy matrices (the variational equations on the
-// integrator, not the HB orbit's shooting on the exact flow).
-double integrated_multiplier(const HarmonicBalance& hb, const VectorXd& x0, const VectorXd& v0, double omega, int p,
-                             double x_scale) {
-  TimeIntegrationOptions o;
-  o.x_scale = x_scale;
-  VectorXd x = x0, v = v0, xT, vT;
-  MatrixXd M = MatrixXd::Identity(2 * x0.size(), 2 * x0.size()), Phi;
-  for (int k = 0; k < p; ++k) {
-    TimeIntegrator(hb).period_map(x, v, omega, o, xT, vT, Phi);
-    M = Phi * M;
-    x = xT, v = vT;
-  }
-  return M.eigenvalues().cwiseAbs().maxCoeff();
-}
-
-// Key numbers of orbit branch b (id `id`, suffix `tag`): where it starts, its span and swing of
-// Delta within the range (the largest swing on its stable points too), its stable stretches
-// (stable_intervals), its check against the orbit it starts from.
-void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const VectorXd& T2, const SweepOptions& o,
-                          const std::string& tag) {
-  const ResponseEvaluator ev(*b.model, T2, 256);
-  double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0, stable_swing = 0.0;
-  const auto& P = b.curve.branch.points;
-  for (std::size_t i = 0; i < P.size(); ++i) {
-    const double w = b.period * P[i].omega;
-    if (w < o.omega_min || w > o.omega_max) continue;
-    const ResponseSummary r = ev.summarize(P[i].X);
-    from = std::min(from, w), to = std::max(to, w);
-    lo = std::min(lo, r.x_min), hi = std::max(hi, r.x_max), swing = std::max(swing, r.x_max - r.x_min);
-    if (b.curve.stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
-  }
-  const Intervals st = stable_intervals(b.curve, b.period);
-  key.add("orbit_branch_stable_ranges" + tag, double(st.size()), "-");
-  for (std::size_t j = 0; j < st.size(); ++j) {
-    key.add("orbit_branch_stable_from_omega" + tag + "_" + std::to_string(j + 1), st[j].first, "rad/s");
-    key.add("orbit_branch_stable_to_omega" + tag + "_" + std::to_string(j + 1), st[j].second, "rad/s");
-  }
-  key.add("orbit_branch_stable_swing" + tag, stable_swing, "m");
-  key.add("orbit_branch_id" + tag, id, "-");
-  key.add("orbit_branch_period" + tag, b.period, "-");
-  key.add("orbit_branch_omega" + tag, b.omega, "rad/s");
-  key.add("orbit_branch_from_omega" + tag, from, "rad/s");
-  key.add("orbit_branch_to_omega" + tag, to, "rad/s");
-  key.add("orbit_branch_delta_min" + tag, lo, "m");
-  key.add("orbit_branch_delta_max" + tag, hi, "m");
-  key.add("orbit_branch_swing" + tag, swing, "m");
-  key.add("orbit_branch_hb_vs_time_integration" + tag, b.distance, "m");
-  key.add("orbit_branch_hb_error_bound" + tag, b.bound, "m");
-  key.add("orbit_branch_folds" + tag, double(b.curve.branch.folds.size()), "-");
-  key.add("orbit_branch_bifurcations" + tag, double(b.curve.bifurcations.size()), "-");
-}
-
-// Step 3c, its first part: from each orbit of `off` (in order) that lies on none of the branches
-// found so far, branch_from_orbit (at most 4 branches, 6 attempts); `left`: the orbits off every
-// branch that started none (a failed attempt, or past the limits).
-std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                              const std::vector<const DiagramPoint*>& off, const SweepOptions& o,
-                                              double tol, int& left) {
-  std::vector<OrbitBranch> found;
-  std::vector<BranchView> mine;
-  int attempts = 0;
-  left = 0;
-  for (const DiagramPoint* p : off) {
-    if (!off_every_branch(*p, mine, tol)) continue;
-    if (found.size() >= 4 || attempts >= 6) {
-      ++left;
-      continue;
-    }
-    ++attempts;
-    OrbitBranch b = run.timed("orbit branch " + label, [&] {
-      return branch_from_orbit(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, o);
-    });
-    run.say(label + ": " + b.why);
-    if (!b.ok) {
-      ++left;
-      continue;
-    }
-    found.push_back(std::move(b));
-    mine.clear();
-    for (const auto& f : found) mine.push_back({f.model.get(), &f.curve, f.period});
-  }
-  return found;
-}
-
 // The continued curve's largest swing Delta_max - Delta_min (to compare the orbit branches with).
 double curve_swing(const HarmonicBalance& hb, const FrequencyCurve& c, const VectorXd& T2) {
   const ResponseEvaluator ev(hb, T2, 256);
@@ -623,39 +538,6 @@ double curve_swing(const HarmonicBalance& hb, const FrequencyCurve& c, const Vec
   return swing;
 }
 
-// Step 3c, the check of orbit branch b against the time integration (suffix `tag`):
-// orbit_branch_diagram_speeds (the off-curve orbits on b within HB's own error), and
-// orbit_branch_stability_agrees: at each of them b's Floquet stability (both ends of its chord; a
-// chord at a stability change skipped) is that of the integrated orbit's GSL monodromy, and at
-// orbit_branch_unstable_checked (up to 3) unstable points spread over its unstable stretches
-// (both neighbours unstable), the GSL monodromy from the orbit corrected by shooting has a
-// multiplier outside the unit circle too. xs: the integration's x_scale.
-void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const OrbitBranch& b,
-                         const std::vector<const DiagramPoint*>& off, double tol, double xs, const std::string& tag) {
-  int on = 0, agree = 1;
-  const auto& st = b.curve.stable;
-  for (const DiagramPoint* p : off) {
-    if (p->n != b.period) continue;
-    const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p->x, p->n, p->omega);
-    if (!(bd.distance <= bd.bound + tol)) continue;
-    ++on;
-    if (st[std::size_t(bd.chord)] != st[std::size_t(bd.chord) + 1]) continue;
-    const bool attracts = integrated_multiplier(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, xs) < 1.0;
-    agree = agree && attracts == st[std::size_t(bd.chord)];
-  }
-  std::vector<std::size_t> unstable;
-  for (std::size_t i = 1; i + 1 < st.size(); ++i)
-    if (!st[i - 1] && !st[i] && !st[i + 1] && b.curve.floquet[i].corrected) unstable.push_back(i);
-  for (int j = 0; j < 3 && !unstable.empty(); ++j) {
-    const std::size_t i = unstable[unstable.size() * std::size_t(2 * j + 1) / 6];
-    const PointFloquet& f = b.curve.floquet[i];
-    agree = agree && integrated_multiplier(hb, f.x0, f.v0, b.period * b.curve.branch.points[i].omega, b.period, xs) > 1.0;
-  }
-  key.add("orbit_branch_unstable_checked" + tag, double(std::min<std::size_t>(3, unstable.size())), "-");
-  key.add("orbit_branch_diagram_speeds" + tag, on, "-");
-  key.add("orbit_branch_stability_agrees" + tag, agree, "-");
-}
-
 // Step 3c (issue 34): the HB branches through the diagram's periodic orbits that lie on none of
 // the curve's branches (the period-1 curve and its period-doubled branches; hb/orbit_branch.hpp
 // off_every_branch, tolerance the classifier's resolution period_tol x x_scale). From the first
@@ -665,7 +547,8 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
 // found so far starts none (at most 4 branches, 6 attempts). Each branch takes the next branch id in
 // frc_<label>.csv and bifurcations_<label>.csv. Key numbers (suffix _<label>; _<label>_<k> for
 // branch k): off_curve_orbits (diagram speeds of both sweeps off every branch of the curve),
-// off_curve_orbits_left (of those, off every branch with the new ones too), orbit_branches,
+// off_curve_orbits_left (of those, off every branch with the new ones too, that started none),
+// off_curve_orbits_on_known (of those, whose branch is one of the curve's: known_branch_holding), orbit_branches,
 // curve_swing (the continued curve's largest Delta_max - Delta_min, to compare), the
 // numbers of orbit_branch_numbers, orbit_branch_diagram_speeds (off-curve diagram speeds on
 // branch k: the time integration agrees with it there within HB's own error),
@@ -681,12 +564,14 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   const SweepOptions o = sweep(cs.mesh, sol_.omega_min, sol_.omega_max);
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = BifurcationDiagramOptions{}.period_tol * xs;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
-  const std::vector<const DiagramPoint*> off = off_branch_orbits(d, branch_views(hb, c, branches), tol);
-  int left = 0;
-  const std::vector<OrbitBranch> found = branches_from_orbits(run, cs.label, hb, off, o, tol, left);
+  const std::vector<BranchView> known = branch_views(hb, c, branches);
+  const std::vector<const DiagramPoint*> off = off_branch_orbits(d, known, tol);
+  int left = 0, on_known = 0;
+  const std::vector<OrbitBranch> found = branches_from_orbits(run, cs.label, hb, off, known, o, tol, left, on_known);
   KeyNumbers& key = run.key_numbers();
   key.add("off_curve_orbits_" + cs.label, double(off.size()), "-");
   key.add("off_curve_orbits_left_" + cs.label, double(left), "-");
+  key.add("off_curve_orbits_on_known_" + cs.label, double(on_known), "-");
   key.add("orbit_branches_" + cs.label, double(found.size()), "-");
   key.add("curve_swing_" + cs.label, curve_swing(hb, c, T2), "m");
   Intervals stable = stable_intervals(c);
@@ -694,7 +579,7 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
     const OrbitBranch& b = found[k];
     const std::string tag = "_" + cs.label + "_" + std::to_string(k + 1);
     branches.push_back(table_branch(b));
-    orbit_branch_numbers(key, b, int(branches.size()), T2, o, tag);
+    orbit_branch_numbers(key, b, int(branches.size()), T2, "delta", o, tag);
     orbit_branch_checks(key, hb, b, off, tol, xs, tag);
     if (b.period == 1) {
       const Intervals more = stable_intervals(b.curve);

@@ -7,7 +7,9 @@
 // Any n-DOF system with unilateral contacts, described in JSON (model_file.hpp,
 // README "Your own system from a file"); no C++ needed. The steps: read_model
 // (in the study's checks, so a bad file exits 2 before anything is written),
-// natural_frequencies, frequency_response, draw.
+// natural_frequencies, frequency_response (the curve, its period-doubled branches),
+// bifurcation_diagram (with orbit_branches: the HB branches through its orbits off every
+// branch), quasi_periodic (tori), tables, draw.
 //
 // Sample runs:
 //   build/bin/gearhb_frc programs/gearhb_frc/examples/nlvib_ex03.json --out /tmp/ex03
@@ -23,6 +25,7 @@
 #include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/model_file.hpp"
+#include "gearhb/app/orbit_branches.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
 #include "gearhb/core/linear_dynamics.hpp"
@@ -42,6 +45,17 @@ namespace {
 
 void torus_stability_key_numbers(KeyNumbers& key, const TorusBranch& b, const std::string& id);
 
+// What the steps hand on: the model's HB, the sweep's options and curve, the curve's other
+// branches in the order of their table ids 1, 2, ... (the period-doubled ones, then those
+// through the diagram's orbits off every branch), the torus branches (ids after those).
+struct Response {
+  HarmonicBalance hb;
+  SweepOptions o;
+  FrequencyCurve c;
+  std::vector<PeriodDoubledBranch> branches;
+  std::vector<TorusBranch> tori;
+};
+
 class FrequencyResponseFromFile {
  public:
   explicit FrequencyResponseFromFile(Study& study);
@@ -54,13 +68,15 @@ class FrequencyResponseFromFile {
 
   void read_model();
   void natural_frequencies(Run& run) const;
-  void frequency_response(Run& run) const;
-  void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd, int points) const;
+  Response frequency_response(Run& run) const;
+  void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
-  void bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                           const std::vector<PeriodDoubledBranch>& pd) const;
+  void bifurcation_diagram(Run& run, Response& r) const;
+  void orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const;
+  void quasi_periodic(Run& run, Response& r) const;
   std::vector<TorusBranch> torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const SweepOptions& o, int first_id) const;
+  void tables(Run& run, const Response& r) const;
   void draw(Run& run) const;
 };
 
@@ -71,7 +87,10 @@ FrequencyResponseFromFile::FrequencyResponseFromFile(Study& study) : study_(stud
 void FrequencyResponseFromFile::run(Run& run) {
   run.write_text("params.json", model_.resolved.dump(2) + "\n");
   natural_frequencies(run);
-  frequency_response(run);
+  Response r = frequency_response(run);
+  bifurcation_diagram(run, r);
+  quasi_periodic(run, r);
+  tables(run, r);
   if (plot_) draw(run);
 }
 
@@ -138,18 +157,20 @@ void FrequencyResponseFromFile::natural_frequencies(Run& run) const {
   run.write("modes.csv", t);
 }
 
-// Step 3: one arc-length continuation over the range, every point's stability and contact.
-void FrequencyResponseFromFile::frequency_response(Run& run) const {
-  const HarmonicBalance hb = model_.harmonic_balance();
-  SweepOptions o;
+// Step 3: one arc-length continuation over the range, every point's stability and contact;
+// the period-2 (4) branches from its located PDs.
+Response FrequencyResponseFromFile::frequency_response(Run& run) const {
+  Response r{model_.harmonic_balance(), {}, {}, {}, {}};
+  SweepOptions& o = r.o;
   o.omega_min = std::min(model_.omega_from, model_.omega_to);
   o.omega_max = std::max(model_.omega_from, model_.omega_to);
   o.continuation.ds_max = model_.ds_max;
   report_sweep_progress(run, o, model_.name);
   o.direction = model_.omega_from > model_.omega_to ? SweepDirection::down : SweepDirection::up;
-  const FrequencyCurve c = run.timed("sweep", [&] { return sweep_frequency(hb, o, model_.name); });
+  r.c = run.timed("sweep", [&] { return sweep_frequency(r.hb, o, model_.name); });
+  const FrequencyCurve& c = r.c;
   // The lowest frequency of the curve where a contact first closes (if any does).
-  const double onset = model_.contacts.empty() ? NAN : first_transition(hb, c, touches_somewhere(hb));
+  const double onset = model_.contacts.empty() ? NAN : first_transition(r.hb, c, touches_somewhere(r.hb));
   if (std::isfinite(onset)) run.key_numbers().add("contact_onset_omega", onset, "rad/s");
   run.say(model_.name + ": " + c.branch.summary() +
           (c.branch.points.empty() ? std::string() : std::string("; first point by ") + to_string(c.first_point)));
@@ -157,40 +178,23 @@ void FrequencyResponseFromFile::frequency_response(Run& run) const {
   // Period-2 branches from the located PDs (hb/period_doubling.hpp): each its own branch id
   // (1, 2, ...) in frc.csv and bifurcations.csv; a switch that fails says where and why in
   // one line and the rest of the run stands.
-  std::vector<PeriodDoubledBranch> pd;
   if (model_.period_doubling_depth >= 1)
-    pd = run.timed("period-2 branches", [&] { return period_doubling_cascade(hb, c, o, model_.period_doubling_depth); });
-  for (const auto& b : pd) run.say(model_.name + ": " + b.why);
-  // Torus branches from the NS points (hb/quasi_periodic.hpp): ids after the period-doubled
-  // branches', so that bifurcations.csv's starts_branch names either kind.
-  const int first_torus = int(pd.size()) + 1;
-  std::vector<int> starts = branch_starts(c, pd);
-  if (model_.torus_on) add_torus_starts(starts, torus_branches(run, hb, c, o, first_torus), first_torus);
-  Table frc = dof_response_table(hb, c, model_.output, table_progress(run, c, model_.name));
-  Table bif = bifurcation_table(c, {}, starts);
-  int period2_points = 0;
-  for (std::size_t k = 0; k < pd.size(); ++k) {
-    if (!has_points(pd[k])) continue;
-    const BranchLabel label{pd[k].period, int(k) + 1};
-    frc.append(dof_response_table(*pd[k].model, pd[k].curve, model_.output, {}, label));
-    bif.append(bifurcation_table(pd[k].curve, label, branch_starts(pd[k].curve, pd, int(k))));
-    if (pd[k].period == 2) period2_points += int(pd[k].curve.branch.points.size());
-  }
-  run.write("frc.csv", frc);
-  run.write("bifurcations.csv", bif);
+    r.branches = run.timed("period-2 branches", [&] { return period_doubling_cascade(r.hb, c, o, model_.period_doubling_depth); });
+  for (const auto& b : r.branches) run.say(model_.name + ": " + b.why);
   run.key_numbers().add("bifurcations", double(c.bifurcations.size()), "-");
-  if (model_.period_doubling_depth >= 1) period2_key_numbers(run, pd, period2_points);
-  curve_key_numbers(run, hb, c);
-  bifurcation_diagram(run, hb, c, pd);
+  if (model_.period_doubling_depth >= 1) period2_key_numbers(run, r.branches);
+  curve_key_numbers(run, r.hb, c);
+  return r;
 }
 
 // How many period-2 branches, how many merged, their points, where each starts and ends.
-void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd,
-                                                    int period2_points) const {
+void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd) const {
   KeyNumbers& key = run.key_numbers();
-  int merged = 0, period2 = 0;
+  int merged = 0, period2 = 0, period2_points = 0;
   for (const auto& b : pd) merged += b.period == 2 && b.end == PeriodDoubledBranch::End::merged ? 1 : 0;
   for (const auto& b : pd) period2 += b.period == 2 ? 1 : 0;
+  for (const auto& b : pd)
+    if (b.period == 2 && has_points(b)) period2_points += int(b.curve.branch.points.size());
   key.add("period2_branches", double(period2), "-");
   if (pd.size() > std::size_t(period2)) key.add("period4_branches", double(pd.size() - std::size_t(period2)), "-");
   key.add("period2_branches_merged", double(merged), "-");
@@ -227,20 +231,22 @@ void FrequencyResponseFromFile::curve_key_numbers(Run& run, const HarmonicBalanc
   }
 }
 
-// Step 3c: the diagram by time integration (app/bifurcation_input.hpp), up then down over each
+// Step 4: the diagram by time integration (app/bifurcation_input.hpp), up then down over each
 // band of the file's bifurcation_diagram key (down from the stable HB orbit at the band's upper end
 // where there is one, on a second thread: set_down_start) - by default each range with no stable period-1
 // orbit, padded to show period 1 on both sides; none where every range is stable or the key is
-// false, and none, said in one line, where the integration is stiff. bifurcation_diagram.csv:
-// omega, band, sweep, x = the output coordinate at phase 0 of each period, motion, n, lyapunov;
-// bifurcation_diagram_hb.csv: omega, period, branch, x at phase 0 of each forcing period of the
-// period-1 branch's and every period-2 (4) branch's orbits, stable, point: to draw beneath and check;
-// key numbers diagram_off_branch_period1, _period2: the speeds (both sweeps) whose orbit of period
-// 1 (2) lies on none of the HB branches of its period (the curve; its period-2 branches, none at
-// period_doubling depth 0; off_every_branch): HB branches the run has not found.
-void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                                    const std::vector<PeriodDoubledBranch>& pd) const {
+// false, and none, said in one line, where the integration is stiff. Key numbers
+// diagram_off_branch_period1, _period2: the speeds (both sweeps) whose orbit of period 1 (2) lies
+// on none of the HB branches of its period (the curve; its period-2 branches, none at
+// period_doubling depth 0; off_every_branch): HB branches the sweep has not found, continued by
+// orbit_branches (step 4b). bifurcation_diagram.csv: omega, band, sweep, x = the output
+// coordinate at phase 0 of each period, motion, n, lyapunov; bifurcation_diagram_hb.csv: omega,
+// period, branch, x at phase 0 of each forcing period of the orbits of the period-1 branch and of
+// every other branch (period-2 (4), orbit branches), stable, point: to draw beneath and check.
+void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const {
   if (!model_.diagram.on) return;
+  const HarmonicBalance& hb = r.hb;
+  const FrequencyCurve& c = r.c;
   const double lo = std::min(model_.omega_from, model_.omega_to), hi = std::max(model_.omega_from, model_.omega_to);
   const std::vector<DiagramBand> bands = input_bands(model_.diagram, c, lo, hi, hb.dofs());
   if (bands.empty()) {
@@ -255,6 +261,12 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   auto rad_s = [](double w) { return w; };
   run.say(model_.name + ": " + diagram_bands_text(bands, rad_s, "rad/s"));
   const BifurcationDiagram d = diagram_of_bands(run, hb, c, bands, model_.diagram.options, "bifurcation_diagram", "");
+  diagram_key_numbers(run.key_numbers(), d, "");
+  run.key_numbers().add("diagram_bands", double(bands.size()), "-");
+  off_branch_key_numbers(run.key_numbers(), hb, c, r.branches, d, model_.diagram.options.period_tol, "");
+  run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
+  orbit_branches(run, r, d);
+  const std::vector<PeriodDoubledBranch>& pd = r.branches;
   Table t(bifurcation_columns({"omega", "band"}, "x"));
   const SectionOrbits orbits = run.timed("HB orbits at the diagram's speeds", [&] { return section_orbits(hb, c, pd, d); });
   const BifurcationDiagram from_hb = diagram_from_hb_orbits(run, hb, c, pd, orbits, d, model_.diagram.options);
@@ -265,15 +277,80 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, const HarmonicBala
   add_hb_section_rows(h, hb, c, pd, orbits, model_.output, 1.0,
                       [](double w, int p, int b) { return std::vector<Table::Cell>{w, long(p), long(b)}; });
   run.write("bifurcation_diagram_hb.csv", h);
-  diagram_key_numbers(run.key_numbers(), d, "");
-  run.key_numbers().add("diagram_bands", double(bands.size()), "-");
-  // the diagram's orbits on none of the HB branches (a branch the run has not found; not yet
-  // continued here)
-  off_branch_key_numbers(run.key_numbers(), hb, c, pd, d, model_.diagram.options.period_tol, "");
-  run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
 }
 
-// Step 3b (with the file's torus key): quasi-periodic motion past each Neimark-Sacker point,
+// Step 4b (issue 34): the HB branches through the diagram's periodic orbits of period 1 or 2 that
+// lie on none of the run's branches (those diagram_off_branch_period1, _period2 count), as ch. 6
+// continues Fig. 41's (app/orbit_branches.hpp): from the first such orbit (up sweep, then down)
+// branch_from_orbit solves HB from its Fourier coefficients, checks it against the orbit within
+// HB's own error and continues it both ways over the range with the sweep's options (stability,
+// bifurcations); an orbit on a branch found so far starts none (at most 4 branches). Each takes
+// the next branch id in frc.csv and bifurcations.csv (none, said in one line, for a model without
+// an exact flow: has_exact_flow); one that starts on a branch the run has is
+// not added (known_branch_holding). Key numbers: orbit_branches, off_curve_orbits_left (orbits
+// off every branch that started none), off_curve_orbits_on_known (whose branch is one the run
+// has: off_every_branch missed it at that speed), and per branch k
+// (orbit_branch_*_<k>) orbit_branch_numbers ("x": the output coordinate), orbit_branch_isola, and
+// orbit_branch_checks (the diagram's off-branch orbits on it within HB's own error; its stability
+// against the GSL monodromy of the integrated orbits and at up to 3 of its unstable points); the
+// ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches.
+void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const {
+  if (!has_exact_flow(r.hb)) {
+    run.say(model_.name + ": no branches from the diagram's orbits: with a time-varying contact stiffness an HB "
+            "point has no error bound at phase 0 to tell an orbit on a branch from one off it");
+    return;
+  }
+  const double xs = r.c.scaling.x.cwiseAbs().maxCoeff(), tol = model_.diagram.options.period_tol * xs;
+  const std::vector<BranchView> known = branch_views(r.hb, r.c, r.branches);
+  std::vector<const DiagramPoint*> off = off_branch_orbits(d, known, tol);
+  off.erase(std::remove_if(off.begin(), off.end(), [](const DiagramPoint* p) { return p->n > 2; }), off.end());
+  int left = 0, on_known = 0;
+  const std::vector<OrbitBranch> found = branches_from_orbits(run, model_.name, r.hb, off, known, r.o, tol, left, on_known);
+  KeyNumbers& key = run.key_numbers();
+  key.add("orbit_branches", double(found.size()), "-");
+  key.add("off_curve_orbits_left", double(left), "-");
+  key.add("off_curve_orbits_on_known", double(on_known), "-");
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const OrbitBranch& b = found[k];
+    const std::string tag = "_" + std::to_string(k + 1);
+    r.branches.push_back(table_branch(b));
+    orbit_branch_numbers(key, b, int(r.branches.size()), model_.output, "x", r.o, tag);
+    key.add("orbit_branch_isola" + tag, b.isola ? 1.0 : 0.0, "-");
+    orbit_branch_checks(key, r.hb, b, off, tol, xs, tag);
+  }
+  Intervals stable = stable_intervals(r.c);   // period 1 on any period-1 branch
+  for (const OrbitBranch& b : found) {
+    const Intervals more = b.period == 1 ? stable_intervals(b.curve) : Intervals{};
+    stable.insert(stable.end(), more.begin(), more.end());
+  }
+  add_unstable_period1_ranges(key, uncovered(r.o.omega_min, r.o.omega_max, stable), "_all_branches");
+}
+
+// Step 5 (with the file's torus key): the torus branches, their ids after every other branch's.
+void FrequencyResponseFromFile::quasi_periodic(Run& run, Response& r) const {
+  if (model_.torus_on) r.tori = torus_branches(run, r.hb, r.c, r.o, int(r.branches.size()) + 1);
+}
+
+// Step 6: the tables of every branch. frc.csv (app/tables.hpp dof_response_table): the curve
+// (period 1, branch 0), then each other branch with points under its id; bifurcations.csv: each
+// branch's events, the branch each PD or NS point starts (starts_branch).
+void FrequencyResponseFromFile::tables(Run& run, const Response& r) const {
+  std::vector<int> starts = branch_starts(r.c, r.branches);
+  if (model_.torus_on) add_torus_starts(starts, r.tori, int(r.branches.size()) + 1);
+  Table frc = dof_response_table(r.hb, r.c, model_.output, table_progress(run, r.c, model_.name));
+  Table bif = bifurcation_table(r.c, {}, starts);
+  for (std::size_t k = 0; k < r.branches.size(); ++k) {
+    const PeriodDoubledBranch& b = r.branches[k];
+    if (!has_points(b)) continue;
+    const BranchLabel label{b.period, int(k) + 1};
+    frc.append(dof_response_table(*b.model, b.curve, model_.output, {}, label));
+    bif.append(bifurcation_table(b.curve, label, branch_starts(b.curve, r.branches, int(k))));
+  }
+  run.write("frc.csv", frc);
+  run.write("bifurcations.csv", bif);
+}
+
+// Step 5, its branches: quasi-periodic motion past each Neimark-Sacker point,
 // a torus branch by two-frequency harmonic balance (hb/quasi_periodic.hpp); torus.csv (app/tables.hpp)
 // and key numbers per branch: where it starts (the NS point), the Floquet second frequency
 // there (alpha omega / 2 pi), its points, where it ends and its omega2 there, each under its
@@ -325,7 +402,7 @@ void torus_stability_key_numbers(KeyNumbers& key, const TorusBranch& b, const st
   key.add("torus_unresolved_points_" + id, count[int(TorusStability::Verdict::unresolved)], "-");
 }
 
-// Step 4: DIR/frc.png by figures/frc.py (the project's figure style).
+// Step 7: DIR/frc.png by figures/frc.py (the project's figure style).
 void FrequencyResponseFromFile::draw(Run& run) const {
   draw_with_script(run, std::string(GEARHB_FIGURES_DIR).empty() ? "" : std::string(GEARHB_FIGURES_DIR) + "/frc.py", "frc.png");
 }
@@ -336,8 +413,9 @@ int main(int argc, char** argv) {
   Study study("gearhb_frc",
               "gearhb_frc: the frequency response of your own system, from a model file\n"
               "  M x'' + C x' + K x + sum_i d_i max(kc_i (g_i + d_i' x), 0) = f0 + fc cos(omega t) + fs sin(omega t)\n"
-              "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches: columns\n"
-              "period, branch), bifurcations.csv,\n"
+              "Writes DIR/frc.csv (with the period-2 and, at period_doubling.depth 2, period-4 branches, and the\n"
+              "branches continued from the diagram's orbits off every branch: columns period, branch),\n"
+              "bifurcations.csv,\n"
               "modes.csv, key_numbers.json, params.json (the resolved model), timings.csv (wall time per step)\n"
               "and frc.png; where some range has no stable period-1 orbit (or with bifurcation_diagram.range\n"
               "whole) also bifurcation_diagram.csv, bifurcation_diagram_hb.csv and bifurcation_diagram.png;\n"

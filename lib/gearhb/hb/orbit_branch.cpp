@@ -18,11 +18,6 @@ struct Failed : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-bool has_exact_flow(const HarmonicBalance& hb) {
-  return std::none_of(hb.contacts().begin(), hb.contacts().end(),
-                      [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
-}
-
 // The time history of every DOF of X over the model's period at `samples` points (columns: DOFs).
 Eigen::MatrixXd histories(const HarmonicBalance& model, const Eigen::VectorXd& X, int samples) {
   Eigen::MatrixXd h(samples, model.dofs());
@@ -162,6 +157,11 @@ void continue_both_ways(OrbitBranch& r, const Eigen::VectorXd& X, const SweepOpt
 }
 
 }  // namespace
+
+bool has_exact_flow(const HarmonicBalance& hb) {
+  return std::none_of(hb.contacts().begin(), hb.contacts().end(),
+                      [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
+}
 
 OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                               double omega, int period, const SweepOptions& opt, const OrbitBranchOptions& obo) {

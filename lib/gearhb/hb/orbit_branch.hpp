@@ -87,6 +87,11 @@ OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& 
 // starts it: `from` = npos, parent -1), `why` its line.
 PeriodDoubledBranch table_branch(const OrbitBranch& b);
 
+// True if hb's orbits have an exact piecewise-linear flow (no contact with a stiffness profile):
+// only then has an HB point an error bound at phase 0 (distance_to_branch), so that
+// off_every_branch can tell a diagram orbit on a branch from one off it.
+bool has_exact_flow(const HarmonicBalance& hb);
+
 // A branch a diagram orbit is compared with: the curve on its model (omegas / period).
 struct BranchView {
   const HarmonicBalance* model = nullptr;
