@@ -8,7 +8,9 @@ GEAR.json, MODEL.json, DIR, or a `[...]` / `chNN_name` synopsis) are usage lines
 skipped. Each command runs from the repository root with its `--out` replaced by a folder
 under OUT_DIR (added when it has none) and `--quiet`; it must exit 0. Prints each command
 with its exit status and time; fails listing the commands that did not exit 0. A command
-shown again (the same text, in the same or another README) runs once.
+shown again (the same text, in the same or another README) runs once, and one that a chapter's or
+program's console block runs (<!-- console: ... -->, the same program and arguments but --out and
+--quiet) is left to that block's test (readme.<name>.console runs it and fails on a non-zero exit).
 """
 import pathlib
 import re
@@ -37,6 +39,34 @@ def commands(readme):
     return out
 
 
+CONSOLE = re.compile(r"^<!-- console: (.+?) -->", re.M)
+CHECKED = re.compile(r"(chapters/[^/]+/README|programs/[^/]+/(README|NOTES))\.md$")
+
+
+def run_key(program, args):
+    """A run as (program, its arguments but --out DIR and --quiet)."""
+    key, i = [], 0
+    while i < len(args):
+        if args[i] == "--out":
+            i += 2
+            continue
+        if args[i] != "--quiet":
+            key.append(args[i])
+        i += 1
+    return program, tuple(key)
+
+
+def console_runs(readmes):
+    """The runs of the console blocks of the READMEs that have a console test (CMakeLists.txt)."""
+    runs = set()
+    for readme in readmes:
+        if CHECKED.search(pathlib.Path(readme).resolve().as_posix()):
+            for m in CONSOLE.finditer(pathlib.Path(readme).read_text()):
+                words = shlex.split(m.group(1))
+                runs.add(run_key(words[0], words[1:]))
+    return runs
+
+
 def runnable(words):
     return not any(PLACEHOLDER.search(w) for w in words[1:]) and not PLACEHOLDER.search(words[0].split("/")[-1])
 
@@ -44,6 +74,7 @@ def runnable(words):
 def main():
     build, out_root = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     failed, n, seen = [], 0, set()
+    by_console = console_runs(sys.argv[3:])
     for readme in sys.argv[3:]:
         for text in commands(pathlib.Path(readme)):
             words = shlex.split(text)
@@ -54,6 +85,9 @@ def main():
                 print("skip (run above): %s" % text)
                 continue
             seen.add(text)
+            if run_key(words[0].split("/")[-1], words[1:]) in by_console:
+                print("skip (run by its console block's test): %s" % text)
+                continue
             n += 1
             exe = build / "bin" / words[0].split("/")[-1]
             args = words[1:]
