@@ -251,7 +251,8 @@ class GearPairChapter {
   void bifurcation_diagram(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                            const std::vector<PeriodDoubledBranch>& pd, std::map<std::string, BifurcationDiagram>& diagrams) const;
   BifurcationDiagram starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                  const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d) const;
+                                  const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
+                                  const BifurcationDiagram& d) const;
   void orbit_branches(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                       const BifurcationDiagram& d, std::vector<PeriodDoubledBranch>& branches) const;
   void time_integration_check(Run& run) const;
@@ -493,10 +494,12 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
   Table t(bifurcation_columns({"omega"}, "delta")), h(hb_section_columns({"omega", "period", "branch"}, "delta"));
   add_bifurcation_rows(t, d, T2, times, lead);
   // the starts on HB's orbits (a scaled diagram: those of the case it is scaled from, times the ratio)
+  // (HB's stable orbits at the diagram's speeds, solved once for the starts and the HB rows)
+  const SectionOrbits orbits = section_orbits(hb, c, pd, d);
   const std::string starts = (times == 1.0 ? cs.label : std::string(b.scaled_from)) + " from_hb";
-  if (times == 1.0) diagrams[starts] = starts_on_hb(run, cs, hb, c, pd, d);
+  if (times == 1.0) diagrams[starts] = starts_on_hb(run, cs, hb, c, pd, orbits, d);
   add_bifurcation_rows(t, diagrams[starts], T2, times, lead);
-  add_hb_section_rows(h, hb, c, pd, d, T2, 1.0,
+  add_hb_section_rows(h, hb, c, pd, orbits, T2, 1.0,
                       [](double w, int p, int br) { return std::vector<Table::Cell>{w, long(p), long(br)}; });
   run.write("bifurcation_diagram_" + cs.label + ".csv", t);
   run.write("bifurcation_diagram_hb_" + cs.label + ".csv", h);
@@ -511,10 +514,10 @@ void GearPairChapter::bifurcation_diagram(Run& run, const Case& cs, const Harmon
 // Rows `from_hb` of bifurcation_diagram_<label>.csv; key number diagram_hb_starts_<label>.
 BifurcationDiagram GearPairChapter::starts_on_hb(Run& run, const Case& cs, const HarmonicBalance& hb,
                                                  const FrequencyCurve& c, const std::vector<PeriodDoubledBranch>& pd,
-                                                 const BifurcationDiagram& d) const {
+                                                 const SectionOrbits& orbits, const BifurcationDiagram& d) const {
   BifurcationDiagramOptions o;
   o.lyapunov_min_periods = 50;   // as the sweeps
-  const BifurcationDiagram s = diagram_from_hb_orbits(run, hb, c, pd, d, o);
+  const BifurcationDiagram s = diagram_from_hb_orbits(run, hb, c, pd, orbits, d, o);
   long periodic = 0;
   std::ostringstream os;
   for (const DiagramPoint& p : s.points) {

@@ -266,12 +266,6 @@ SectionOrbits section_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
 }
 
 BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
-                                          BifurcationDiagramOptions o) {
-  return diagram_from_hb_orbits(run, hb, c, pd, section_orbits(hb, c, pd, d), d, o);
-}
-
-BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
                                           const BifurcationDiagram& d, BifurcationDiagramOptions o) {
   o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();

@@ -169,11 +169,8 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
 // diagram_point, the sweeps' options o): does the integration stay on it (an attractor the
 // sweeps did not reach: coexisting) or leave it (HB's stability is not the integration's)? The
 // points, from_orbit, for add_bifurcation_rows (sweep `from_hb`); kept out of d so that its
-// counts and key numbers stay the sweeps'. One timed step.
-BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
-                                          const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d,
-                                          BifurcationDiagramOptions o);
-// The same from the orbits already solved (section_orbits(hb, c, pd, d)).
+// counts and key numbers stay the sweeps'. One timed step. `orbits`: section_orbits(hb, c, pd, d),
+// solved once for this and add_hb_section_rows.
 BifurcationDiagram diagram_from_hb_orbits(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const std::vector<PeriodDoubledBranch>& pd, const SectionOrbits& orbits,
                                           const BifurcationDiagram& d, BifurcationDiagramOptions o);
