@@ -36,6 +36,11 @@ class Linearization {
                               Eigen::VectorXd& dy) const = 0;
   // Whether the last solve used a structured (not the dense) factorisation.
   virtual bool last_solve_structured() const { return false; }
+  // `before`, a linearization of the same problem near this one (the iterate before in a
+  // corrector, the point before on a branch), may lend its factorization to precondition
+  // this one's solves (HarmonicBalance: GMRES on the condensed system in place of an LU).
+  // Default: not used.
+  virtual void reuse(const Linearization& /*before*/) {}
 };
 
 // The general case: the dense Jacobian, the (n+1) x (n+1) matrix factored by LU

@@ -1,5 +1,6 @@
 #pragma once
 // Trial points on one chord of a branch (continuation.hpp point_on_chord), warm-started.
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -27,6 +28,7 @@ class ChordTrials {
   double tolerance_;
   Eigen::VectorXd ya_, chord_;
   std::vector<std::pair<double, Eigen::VectorXd>> done_;   // converged trials: (t, scaled y)
+  std::unique_ptr<Linearization> last_;   // the last trial's last linearization (Linearization::reuse)
 };
 
 }  // namespace gearhb

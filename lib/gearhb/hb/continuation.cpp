@@ -39,9 +39,12 @@ struct Scaled {
     out[n] = omega / s.omega;
     return out;
   }
-  // Linearises at y; returns max|R|/r.
+  // Linearises at y (the linearization before lends its factorization: Linearization::reuse);
+  // returns max|R|/r.
   double eval(const Eigen::VectorXd& y) {
+    std::unique_ptr<Linearization> before = std::move(lin);
     lin = p.linearize(X(y), omega(y), s, R, dRdomega);
+    if (before) lin->reuse(*before);
     return R.cwiseAbs().maxCoeff() / s.residual;
   }
   // R at y alone (the linearization kept); returns max|R|/r.
@@ -75,8 +78,11 @@ bool tangent(Scaled& S, const Eigen::VectorXd& y, const Eigen::VectorXd& previou
 // tangent_here reuses both (a tangent with that row costs a back-substitution; before, the
 // converged point was linearised and factored once more, a fifth of a contact model's
 // period-2 corrector: ex. 03).
+// A step longer than max_step (scaled) stops it as failed: the start lies outside Newton's basin
+// (the first point off a branch point: ex. 03's period-2 switch at ds0 = 0.02 stepped 0.54, 1.5,
+// 1.3, ... and failed after its 12 iterations; no step of a point that converges there exceeds 0.003).
 bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int max_iterations,
-             double tolerance, int& iters, double& res) {
+             double tolerance, int& iters, double& res, double max_step = INFINITY) {
   const int n = S.n;
   const Eigen::VectorXd yp = y;
   Eigen::VectorXd F(n + 1), dy;
@@ -94,6 +100,7 @@ bool correct(Scaled& S, Eigen::VectorXd& y, const Eigen::VectorXd& normal, int m
     F[n] = -normal.dot(y - yp);
     if (!S.lin->solve_bordered(normal, F, dy)) return false;
     last_step = dy.cwiseAbs().maxCoeff();
+    if (!(last_step <= max_step)) return false;
     y += dy;
   }
   return false;
@@ -311,6 +318,11 @@ Branch arc_length_continuation(const ParametricProblem& p, const Eigen::VectorXd
   return b;
 }
 
+// The first point off a start: a corrector step longer than this many times ds0 (scaled, largest
+// entry) fails it at once (the chord test of the period-2 branches, period_doubling.cpp
+// end_before_jump, calls a chord five times its step a jump).
+constexpr double kFirstStepBasin = 5.0;
+
 Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::VectorXd& X, double omega,
                                     const Eigen::VectorXd& direction, double ds0, const Scaling& s,
                                     const ContinuationOptions& opt, const ContinuationEnd& end) {
@@ -322,7 +334,7 @@ Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::Vec
   Eigen::VectorXd y = S.y(X, omega) + ds0 * d, t;
   int iters = 0;
   double res = 0.0;
-  if (!correct(S, y, d, opt.corrector_max_iterations, opt.tolerance, iters, res)) {
+  if (!correct(S, y, d, opt.corrector_max_iterations, opt.tolerance, iters, res, kFirstStepBasin * ds0)) {
     b.failures.push_back({omega, res, ds0, "first point off the start: corrector did not converge"});
     return b;
   }
@@ -420,10 +432,13 @@ BranchPoint ChordTrials::at(double t) {
   for (std::size_t j = 1; j < done_.size(); ++j)
     if (std::fabs(done_[j].first - t) < std::fabs(done_[near].first - t)) near = j;
   Scaled S(p_, s_);
+  S.lin = std::move(last_);   // the last trial's linearization lends its factorization
   Eigen::VectorXd y = done_[near].second + (t - done_[near].first) * chord_;
   int iters = 0;
   double res = 0.0;
-  if (!correct(S, y, chord_.normalized(), kChordCorrectorIterations, tolerance_, iters, res))
+  const bool converged = correct(S, y, chord_.normalized(), kChordCorrectorIterations, tolerance_, iters, res);
+  last_ = std::move(S.lin);
+  if (!converged)
     throw std::runtime_error("point_on_chord: corrector failed near omega = " + std::to_string(S.omega(y)) +
                              " (residual " + std::to_string(res) + ")");
   done_.emplace_back(t, y);

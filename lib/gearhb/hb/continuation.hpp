@@ -138,8 +138,9 @@ struct ContinuationEnd {
 // Pseudo-arc-length continuation off the solution (X, omega) along `direction` (scaled,
 // y = (X / x_scale, omega / omega_scale), n + 1 entries; e.g. the critical direction at a
 // branch point): the first point is the predictor y + ds0 d (d = direction normalised)
-// corrected in the hyperplane normal to d (at most corrector_max_iterations, as any step: a
-// step too long for the branch point's basin fails in 12 iterations, not 50), its tangent
+// corrected in the hyperplane normal to d (at most corrector_max_iterations, as any step; a
+// first step too long for the branch point's basin fails at the first corrector step longer
+// than 5 ds0 (scaled, largest entry), not after those 12 iterations), its tangent
 // oriented along d; then the steps of arc_length_continuation (opt.omega_start / omega_end
 // unused) until `end` says so.
 Branch arc_length_continuation_from(const ParametricProblem& p, const Eigen::VectorXd& X, double omega,

@@ -6,6 +6,8 @@
 #include <memory>
 #include <stdexcept>
 
+#include <unsupported/Eigen/IterativeSolvers>
+
 namespace gearhb {
 
 HarmonicBalance::HarmonicBalance(LinearSystem sys, std::vector<UnilateralContact> contacts,
@@ -165,6 +167,34 @@ Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double omega, const std::vect
   return J;
 }
 
+Eigen::MatrixXd HarmonicBalance::jacobian_block(const Eigen::VectorXd& X, double omega, const std::vector<int>& basis) const {
+  const int n = n_;
+  Eigen::VectorXd R = Eigen::VectorXd::Zero(size());
+  std::vector<Eigen::MatrixXd> G;
+  contact_terms(X, R, true, &G);
+  std::vector<Eigen::MatrixXd> blocks(std::size_t(H_) + 1);   // the harmonic blocks used, built once
+  const Eigen::Index nb = Eigen::Index(basis.size());
+  Eigen::MatrixXd Jb = Eigen::MatrixXd::Zero(nb * n, nb * n);
+  // as assemble_jacobian: the linear block of each harmonic, then each contact's G (x) n n'
+  for (Eigen::Index i = 0; i < nb; ++i)
+    for (Eigen::Index j = 0; j < nb; ++j) {
+      const int a = basis[std::size_t(i)], b = basis[std::size_t(j)], k = (a + 1) / 2;
+      if ((b + 1) / 2 != k) continue;
+      if (blocks[std::size_t(k)].size() == 0) blocks[std::size_t(k)] = harmonic_block(k, omega);
+      auto local = [n](int c) { return c == 0 || c % 2 == 1 ? 0 : n; };   // cos (or static) rows first, then sin
+      Jb.block(i * n, j * n, n, n) = blocks[std::size_t(k)].block(local(a), local(b), n, n);
+    }
+  for (std::size_t c = 0; c < contacts_.size(); ++c) {
+    const Eigen::MatrixXd nn = contacts_[c].normal * contacts_[c].normal.transpose();
+    for (Eigen::Index i = 0; i < nb; ++i)
+      for (Eigen::Index j = 0; j < nb; ++j) {
+        const double g = G[c](basis[std::size_t(i)], basis[std::size_t(j)]);
+        if (g != 0.0) Jb.block(i * n, j * n, n, n) += g * nn;
+      }
+  }
+  return Jb;
+}
+
 void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,
                                Eigen::MatrixXd* J, Eigen::VectorXd* dRdomega) const {
   linear_terms(X, omega, R, dRdomega);
@@ -174,6 +204,30 @@ void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double omega, Eigen::Ve
 }
 
 namespace {
+
+// The LU of a condensed bordered matrix (rows equilibrated by row_scale) for one border row, and
+// the contacts it condensed on (a linearization with another active set cannot use it).
+struct ReducedFactor {
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd row_scale, row;
+  std::vector<int> active;
+};
+
+// A ReducedFactor as Eigen's iterative solvers take a preconditioner: solve(b) = A_f^-1 b.
+struct FactorPreconditioner {
+  const ReducedFactor* f = nullptr;
+  template <typename M> FactorPreconditioner& analyzePattern(const M&) { return *this; }
+  template <typename M> FactorPreconditioner& factorize(const M&) { return *this; }
+  template <typename M> FactorPreconditioner& compute(const M&) { return *this; }
+  template <typename V> Eigen::VectorXd solve(const V& b) const { return f->lu.solve(b.cwiseQuotient(f->row_scale)); }
+  Eigen::ComputationInfo info() const { return Eigen::Success; }
+};
+
+// GMRES on a condensed system preconditioned by an earlier factorization: at most this many
+// iterations (each a product with the matrix and a solve with the factors, about 2 (mP + 1)^2
+// flops against the LU's 2/3 (mP + 1)^3), to this relative residual (of the preconditioned system).
+constexpr Eigen::Index kGmresIterations = 12;
+constexpr double kGmresTolerance = 1e-14;
 
 // The bordered system of continuation with the HB Jacobian J = L + U Gc U'
 // (harmonic_balance.hpp): L block diagonal over the harmonics (the linear
@@ -187,7 +241,11 @@ namespace {
 // det(reduced): it is singular exactly where the full system is (folds are
 // handled by the border as before). Used when L is well conditioned; the result
 // is checked by its residual on the full system. Contacts open over the whole period
-// (G_i = 0) drop out: P counts the others only.
+// (G_i = 0) drop out: P counts the others only. Given the factorization of a linearization
+// before (reuse: the iterate before in a corrector, the trial before on a chord), a solve runs
+// GMRES preconditioned by it first and factors only where that fails (ex. 03's period-2
+// switch and branch at H = 40: 87 % of the solves by GMRES, 7 iterations on average; the
+// branch's instructions -27 %, callgrind).
 class CondensedLinearization : public Linearization {
  public:
   // blocks: L's diagonal blocks (harmonic 0: n x n, k >= 1: 2n x 2n, [cos; sin]);
@@ -237,32 +295,22 @@ class CondensedLinearization : public Linearization {
     const Eigen::VectorXd c = row.head(N).cwiseQuotient(s_.x);
     const double d = row[N] / s_.omega, g = rhs[N];
     const Eigen::VectorXd Zf = solve_L(f);
-    if (!(row.size() == factored_row_.size() && row == factored_row_)) factor(row, c, d);
     Eigen::VectorXd r(q + 1);
     r.head(q) = project(Zf);
     r[q] = g - c.dot(Zf);
-    const Eigen::VectorXd vw = lu_A_.solve(r.cwiseQuotient(row_scale_));
-    if (!vw.allFinite()) return false;
-    const double dw = vw[q];
-    Eigen::VectorXd dx = Zf - Zb_ * dw;
-    const Eigen::VectorXd Gv = times_G(vw.head(q));
-    for (Eigen::Index j = 0; j < q; ++j) dx.segment(offset_[coords_[j].block], w_[j].size()) -= Gv[j] * w_[j];
-    // backward error on the full bordered system, as a dense LU would have it
-    const Eigen::VectorXd Ldx = times_L(dx), Gu = times_G(project(dx));
-    Eigen::VectorXd res = Ldx + b_ * dw - f;
-    for (Eigen::Index j = 0; j < q; ++j) {
-      const Coord& cj = coords_[j];
-      res.segment(offset_[cj.block] + cj.local, normals_.rows()) += Gu[j] * normals_.col(cj.contact);
-    }
-    const double scale = f.cwiseAbs().maxCoeff() + Ldx.cwiseAbs().maxCoeff() + std::fabs(dw) * b_.cwiseAbs().maxCoeff();
-    const double last = std::fabs(c.dot(dx) + d * dw - g);
-    if (!(res.cwiseAbs().maxCoeff() <= 1e-10 * scale) ||
-        !(last <= 1e-10 * (std::fabs(g) + c.cwiseAbs().dot(dx.cwiseAbs()) + std::fabs(d * dw))))
-      return false;
-    dy.resize(N + 1);
-    dy.head(N) = dx.cwiseQuotient(s_.x);
-    dy[N] = dw / s_.omega;
-    return true;
+    Eigen::VectorXd vw;
+    if (!factored_for(row) && iterate(c, d, r, vw) && expand(f, c, d, g, Zf, vw, dy)) return true;
+    if (!factored_for(row)) factor(row, c, d);
+    vw = own_->lu.solve(r.cwiseQuotient(own_->row_scale));
+    return expand(f, c, d, g, Zf, vw, dy);
+  }
+
+  // The factorization of the reduced system kept for the linearizations after this one: its
+  // own if it made one, else the one it was given (reuse).
+  std::shared_ptr<const ReducedFactor> factorization() const { return own_ ? own_ : given_; }
+  void reuse(const CondensedLinearization& before) {
+    auto f = before.factorization();
+    if (f && f->active == active_ && f->lu.rows() == Eigen::Index(coords_.size()) + 1) given_ = std::move(f);
   }
 
  private:
@@ -283,11 +331,14 @@ class CondensedLinearization : public Linearization {
   std::vector<Eigen::VectorXd> w_;
   RowMatrix SG_;
   // The condensed bordered matrix for one bordered row (c, d: the row unscaled), each row
-  // equilibrated for the pivoting (row_scale_), and its LU, kept for the next solve with the
-  // same row.
-  mutable Eigen::VectorXd factored_row_, row_scale_;
-  mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_A_;
-  void factor(const Eigen::VectorXd& row, const Eigen::VectorXd& c, double d) const {
+  // equilibrated for the pivoting (row_scale), and its LU, kept for the next solve with the
+  // same row (own_); or one of a linearization before, given to precondition (given_).
+  mutable std::shared_ptr<const ReducedFactor> own_;
+  std::shared_ptr<const ReducedFactor> given_;
+  bool factored_for(const Eigen::VectorXd& row) const {
+    return own_ && row.size() == own_->row.size() && row == own_->row;
+  }
+  RowMatrix bordered(const Eigen::VectorXd& c, double d) const {
     const Eigen::Index q = Eigen::Index(coords_.size());
     const int m = m_;
     RowMatrix A(q + 1, q + 1);
@@ -300,13 +351,64 @@ class CondensedLinearization : public Linearization {
       A.row(q).segment(cj.slot * m, m) -= wc * Grows_[cj.contact].row(cj.basis);
     }
     A(q, q) = d - c.dot(Zb_);
-    row_scale_ = Eigen::VectorXd::Ones(q + 1);
-    for (Eigen::Index i = 0; i <= q; ++i) {   // row equilibration for the pivoting
+    return A;
+  }
+  void factor(const Eigen::VectorXd& row, const Eigen::VectorXd& c, double d) const {
+    RowMatrix A = bordered(c, d);
+    auto f = std::make_shared<ReducedFactor>();
+    f->row_scale = Eigen::VectorXd::Ones(A.rows());
+    for (Eigen::Index i = 0; i < A.rows(); ++i) {   // row equilibration for the pivoting
       const double omega = A.row(i).cwiseAbs().maxCoeff();
-      if (omega > 0.0) A.row(i) /= omega, row_scale_[i] = omega;
+      if (omega > 0.0) A.row(i) /= omega, f->row_scale[i] = omega;
     }
-    lu_A_.compute(Eigen::MatrixXd(A));
-    factored_row_ = row;
+    f->lu.compute(Eigen::MatrixXd(A));
+    f->row = row;
+    f->active = active_;
+    own_ = std::move(f);
+  }
+  // The reduced system solved by GMRES (Eigen's unsupported IterativeSolvers: Householder
+  // GMRES, Walker 1988) preconditioned by the factorization of a linearization before (or of
+  // this one for another row): the same matrix up to the step between them, so a few
+  // iterations replace an LU. False where there is none or GMRES does not reach
+  // kGmresTolerance in kGmresIterations (then the caller factors).
+  bool iterate(const Eigen::VectorXd& c, double d, const Eigen::VectorXd& r, Eigen::VectorXd& vw) const {
+    const std::shared_ptr<const ReducedFactor> pre = own_ ? own_ : given_;
+    if (!pre) return false;
+    const RowMatrix A = bordered(c, d);
+    Eigen::GMRES<RowMatrix, FactorPreconditioner> gmres;
+    gmres.preconditioner().f = pre.get();
+    gmres.setMaxIterations(kGmresIterations);
+    gmres.set_restart(int(kGmresIterations));
+    gmres.setTolerance(kGmresTolerance);
+    gmres.compute(A);
+    vw = gmres.solve(r);
+    return gmres.info() == Eigen::Success && vw.allFinite();
+  }
+  // dx from the reduced solution vw = (v, dw), checked by its backward error on the full
+  // bordered system, as a dense LU would have it; dy scaled.
+  bool expand(const Eigen::VectorXd& f, const Eigen::VectorXd& c, double d, double g, const Eigen::VectorXd& Zf,
+              const Eigen::VectorXd& vw, Eigen::VectorXd& dy) const {
+    const Eigen::Index N = b_.size(), q = Eigen::Index(coords_.size());
+    if (!vw.allFinite()) return false;
+    const double dw = vw[q];
+    Eigen::VectorXd dx = Zf - Zb_ * dw;
+    const Eigen::VectorXd Gv = times_G(vw.head(q));
+    for (Eigen::Index j = 0; j < q; ++j) dx.segment(offset_[coords_[j].block], w_[j].size()) -= Gv[j] * w_[j];
+    const Eigen::VectorXd Ldx = times_L(dx), Gu = times_G(project(dx));
+    Eigen::VectorXd res = Ldx + b_ * dw - f;
+    for (Eigen::Index j = 0; j < q; ++j) {
+      const Coord& cj = coords_[j];
+      res.segment(offset_[cj.block] + cj.local, normals_.rows()) += Gu[j] * normals_.col(cj.contact);
+    }
+    const double scale = f.cwiseAbs().maxCoeff() + Ldx.cwiseAbs().maxCoeff() + std::fabs(dw) * b_.cwiseAbs().maxCoeff();
+    const double last = std::fabs(c.dot(dx) + d * dw - g);
+    if (!(res.cwiseAbs().maxCoeff() <= 1e-10 * scale) ||
+        !(last <= 1e-10 * (std::fabs(g) + c.cwiseAbs().dot(dx.cwiseAbs()) + std::fabs(d * dw))))
+      return false;
+    dy.resize(N + 1);
+    dy.head(N) = dx.cwiseQuotient(s_.x);
+    dy[N] = dw / s_.omega;
+    return true;
   }
   Eigen::VectorXd solve_L(const Eigen::VectorXd& v) const {
     Eigen::VectorXd out(v.size());
@@ -347,6 +449,10 @@ class HbLinearization : public Linearization {
     return dense_->solve_bordered(row, rhs, dy);
   }
   bool last_solve_structured() const override { return structured_; }
+  void reuse(const Linearization& before) override {
+    const auto* b = dynamic_cast<const HbLinearization*>(&before);
+    if (b && b->condensed_ && condensed_) condensed_->reuse(*b->condensed_);
+  }
 
  private:
   std::unique_ptr<CondensedLinearization> condensed_;

@@ -81,11 +81,16 @@ class HarmonicBalance : public ParametricProblem {
   void evaluate_gap_scaled(const Eigen::VectorXd& X, double omega, double lambda, Eigen::VectorXd& R,
                            Eigen::MatrixXd* dRdX, Eigen::VectorXd* dRdlambda) const;
   bool gaps_vary() const;   // some contact has a periodic gap
+  // The rows and columns of dR/dX at (X, omega) that belong to the coefficients `basis` (0 static,
+  // 2k-1 cos k, 2k sin k; every DOF of each, in the order of X), the same numbers as evaluate's
+  // dense Jacobian there without assembling it (a period-2 model's odd block: period_doubling.cpp).
+  Eigen::MatrixXd jacobian_block(const Eigen::VectorXd& X, double omega, const std::vector<int>& basis) const;
   // For continuation: with fewer contact coordinates than unknowns (P (2H+1) < n (2H+1),
   // i.e. n > P) the bordered systems are solved by condensation on the contact
   // coordinates (harmonic_balance.cpp, CondensedLinearization): an LU of size
   // P (2H+1) + 1 instead of n (2H+1) + 1, checked by its residual, with the dense
-  // LU as the fallback. A singular K (a free mode the contacts hold) takes the contacts'
+  // LU as the fallback; given the linearization before (Linearization::reuse), its solves run
+  // GMRES preconditioned by that one's factorization first (an LU only where GMRES fails). A singular K (a free mode the contacts hold) takes the contacts'
   // mean stiffness into its static block (and out of their product matrices) first.
   std::unique_ptr<Linearization> linearize(const Eigen::VectorXd& X, double omega, const Scaling& s,
                                            Eigen::VectorXd& R, Eigen::VectorXd& dRdomega) const override;

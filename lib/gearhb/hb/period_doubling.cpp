@@ -70,18 +70,14 @@ namespace {
 // The odd-harmonic rows and columns of hbp's Jacobian at X (the block that decides a
 // period-2 branch point on a period-1 orbit: even and odd harmonics decouple there).
 Eigen::MatrixXd odd_block(const HarmonicBalance& hbp, const Eigen::VectorXd& X, double Omega, std::vector<int>& odd) {
-  Eigen::VectorXd R;
-  Eigen::MatrixXd J;
-  hbp.evaluate(X, Omega, R, &J, nullptr);
+  std::vector<int> basis;
+  for (int a = 0; a < 2 * hbp.harmonics() + 1; ++a)
+    if (((a + 1) / 2) % 2 == 1) basis.push_back(a);
   odd.clear();
   const int n = hbp.dofs();
-  for (int a = 0; a < 2 * hbp.harmonics() + 1; ++a)
-    if (((a + 1) / 2) % 2 == 1)
-      for (int d = 0; d < n; ++d) odd.push_back(a * n + d);
-  Eigen::MatrixXd Jo(odd.size(), odd.size());
-  for (std::size_t i = 0; i < odd.size(); ++i)
-    for (std::size_t j = 0; j < odd.size(); ++j) Jo(Eigen::Index(i), Eigen::Index(j)) = J(odd[i], odd[j]);
-  return Jo;
+  for (const int a : basis)
+    for (int d = 0; d < n; ++d) odd.push_back(a * n + d);
+  return hbp.jacobian_block(X, Omega, basis);
 }
 
 // A bracket [lo, hi] of a sign change of f on the chord fraction, for regula falsi (Illinois):
