@@ -22,7 +22,7 @@ from style import (read_params, BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTAC
                    ORBIT_BRANCH_COLOUR, UNRESOLVED_MARKER,
                    NATURAL_OPEN, bifurcation_handles, case_rows, column, contact_rug, legend_styles, orbit_branches,
                    plot_branch, plot_doubled_branches, plot_orbit_branches, read_csv, rows_of, rug_room, save,
-                   shade_no_stable_period1, unstable_period1_ranges)
+                   shade_no_stable_period1, unresolved_period1_ranges, unstable_period1_ranges)
 
 import matplotlib.pyplot as plt
 
@@ -193,9 +193,7 @@ def case_figure(data_dir, fig_dir, row, name):
     h2, _ = a2.get_legend_handles_labels()
     seen = set()
     handles = [h for h in h1 + h2 if not (h.get_label() in seen or seen.add(h.get_label()))]   # one entry per label
-    every = "_all_branches_" + label   # with orbit branches: no stable period-1 orbit on any branch
-    ranges = unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
-    handles += shade_no_stable_period1(axes, ranges, scale=1e-3, unit="krad/s")
+    handles += shade_no_stable_period1(axes, *no_stable_period1(kn, label), scale=1e-3, unit="krad/s")
     fig_.legend(handles=handles + legend_styles() + bifurcation_handles(kinds), fontsize=7, ncol=2,
                 loc="lower center", framealpha=0.9)
     fig_.tight_layout(rect=(0, 0.12 if zoom else 0.17, 1, 1))
@@ -269,7 +267,7 @@ def diagram_figure(data_dir, fig_dir, label, row):
                              fontsize=9)
     else:
         fig.suptitle(title, fontsize=10)
-    handles += shade_no_stable_period1((), no_stable_period1(kn, label), scale=1e-3, unit="krad/s")   # its entry
+    handles += shade_no_stable_period1((), *no_stable_period1(kn, label), scale=1e-3, unit="krad/s")   # its entries
     h1, l1 = axes[0][0].get_legend_handles_labels()
     styles = [hd for hd in legend_styles() if "rug" not in hd.get_label()]   # no contact rug here
     if len(columns) > 1:   # a branch's colour is its column's: one entry per period and style
@@ -353,16 +351,20 @@ def diagram_column(a1, a2, data_dir, label, data, bands):
     if len(bands) > 1:
         from matplotlib.patches import Patch
         handles.append(Patch(facecolor="none", edgecolor="0.6", hatch="///", label="between the bands: no diagram"))
-    shade_no_stable_period1((a1, a2), [r for r in no_stable_period1(kn, label) if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi],
+    ranges, unresolved = no_stable_period1(kn, label)
+    near = lambda rs: [r for r in rs if r[1] / 1e3 >= lo and r[0] / 1e3 <= hi]
+    shade_no_stable_period1((a1, a2), near(ranges), unresolved=near(unresolved),
                             scale=1e-3)
     return handles
 
 
 def no_stable_period1(kn, label):
-    """The case's ranges with no stable period-1 orbit [(from, to)] rad/s: on any period-1 branch
+    """The case's ranges with no stable period-1 orbit [(from, to)] rad/s and, of them, the stretches
+    whose stability is unresolved (unresolved_period1_*): on any period-1 branch
     where it has orbit branches (chapter step 3c), else on its continued curve."""
     every = "_all_branches_" + label
-    return unstable_period1_ranges(kn, every if "unstable_period1_ranges" + every in kn else "_" + label)
+    suffix = every if "unstable_period1_ranges" + every in kn else "_" + label
+    return unstable_period1_ranges(kn, suffix), unresolved_period1_ranges(kn, suffix)
 
 
 def rows_near(d, lo, hi, one_row_points):

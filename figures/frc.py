@@ -31,7 +31,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, ORBIT_BRANCH_COLOUR, PERIOD2_COLOURS,  # noqa: E402
                    branch_ids, contact_rug, legend_styles, mark_unresolved_stable, orbit_branches, plot_branch,
                    plot_doubled_branches, plot_orbit_branches, read_csv, rows_of, rug_room, save,
-                   shade_no_stable_period1, unstable_period1_ranges)
+                   shade_no_stable_period1, unresolved_period1_ranges, unstable_period1_ranges)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window,  # noqa: E402
                       with_hb_starts, within)
 
@@ -120,11 +120,13 @@ def torus_panel(ax, t, b):
 def no_stable_period1(d_dir, axes):
     """Shade the frequency ranges with no stable period-1 orbit (key numbers unstable_period1_*;
     where the run continued branches from the diagram's orbits, unstable_period1_*_all_branches: on
-    none of its period-1 branches) on every panel; its legend entry (none without such ranges)."""
+    none of its period-1 branches) on every panel, their stretches whose stability is unresolved
+    hatched apart (unresolved_period1_*); the legend entries (none without such ranges)."""
     kn_file = d_dir / "key_numbers.json"
     kn = json.load(open(kn_file)) if kn_file.exists() else {}
-    return shade_no_stable_period1(axes, unstable_period1_ranges(
-        kn, "_all_branches" if "unstable_period1_ranges_all_branches" in kn else ""))
+    suffix = "_all_branches" if "unstable_period1_ranges_all_branches" in kn else ""
+    return shade_no_stable_period1(axes, unstable_period1_ranges(kn, suffix),
+                                   unresolved=unresolved_period1_ranges(kn, suffix))
 
 
 def read_run(d_dir):

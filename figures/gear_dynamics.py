@@ -27,8 +27,9 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
-from style import (CONTACT_COLOURS, PERIOD2_COLOURS, UNRESOLVED_MARKER, branch_ids, mark_unresolved_stable, plot_branch,
-                   read_csv, rows_of, save, torque_colour)
+from style import (CONTACT_COLOURS, PERIOD2_COLOURS, UNRESOLVED_MARKER, branch_ids, less, mark_unresolved_stable, plot_branch,
+                   read_csv, rows_of, save, shade_unresolved_period1, torque_colour, unresolved_period1_ranges,
+                   unstable_period1_ranges)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window, with_hb_starts,
                       within)
 
@@ -81,25 +82,28 @@ def branches(torques, frc):
 
 
 def no_stable_period1(kn, i):
-    """The speed ranges [rpm] of torque i (0-based) with no stable period-1 orbit (key numbers)."""
-    n = int(kn.get("unstable_period1_ranges_%d" % (i + 1), 0))
-    return [(kn["unstable_period1_from_rpm_%d_%d" % (i + 1, k)], kn["unstable_period1_to_rpm_%d_%d" % (i + 1, k)])
-            for k in range(1, n + 1)]
+    """The speed ranges [rpm] of torque i (0-based) with no stable period-1 orbit and, of them, the
+    stretches whose stability is unresolved (key numbers unstable_period1_*, unresolved_period1_*)."""
+    suffix = "_%d" % (i + 1)
+    return unstable_period1_ranges(kn, suffix, unit="rpm"), unresolved_period1_ranges(kn, suffix, unit="rpm")
 
 
 def mark_no_stable_period1(axes, kn, torques):
     """A light band in the torque's colour over every range with no stable period-1 orbit, on every
-    panel; its legend entries."""
+    panel, less its stretches whose stability is unresolved (hatched magenta:
+    shade_unresolved_period1); their legend entries."""
     handles = []
     for i, T in enumerate(torques):
-        ranges = no_stable_period1(kn, i)
+        ranges, unresolved = no_stable_period1(kn, i)
+        plain = less(ranges, unresolved)
         for ax in axes:
-            for a, b in ranges:
+            for a, b in plain:
                 ax.axvspan(a, b, color=torque_colour(T, torques), alpha=0.09, lw=0, zorder=0)
         if ranges:
             handles.append(Patch(color=torque_colour(T, torques), alpha=0.25,
                                  label="no stable period-1 orbit, %s (%s rpm)" % (
                                      torque_label(T), ", ".join("%.0f-%.0f" % r for r in ranges))))
+        handles += shade_unresolved_period1(axes, unresolved, unit="rpm, " + torque_label(T))
     return handles
 
 

@@ -42,7 +42,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 from poincare import BRANCH_COLOURS, draw_hb_section, draw_poincare  # noqa: E402
 from style import (BIFURCATION_COLOURS, BIFURCATION_MARKERS, CONTACT_COLOURS, RUG_HEIGHT,  # noqa: E402
                    bifurcation_handles, branch_ids, plot_branch, read_csv, rows_of, rug_room, runs, save,
-                   shade_no_stable_period1, unstable_period1_ranges)
+                   shade_no_stable_period1, unresolved_period1_ranges, unstable_period1_ranges)
 
 COLOURS = {"rotational": "C0", "translational": "C1", "planet": "C2"}
 # The period-2 (4) branches' colours: the project's, without the diagram's quasi-periodic colour (the
@@ -126,10 +126,12 @@ def read_response(d_dir):
 
 
 def shade_unstable_period1(d_dir, axes):
-    """Shade the mesh-frequency ranges with no stable period-1 orbit on every panel; the legend entry."""
+    """Shade the mesh-frequency ranges with no stable period-1 orbit on every panel (their unresolved
+    stretches hatched apart); the legend entries."""
     kn_file = d_dir / "key_numbers.json"
-    ranges = unstable_period1_ranges(json.load(open(kn_file)) if kn_file.exists() else {})
-    return shade_no_stable_period1(axes, ranges, scale=1.0 / (2.0 * math.pi), unit="Hz")
+    kn = json.load(open(kn_file)) if kn_file.exists() else {}
+    return shade_no_stable_period1(axes, unstable_period1_ranges(kn), scale=1.0 / (2.0 * math.pi), unit="Hz",
+                                   unresolved=unresolved_period1_ranges(kn))
 
 
 def largest_kv(d, kind, N):

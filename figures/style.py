@@ -291,27 +291,75 @@ def plot_orbit_branches(ax, full, branches, ys=("x_max", "x_min"), x="omega", sc
             plot_branch(ax, d, y, ORBIT_BRANCH_COLOUR, x=x, scale=scale, label=None if k else label, lw=2.0)
 
 
-def unstable_period1_ranges(kn, suffix=""):
+def unstable_period1_ranges(kn, suffix="", what="unstable_period1", unit="omega"):
     """The frequency ranges [(from, to)] with no stable period-1 orbit, from the key numbers
-    (key_numbers.json as read) unstable_period1_ranges<suffix>, unstable_period1_from_omega<suffix>_k
-    and unstable_period1_to_omega<suffix>_k; none where the run did not write them."""
-    n = int(kn.get("unstable_period1_ranges" + suffix, {"value": 0})["value"])
-    return [(kn["unstable_period1_from_omega%s_%d" % (suffix, k)]["value"],
-             kn["unstable_period1_to_omega%s_%d" % (suffix, k)]["value"]) for k in range(1, n + 1)]
+    (key_numbers.json as read) <what>_ranges<suffix>, <what>_from_<unit><suffix>_k and
+    <what>_to_<unit><suffix>_k; none where the run did not write them. what="unresolved_period1":
+    the parts of those ranges whose stable labels are unresolved (lib period1_ranges)."""
+    value = lambda v: v["value"] if isinstance(v, dict) else v
+    n = int(value(kn.get(what + "_ranges" + suffix, 0)))
+    return [(value(kn["%s_from_%s%s_%d" % (what, unit, suffix, k)]),
+             value(kn["%s_to_%s%s_%d" % (what, unit, suffix, k)])) for k in range(1, n + 1)]
 
 
-def shade_no_stable_period1(axes, ranges, scale=1.0, unit="rad/s"):
-    """Shade the ranges (unstable_period1_ranges) on every panel (x scaled by `scale`); their
-    legend entry, naming them in `unit` (none without ranges)."""
+def unresolved_period1_ranges(kn, suffix="", unit="omega"):
+    """unstable_period1_ranges' stretches whose stability is unresolved (unresolved_period1_* keys)."""
+    return unstable_period1_ranges(kn, suffix, "unresolved_period1", unit)
+
+
+def less(ranges, holes):
+    """The parts of `ranges` [(a, b)] outside every interval of `holes`, in order."""
+    out = []
+    for a, b in ranges:
+        at = a
+        for c, d in sorted(holes):
+            if d <= at or c >= b:
+                continue
+            if c > at:
+                out.append((at, c))
+            at = max(at, d)
+        if at < b:
+            out.append((at, b))
+    return out
+
+
+def range_text(ranges, scale, fmt="%.4g"):
+    """"a-b, c-d" of up to three ranges, else "n ranges, from a to z" (x scaled by `scale`)."""
+    if len(ranges) <= 3:
+        return ", ".join((fmt + "-" + fmt) % (a * scale, b * scale) for a, b in ranges)
+    return ("%d ranges, from " + fmt + " to " + fmt) % (len(ranges), ranges[0][0] * scale, ranges[-1][1] * scale)
+
+
+def shade_unresolved_period1(axes, unresolved, scale=1.0, unit="rad/s", colour=UNRESOLVED_MARKER["mec"]):
+    """Hatch (magenta: UNRESOLVED_MARKER's colour) the stretches where a period-1 orbit is labelled
+    stable but no shooting correction converged (unresolved_period1_ranges) on every panel, with a
+    dotted line at the middle of each so that a stretch narrower than the hatch is still seen; their
+    legend entry (none without stretches)."""
     from matplotlib.patches import Patch
     for ax in axes:
-        for a, b in ranges:
-            ax.axvspan(a * scale, b * scale, color="0.5", alpha=0.12, lw=0, zorder=0)
-    if not ranges:
+        for a, b in unresolved:
+            ax.axvspan(a * scale, b * scale, facecolor="none", edgecolor=colour, alpha=0.5, hatch="xxx", lw=0,
+                       zorder=0)
+            ax.axvline(0.5 * (a + b) * scale, color=colour, ls=":", lw=0.8, alpha=0.7, zorder=0)
+    if not unresolved:
         return []
-    where = ", ".join("%.4g-%.4g" % (a * scale, b * scale) for a, b in ranges) if len(ranges) <= 3 else \
-        "%d ranges, from %.4g to %.4g" % (len(ranges), ranges[0][0] * scale, ranges[-1][1] * scale)
-    return [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s %s)" % (where, unit))]
+    return [Patch(facecolor="none", edgecolor=colour, alpha=0.6, hatch="xxx",
+                  label="in a range with no stable period-1 orbit: labelled stable, but no\nshooting correction converged (stability unresolved: %s %s)"
+                  % (range_text(unresolved, scale), unit))]
+
+
+def shade_no_stable_period1(axes, ranges, unresolved=(), scale=1.0, unit="rad/s"):
+    """Shade the ranges (unstable_period1_ranges) on every panel (x scaled by `scale`) grey, less
+    their unresolved stretches (`unresolved`: unresolved_period1_ranges), which are hatched apart
+    (shade_unresolved_period1); their legend entries, naming them in `unit` (none without ranges)."""
+    from matplotlib.patches import Patch
+    grey = less(ranges, unresolved)
+    for ax in axes:
+        for a, b in grey:
+            ax.axvspan(a * scale, b * scale, color="0.5", alpha=0.12, lw=0, zorder=0)
+    handles = [Patch(color="0.5", alpha=0.3, label="no stable period-1 orbit (%s %s)" % (range_text(ranges, scale), unit))] \
+        if ranges else []
+    return handles + shade_unresolved_period1(axes, unresolved, scale, unit)
 
 
 def torque_colour(T, torques=THESIS_TORQUES):

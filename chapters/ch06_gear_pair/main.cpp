@@ -144,8 +144,9 @@ struct Case {
 
 // Figs. 40-43: Fa = 1e4 and four static torques; 44-45: Fa = 1e6 (= 40 and 43 x 100,
 // chapter README); every figure again with the printed kc (suffix _kc_alt).
-// Diagram bands: every unstable stretch of Figs. 40, 41 and 43 lies in a band, with the stable
-// orbit on either side (Fig. 40: the eight of 7.8-11.1 krad/s in the first band, the one at
+// Diagram bands: every range with no stable period-1 orbit of Figs. 40, 41 and 43 (an unresolved
+// stretch included: period1_ranges) lies in a band, with the stable orbit on either side (Fig. 40:
+// the seven of 7.8-11.1 krad/s, one with the unresolved stretch at 8.46-8.50, in the first band, the one at
 // 11.6-11.9 in a second, the seven from 12.7 to 62 krad/s in six more; Fig. 43: its two
 // period-doubling stretches, and its Neimark-Sacker stretch in a second band); 44 and 45 are 40
 // and 43 scaled. Speeds by cost (README, step 3b): fine steps where the motion changes fast
@@ -560,7 +561,7 @@ double curve_swing(const HarmonicBalance& hb, const FrequencyCurve& c, const Vec
 // change skipped, and at orbit_branch_unstable_checked (up to 3) unstable points spread over its
 // unstable stretches, which no sweep visits, the GSL monodromy from the orbit corrected by
 // shooting has a multiplier outside the unit circle too), and the ranges with no stable period-1 orbit on any period-1 branch,
-// unstable_period1_*_all_branches_<label>. A period-1 branch k also writes its section at phase 0
+// unstable_period1_*_all_branches_<label>, and their unresolved stretches, unresolved_period1_*_all_branches_<label>. A period-1 branch k also writes its section at phase 0
 // as bifurcation_diagram_hb_<label>.csv does the curve's: orbit_branch_section_<label>_<k>.csv.
 void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBalance& hb, const FrequencyCurve& c,
                                      const BifurcationDiagram& d, std::vector<PeriodDoubledBranch>& branches) const {
@@ -577,7 +578,7 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   key.add("off_curve_orbits_on_known_" + cs.label, double(on_known), "-");
   key.add("orbit_branches_" + cs.label, double(found.size()), "-");
   key.add("curve_swing_" + cs.label, curve_swing(hb, c, T2), "m");
-  Intervals stable = stable_intervals(c);
+  std::vector<const FrequencyCurve*> period1{&c};
   for (std::size_t k = 0; k < found.size(); ++k) {
     const OrbitBranch& b = found[k];
     const std::string tag = "_" + cs.label + "_" + std::to_string(k + 1);
@@ -585,15 +586,14 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
     orbit_branch_numbers(key, b, int(branches.size()), T2, "delta", o, tag);
     orbit_branch_checks(key, hb, b, off, tol, xs, tag);
     if (b.period == 1) {
-      const Intervals more = stable_intervals(b.curve);
-      stable.insert(stable.end(), more.begin(), more.end());
+      period1.push_back(&b.curve);
       // its section at phase 0, to draw under the diagram's Poincare points
       Table h(hb_section_columns({"omega"}, "delta"));
       add_hb_section_rows(h, *b.model, b.curve, d, T2, 1.0, [](double w) { return std::vector<Table::Cell>{w}; });
       run.write("orbit_branch_section_" + cs.label + "_" + std::to_string(k + 1) + ".csv", h);
     }
   }
-  add_unstable_period1_ranges(key, uncovered(o.omega_min, o.omega_max, stable), "_all_branches_" + cs.label);
+  add_unstable_period1_ranges(key, period1_ranges(o.omega_min, o.omega_max, period1), "_all_branches_" + cs.label);
 }
 
 // Step 4: harmonic balance (H_check harmonics) against GSL rk8pd integrated to the

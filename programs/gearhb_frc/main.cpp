@@ -187,7 +187,8 @@ Response FrequencyResponseFromFile::frequency_response(Run& run) const {
   return r;
 }
 
-// How many period-2 branches, how many merged, their points, where each starts and ends.
+// How many period-2 branches, how many merged, their points, where each starts and ends, and the
+// stretches of each period whose stable labels are unresolved (add_unresolved_branch_ranges).
 void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd) const {
   KeyNumbers& key = run.key_numbers();
   int merged = 0, period2 = 0, period2_points = 0;
@@ -205,6 +206,7 @@ void FrequencyResponseFromFile::period2_key_numbers(Run& run, const std::vector<
     key.add("period2_omega_start_" + id, pd[k].omega_start, "rad/s");
     if (std::isfinite(pd[k].omega_end)) key.add("period2_omega_end_" + id, pd[k].omega_end, "rad/s");
   }
+  add_unresolved_branch_ranges(key, pd, "");   // unresolved_period2_* (period 4: unresolved_period4_*)
 }
 
 // The period-1 curve's key numbers: points, folds, the peak, the response at either end.
@@ -293,7 +295,8 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // (orbit_branch_*_<k>) orbit_branch_numbers ("x": the output coordinate), orbit_branch_isola, and
 // orbit_branch_checks (the diagram's off-branch orbits on it within HB's own error; its stability
 // against the GSL monodromy of the integrated orbits and at up to 3 of its unstable points); the
-// ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches.
+// ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches,
+// and their unresolved stretches, unresolved_period1_*_all_branches (period1_ranges).
 void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const {
   if (!has_exact_flow(r.hb)) {
     run.say(model_.name + ": no branches from the diagram's orbits: with a time-varying contact stiffness an HB "
@@ -318,12 +321,10 @@ void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const Bifu
     key.add("orbit_branch_isola" + tag, b.isola ? 1.0 : 0.0, "-");
     orbit_branch_checks(key, r.hb, b, off, tol, xs, tag);
   }
-  Intervals stable = stable_intervals(r.c);   // period 1 on any period-1 branch
-  for (const OrbitBranch& b : found) {
-    const Intervals more = b.period == 1 ? stable_intervals(b.curve) : Intervals{};
-    stable.insert(stable.end(), more.begin(), more.end());
-  }
-  add_unstable_period1_ranges(key, uncovered(r.o.omega_min, r.o.omega_max, stable), "_all_branches");
+  std::vector<const FrequencyCurve*> period1{&r.c};   // period 1 on any period-1 branch
+  for (const OrbitBranch& b : found)
+    if (b.period == 1) period1.push_back(&b.curve);
+  add_unstable_period1_ranges(key, period1_ranges(r.o.omega_min, r.o.omega_max, period1), "_all_branches");
 }
 
 // Step 5 (with the file's torus key): the torus branches, their ids after every other branch's.

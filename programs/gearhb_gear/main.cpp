@@ -832,29 +832,29 @@ void GearPairFromFile::axial_key_numbers(Run& run, std::size_t i, const Harmonic
                           mean_axial_bearing_force(hb, b, r.curve.branch.points.front().X, g), "N");
 }
 
-// Issue 34 §4, torque i: the speed ranges with no stable period-1 orbit (the gaps of the period-1
-// curve's stable intervals; unstable_period1_ranges_<i>, each unstable_period1_from_rpm_<i>_<k>,
-// unstable_period1_to_rpm_<i>_<k>), and the largest K_v and DTE RMS of the motion that exists
+// Issue 34 §4, torque i: the speed ranges with no stable period-1 orbit (period1_ranges: the gaps
+// of the period-1 curve's resolved-stable intervals; unstable_period1_ranges_<i>, each
+// unstable_period1_from_rpm_<i>_<k>, unstable_period1_to_rpm_<i>_<k>), of them the stretches whose
+// stable label is unresolved (unresolved_period1_ranges_<i>, unresolved_period1_from_rpm_<i>_<k>,
+// unresolved_period1_to_rpm_<i>_<k>), and the largest K_v and DTE RMS of the motion that exists
 // (max_kv_any_motion_<i>, max_dte_rms_any_motion_um_<i>): every stable period-1 and period-2 orbit
-// (period 2: where its label is resolved, resolved_stable; the period-1 ranges keep stable_intervals,
-// as the diagram's bands do)
+// (period 2: where its label is resolved, resolved_stable)
 // and, at the diagram's speeds in those ranges where it is not period 1, the time-integrated motion
 // (16 mesh periods from its first Poincare state, 512 samples each: mesh_motion_measures);
 // max_kv_any_motion_from_<i>: which gave the largest K_v (1, 2: the HB orbit of that period; 0: the
-// time integration); any_motion_complete_<i>: 0 where a range has neither a stable period-2 orbit
-// nor the diagram (its motion unknown, not counted).
+// time integration); any_motion_complete_<i>: 0 where a range has neither a resolved stable
+// period-2 orbit nor the diagram (its motion unknown, not counted).
 void GearPairFromFile::any_motion_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
                                               const BifurcationDiagram* d) const {
   KeyNumbers& key = run.key_numbers();
   const std::string n = std::to_string(i + 1);
   const double lo = 2.0 * M_PI * file_.dynamics.f_min_hz, hi = 2.0 * M_PI * file_.dynamics.f_max_hz;
-  Intervals stable = stable_intervals(r.curve);
-  const Intervals gaps = uncovered(lo, hi, stable);
-  key.add("unstable_period1_ranges_" + n, double(gaps.size()), "-");
-  for (std::size_t k = 0; k < gaps.size(); ++k) {
-    key.add("unstable_period1_from_rpm_" + n + "_" + std::to_string(k + 1), speed_rpm(gaps[k].first), "rpm");
-    key.add("unstable_period1_to_rpm_" + n + "_" + std::to_string(k + 1), speed_rpm(gaps[k].second), "rpm");
-  }
+  const Period1Ranges p1 = period1_ranges(lo, hi, {&r.curve});
+  const Intervals& gaps = p1.no_stable;
+  const auto rpm = [this](double w) { return speed_rpm(w); };
+  add_range_key_numbers(key, "unstable_period1", gaps, "_" + n, "rpm", rpm, "rpm");
+  add_range_key_numbers(key, "unresolved_period1", p1.unresolved, "_" + n, "rpm", rpm, "rpm");
+  Intervals stable = resolved_stable_intervals(r.curve);
   double kv = r.summary.dynamic_factor_peak, rms = r.summary.dte_rms_peak;
   int from = 1;
   for (std::size_t b = 0; b < r.doubled.size(); ++b) {

@@ -621,8 +621,8 @@ void PlanetarySetFromFile::any_motion_key_numbers(Run& run, const HarmonicBalanc
         if (resolved[p] && mesh.dynamic_factor > kv) kv = mesh.dynamic_factor, from = period;
   };
   take(r.curve, r.measures, 1);
-  Intervals stable = stable_intervals(r.curve);
-  const Intervals gaps = uncovered(o.omega_min, o.omega_max, stable);
+  Intervals stable = resolved_stable_intervals(r.curve);
+  const Intervals gaps = period1_ranges(o.omega_min, o.omega_max, {&r.curve}).no_stable;   // the unstable_period1_* keys'
   for (std::size_t b = 0; b < r.doubled.size(); ++b) {
     if (!has_points(r.doubled[b])) continue;
     take(r.doubled[b].curve, r.doubled_measures[b], r.doubled[b].period);

@@ -9,7 +9,8 @@
 //    that HB's own orbit error gives (|rms_ac(a) - rms_ac(b)| <= max |a - b|; |N_a - N_b| <=
 //    kc max |x_a - x_b| for the piecewise-linear flank law);
 //  - stable_intervals / uncovered (the ranges with no stable period-1 orbit) against the
-//    stability flags of the points themselves; resolved_stable on a hand-made curve.
+//    stability flags of the points themselves; resolved_stable, period1_ranges and the diagram's
+//    bands over an unresolved stretch on hand-made curves (the expected ranges worked by hand).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -181,14 +182,73 @@ TEST(GearPeriodDoubling, StableStretchWithoutACorrectedPointIsUnresolved) {
     c.branch.points.back().omega = double(k + 1);
     c.floquet.push_back({});
     c.floquet.back().corrected = corrected[k];
+    c.floquet.back().shooting = true;
   }
   c.stable = stable;
   EXPECT_EQ(resolved_stable(c), (std::vector<bool>{false, true, true, false, false, false, false}));
   EXPECT_EQ(unresolved_stable_stretches(c, 2), (Intervals{{10.0, 12.0}}));
   EXPECT_EQ(resolved_stable_intervals(c), (Intervals{{1.5, 3.5}}));   // to the chord midpoints (no bifurcation listed)
   EXPECT_EQ(stable_intervals(c), (Intervals{{1.5, 3.5}, {4.5, 6.5}}));
+  for (auto& f : c.floquet) f.shooting = false;   // variational multipliers by choice (gearhb_planetary): no shooting tried
+  EXPECT_EQ(resolved_stable(c), stable);
   c.floquet.clear();   // no Floquet data (Hill): every label as it is
   EXPECT_EQ(resolved_stable(c), stable);
+}
+
+namespace {
+// A curve at omega = first, first + 1, ... with these stable labels, each point's shooting tried
+// (`shooting`) and converged where `corrected` says.
+FrequencyCurve labelled_curve(double first, const std::vector<bool>& stable, const std::vector<bool>& corrected,
+                              bool shooting = true) {
+  FrequencyCurve c;
+  for (std::size_t k = 0; k < stable.size(); ++k) {
+    c.branch.points.push_back({});
+    c.branch.points.back().omega = first + double(k);
+    c.floquet.push_back({});
+    c.floquet.back().corrected = corrected[k];
+    c.floquet.back().shooting = shooting;
+  }
+  c.stable = stable;
+  return c;
+}
+}  // namespace
+
+TEST(GearPeriodDoubling, Period1RangesExcludeOnlyResolvedStablePoints) {
+  // Eight points at omega 1..8: stable 1 1 0 1 1 0 1 1, corrected 1 1 1 0 0 1 1 1 - the stretch at
+  // 4-5 is unresolved. By hand (no bifurcation listed: a stability change ends at the chord's
+  // midpoint): the labels say stable on [1, 2.5], [3.5, 5.5], [6.5, 8]; the resolved labels on
+  // [1, 2.5], [6.5, 8]. So over [1, 8] no period-1 orbit is known stable on [2.5, 6.5], of which
+  // [3.5, 5.5] is labelled stable but unresolved.
+  const FrequencyCurve c = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                                          {true, true, true, false, false, true, true, true});
+  Period1Ranges r = period1_ranges(1.0, 8.0, {&c});
+  EXPECT_EQ(r.no_stable, (Intervals{{2.5, 6.5}}));
+  EXPECT_EQ(r.unresolved, (Intervals{{3.5, 5.5}}));
+  // A second period-1 branch resolved-stable on [4.25, 5.25] (two corrected stable points) leaves
+  // [2.5, 4.25] and [5.25, 6.5], and of the unresolved stretch [3.5, 4.25] and [5.25, 5.5].
+  const FrequencyCurve other = labelled_curve(4.25, {true, true}, {true, true});
+  r = period1_ranges(1.0, 8.0, {&c, &other});
+  EXPECT_EQ(r.no_stable, (Intervals{{2.5, 4.25}, {5.25, 6.5}}));
+  EXPECT_EQ(r.unresolved, (Intervals{{3.5, 4.25}, {5.25, 5.5}}));
+  // The same labels from the variational equation by choice (no shooting tried): all resolved.
+  const FrequencyCurve variational = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                                                    std::vector<bool>(8, false), false);
+  r = period1_ranges(1.0, 8.0, {&variational});
+  EXPECT_EQ(r.no_stable, (Intervals{{2.5, 3.5}, {5.5, 6.5}}));
+  EXPECT_TRUE(r.unresolved.empty());
+}
+
+TEST(GearPeriodDoubling, DiagramBandCoversAnUnresolvedStretch) {
+  // The curve above: one range with no known stable period-1 orbit, [2.5, 6.5] (the unresolved
+  // stretch [3.5, 5.5] in it), padded by max(0.25 x 4, 0.02 x 7) = 1 on each side: one band
+  // [1.5, 7.5]. Taking the labels at face value would give two bands, [2.25, 3.75] and
+  // [5.25, 6.75], and no diagram over 3.75-5.25.
+  const FrequencyCurve c = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                                          {true, true, true, false, false, true, true, true});
+  const std::vector<DiagramBand> bands = diagram_bands(c, 1.0, 8.0, 1);
+  ASSERT_EQ(bands.size(), 1u);
+  EXPECT_DOUBLE_EQ(bands[0].omega_lo, 1.5);
+  EXPECT_DOUBLE_EQ(bands[0].omega_hi, 7.5);
 }
 
 TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration) {

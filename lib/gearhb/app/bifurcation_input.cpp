@@ -67,7 +67,7 @@ std::vector<DiagramBand> diagram_bands(const FrequencyCurve& c, double omega_min
   const double cap = diagram_speed_cap(o, n);
   const double full = omega_max - omega_min;
   std::vector<DiagramBand> bands;
-  for (const auto& [a, b] : uncovered(omega_min, omega_max, stable_intervals(c))) {
+  for (const auto& [a, b] : period1_ranges(omega_min, omega_max, {&c}).no_stable) {
     const double pad = std::max(o.margin * (b - a), o.min_margin * full);
     const double lo = std::max(omega_min, a - pad), hi = std::min(omega_max, b + pad);
     if (!bands.empty() && lo <= bands.back().omega_hi)

@@ -72,8 +72,9 @@ struct DiagramBand {
 };
 
 // The bands of the diagram over the curve c's ranges with no stable period-1 orbit within
-// [omega_min, omega_max] (uncovered(omega_min, omega_max, stable_intervals(c)), as
-// add_unstable_period1_ranges counts them), in increasing omega; empty where every range is
+// [omega_min, omega_max] (period1_ranges(omega_min, omega_max, {&c}).no_stable, as
+// add_unstable_period1_ranges counts them: an unresolved stretch lies in one, so a band covers
+// every stretch whose stability is not resolved), in increasing omega; empty where every range is
 // stable. dofs: the model's n. speeds > 0: every band gets that many speeds instead of the density rule.
 std::vector<DiagramBand> diagram_bands(const FrequencyCurve& c, double omega_min, double omega_max, int dofs,
                                        const DiagramBandOptions& o = {}, int speeds = 0);

@@ -508,6 +508,7 @@ Eigen::MatrixXd shooting_newton(const ShootingMap& P, const HarmonicBalance& hb,
   y << x0, v0;
   Eigen::MatrixXd Phi, xs, Phi_best, xs_best;
   double best = INFINITY;
+  r.shooting = true;
   for (int it = 0; it <= opt.max_newton; ++it) {
     P(y, yT, Phi, xs);
     const Eigen::VectorXd F = yT - y;

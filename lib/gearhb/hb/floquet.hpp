@@ -65,6 +65,9 @@ struct FloquetResult {
   double modulus = 0.0, angle = 0.0; // |critical|, arg(critical) in (-pi, pi]
   bool stable = false;
   bool corrected = false;            // the shooting Newton converged
+  // a shooting Newton ran (false: the multipliers of the variational equation about the HB
+  // orbit, FloquetOptions::correct_orbit = false, no correction tried)
+  bool shooting = false;
   int newton_steps = 0;
   double shooting_residual = 0.0;    // scaled |P(y) - y| of the orbit whose multipliers are returned
   double orbit_error = 0.0;          // max over the period and DOFs of |x_HB - x_exact| [units of x]

@@ -50,6 +50,7 @@ PointFloquet point_floquet(const FloquetResult& r) {
   p.angle = r.angle;
   p.orbit_error = r.orbit_error;
   p.corrected = r.corrected;
+  p.shooting = r.shooting;
   p.x0 = r.x0;
   p.v0 = r.v0;
   p.lower_period = r.lower_period;

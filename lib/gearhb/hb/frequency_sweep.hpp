@@ -103,6 +103,7 @@ struct PointFloquet {
   double modulus = 0.0, angle = 0.0;   // critical multiplier: |mu|, arg(mu)
   double orbit_error = 0.0;            // max |x_HB - x_exact| over the period (floquet.hpp)
   bool corrected = false;              // shooting correction converged
+  bool shooting = false;               // one was tried (FloquetResult::shooting)
   Eigen::VectorXd x0, v0;              // the corrected state at phase 0 (FloquetResult::x0, v0; exact_orbit.hpp)
   bool lower_period = false;           // FloquetResult::lower_period
   int outside_real_positive = 0, outside_real_negative = 0, outside_complex = 0;

@@ -798,28 +798,26 @@ Intervals intervals_of(const FrequencyCurve& c, const std::vector<bool>& stable,
     }
   }
   if (P.size() == 1 && stable[0]) out.emplace_back(period * P[0].omega, period * P[0].omega);
-  std::sort(out.begin(), out.end());
-  Intervals merged;
-  for (const auto& iv : out)
-    if (!merged.empty() && iv.first <= merged.back().second) merged.back().second = std::max(merged.back().second, iv.second);
-    else merged.push_back(iv);
-  return merged;
+  return merged(std::move(out));
 }
 
-// The runs [first, last] of consecutive stable points with no corrected point.
+// The runs [first, last] of consecutive stable points with no corrected point, each point's
+// shooting tried and failed (a point whose multipliers are the variational equation's by choice,
+// FloquetOptions::correct_orbit = false, tried none: its label is that method's, not unresolved).
 std::vector<std::pair<std::size_t, std::size_t>> unresolved_runs(const FrequencyCurve& c) {
   std::vector<std::pair<std::size_t, std::size_t>> runs;
   const std::size_t n = c.branch.points.size();
   if (c.stable.size() != n || c.floquet.size() != n) return runs;
+  auto failed = [&](std::size_t k) { return c.floquet[k].shooting && !c.floquet[k].corrected; };
   for (std::size_t i = 0; i < n;) {
     if (!c.stable[i]) {
       ++i;
       continue;
     }
     std::size_t j = i;
-    bool corrected = c.floquet[i].corrected;
-    for (; j + 1 < n && c.stable[j + 1]; ++j) corrected = corrected || c.floquet[j + 1].corrected;
-    if (!corrected) runs.emplace_back(i, j);
+    bool all_failed = failed(i);
+    for (; j + 1 < n && c.stable[j + 1]; ++j) all_failed = all_failed && failed(j + 1);
+    if (all_failed) runs.emplace_back(i, j);
     i = j + 1;
   }
   return runs;
@@ -849,6 +847,32 @@ Intervals unresolved_stable_stretches(const FrequencyCurve& c, int period) {
     out.emplace_back(lo, hi);
   }
   std::sort(out.begin(), out.end());
+  return out;
+}
+
+Period1Ranges period1_ranges(double lo, double hi, const std::vector<const FrequencyCurve*>& curves) {
+  Intervals resolved, labelled;
+  for (const FrequencyCurve* c : curves) {
+    const Intervals r = resolved_stable_intervals(*c), l = stable_intervals(*c);
+    resolved.insert(resolved.end(), r.begin(), r.end());
+    labelled.insert(labelled.end(), l.begin(), l.end());
+  }
+  Period1Ranges out;
+  out.no_stable = uncovered(lo, hi, resolved);
+  const Intervals unstable = uncovered(lo, hi, labelled);
+  for (const auto& [a, b] : out.no_stable) {   // its parts that the labels call stable
+    const Intervals parts = uncovered(a, b, unstable);
+    out.unresolved.insert(out.unresolved.end(), parts.begin(), parts.end());
+  }
+  return out;
+}
+
+Intervals merged(Intervals iv) {
+  std::sort(iv.begin(), iv.end());
+  Intervals out;
+  for (const auto& i : iv)
+    if (!out.empty() && i.first <= out.back().second) out.back().second = std::max(out.back().second, i.second);
+    else out.push_back(i);
   return out;
 }
 

@@ -193,7 +193,9 @@ using Intervals = std::vector<std::pair<double, double>>;
 Intervals stable_intervals(const FrequencyCurve& c, int period = 1);
 // Which stable labels are resolved: c.stable, false at every point of an unresolved stretch - a
 // run of consecutive stable points none of which has a converged shooting correction
-// (PointFloquet::corrected; the tables' `exact` = not_converged): their multipliers are those of
+// (PointFloquet::corrected; the tables' `exact` = not_converged), each point's shooting tried
+// (PointFloquet::shooting: a curve whose multipliers are the variational equation's about the
+// HB orbit by choice, gearhb_planetary's, tried none and keeps its labels): their multipliers are those of
 // the best uncorrected iterate, so "stable" there is not established (the light-load gear's
 // period-4 branch at 2088 rpm: |mu| 0.41, yet the time integration from HB's orbit is chaotic).
 // A stretch with one corrected point keeps its label. A curve without Floquet data: c.stable.
@@ -202,8 +204,23 @@ std::vector<bool> resolved_stable(const FrequencyCurve& c);
 Intervals resolved_stable_intervals(const FrequencyCurve& c, int period = 1);
 // The unresolved stretches [first, last point's omega] x period, in increasing omega.
 Intervals unresolved_stable_stretches(const FrequencyCurve& c, int period = 1);
+// The union of iv: overlapping or touching intervals joined, in increasing omega.
+Intervals merged(Intervals iv);
 // [lo, hi] less the union of `covered`: the gaps, in increasing omega (none narrower than
 // 1e-9 (hi - lo)).
 Intervals uncovered(double lo, double hi, Intervals covered);
+
+// The period-1 ranges of [lo, hi] (issue 34 §4) over the period-1 curves `curves` together (one
+// curve, or the continued curve and the branches through the diagram's orbits). no_stable: where
+// none of them has a stable orbit whose label is resolved, the gaps of their
+// resolved_stable_intervals - an unresolved stretch is not known stable, so it lies in such a
+// range; unresolved: the parts of those ranges that the labels taken at face value call stable
+// (stable_intervals less resolved_stable_intervals: each unresolved stretch, to the chord
+// midpoints or bifurcations beside it, where no other curve is resolved-stable), reported apart.
+// no_stable less unresolved are the gaps of the face-value stable_intervals.
+struct Period1Ranges {
+  Intervals no_stable, unresolved;
+};
+Period1Ranges period1_ranges(double lo, double hi, const std::vector<const FrequencyCurve*>& curves);
 
 }  // namespace gearhb
