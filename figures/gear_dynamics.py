@@ -5,9 +5,14 @@ Writes into DIR:
                     per torque, stable solid and unstable dashed (Floquet), bifurcations marked
                     (fold o, period doubling s, Neimark-Sacker D) on the curve of their branch,
                     the period-2 branches (frc_<i>.csv rows of period 2) in colours of their own,
+                    each branch continued from a time-integrated orbit of the diagram that lies on
+                    none of the others (key numbers orbit_branch_*_<i>_<k>) in brown, thicker
+                    (style.ORBIT_BRANCH_COLOUR), and its section under the Poincare points;
                     the speed ranges with no stable period-1 orbit shaded in the torque's colour
-                    (key numbers unstable_period1_*), the contact class along each curve (each
-                    torque's period-1 curve and each period-2 branch) as a thin band under the
+                    (key numbers unstable_period1_*; where the run continued such branches, the
+                    ranges with none on any branch: unstable_period1_*_all_branches_<i>), the
+                    contact class along each curve (each torque's period-1 curve and each other
+                    branch) as a thin band under the
                     panel (drive-flank loss gold, back-flank impact purple), ISO 6336-1 method B's
                     K_v dotted where iso_kv.csv exists;
                     with bifurcation_diagram.csv (by default over the speed bands around each range
@@ -22,14 +27,16 @@ Writes into DIR:
   time_history.png  DTE and flank forces over two mesh periods at one impact / loss point;
   dte_spectrum.png  the DTE per mesh order at three speeds, per torque.
 """
+import math
+
 import matplotlib.pyplot as plt
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from style import BIFURCATION_MARKERS as BIF_MARKER
-from style import (CONTACT_COLOURS, PERIOD2_COLOURS, UNRESOLVED_MARKER, branch_ids, less, mark_unresolved_stable, plot_branch,
-                   read_csv, rows_of, save, shade_unresolved_period1, torque_colour, unresolved_period1_ranges,
-                   unstable_period1_ranges)
+from style import (CONTACT_COLOURS, ORBIT_BRANCH_COLOUR, PERIOD2_COLOURS, UNRESOLVED_MARKER, branch_ids, less,
+                   mark_unresolved_stable, orbit_branches, plot_branch, read_csv, rows_of, save,
+                   shade_unresolved_period1, torque_colour, unresolved_period1_ranges, unstable_period1_ranges)
 from poincare import (bands_text, draw_hb_section, draw_poincare, hb_starts_text, value_limits, window, with_hb_starts,
                       within)
 
@@ -66,25 +73,41 @@ def contact_rugs(ax, curves):
     ax.set_ylim(-(len(curves) * 1.25 + 0.3) * h, top)
 
 
-def branches(torques, frc):
-    """(label, colour, rows, short rug label) of every curve: per torque its period-1 curve (torque
-    colour) and its period-2 (and period-4) branches (PERIOD2_COLOURS, counted over the figure)."""
+def torque_orbit_branches(kn, i):
+    """[(branch id, omega of the orbit, period)] of the branches torque i (0-based) continued from
+    time-integrated orbits (style.orbit_branches; kn: the key numbers' values by name)."""
+    return orbit_branches({name: {"value": v} for name, v in kn.items()}, "_%d" % (i + 1))
+
+
+def branches(torques, frc, kn, z1):
+    """(label, colour, rows, short rug label, line width) of every curve: per torque its period-1
+    curve (torque colour), its period-2 (and period-4) branches (PERIOD2_COLOURS, counted over the
+    figure) and its branches continued from a time-integrated orbit (ORBIT_BRANCH_COLOUR, thicker)."""
     out, n = [], 0
-    for T, d in zip(torques, frc):
-        out.append((torque_label(T), torque_colour(T, torques), rows_of(d, 0), "T1 = %g" % T))
+    for i, (T, d) in enumerate(zip(torques, frc)):
+        out.append((torque_label(T), torque_colour(T, torques), rows_of(d, 0), "T1 = %g" % T, 1.4))
+        orbit = {bid: w for bid, w, _ in torque_orbit_branches(kn, i)}
         for bid in branch_ids(d):
             rows = rows_of(d, bid)
             p = int(rows["period"][0])
+            if bid in orbit:
+                out.append(("%s: period %d (branch %d), continued from the\ntime-integrated orbit at %.0f rpm" % (
+                    torque_label(T), p, bid, orbit[bid] / (2.0 * math.pi) * 60.0 / z1), ORBIT_BRANCH_COLOUR, rows,
+                    "T1 = %g, p%d b%d" % (T, p, bid), 2.0))
+                continue
             out.append(("%s: period %d (branch %d), over %d mesh periods" % (torque_label(T), p, bid, p),
-                        PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], rows, "T1 = %g, p%d b%d" % (T, p, bid)))
+                        PERIOD2_COLOURS[n % len(PERIOD2_COLOURS)], rows, "T1 = %g, p%d b%d" % (T, p, bid), 1.4))
             n += 1
     return out
 
 
 def no_stable_period1(kn, i):
     """The speed ranges [rpm] of torque i (0-based) with no stable period-1 orbit and, of them, the
-    stretches whose stability is unresolved (key numbers unstable_period1_*, unresolved_period1_*)."""
-    suffix = "_%d" % (i + 1)
+    stretches whose stability is unresolved (key numbers unstable_period1_*, unresolved_period1_*): on
+    any period-1 branch where the run continued branches from the diagram's orbits
+    (*_all_branches_<i>), else on its period-1 curve."""
+    tag = "_all_branches" if "unstable_period1_ranges_all_branches_%d" % (i + 1) in kn else ""
+    suffix = "%s_%d" % (tag, i + 1)
     return unstable_period1_ranges(kn, suffix, unit="rpm"), unresolved_period1_ranges(kn, suffix, unit="rpm")
 
 
@@ -113,9 +136,9 @@ def torque_rows(d, i):
     return {c: [v[k] for k in keep] for c, v in d.items()}
 
 
-def diagram_panel(ax, p, h, sweeps, title):
-    handles = draw_hb_section(ax, h, "speed_rpm", "dte_um") + draw_poincare(ax, p, "speed_rpm", "dte_um",
-                                                                             sweeps=sweeps)
+def diagram_panel(ax, p, h, sweeps, title, orbit=()):
+    handles = draw_hb_section(ax, h, "speed_rpm", "dte_um", orbit=orbit) + draw_poincare(ax, p, "speed_rpm", "dte_um",
+                                                                                          sweeps=sweeps)
     ax.set_ylabel("DTE at phase 0 of each\nmesh period [um]")
     ax.set_title(title, fontsize=8)
     return handles
@@ -132,14 +155,14 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     diagram = read_diagram(d_dir)
     unstable = [i for i, d in enumerate(frc) if diagram and torque_rows(diagram[0], i)["speed_rpm"]
                 and any(int(s) == 0 for s in rows_of(d, 0)["stable"])]
-    curves = branches(torques, frc)
+    curves = branches(torques, frc, kn, params["gears"][0]["z"])
     fig, axes = plt.subplots(2 + len(unstable), 1, figsize=(9.6, 7.4 + 3.0 * len(unstable)), sharex=True)
     iso = read_csv(d_dir / "iso_kv.csv") if (d_dir / "iso_kv.csv").exists() else None
     unresolved = False   # a "stable" point on a failed shooting correction: magenta square, not stable
     for ax, y, scale, label in ((axes[0], "x_rms_ac", 1e6, "DTE RMS (oscillating part) [um]"),
                                 (axes[1], "dynamic_factor", 1.0, "dynamic factor K_v = max |mesh force| / F0")):
-        for label_c, col, d, _ in curves:
-            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c, scale=scale)
+        for label_c, col, d, _, lw in curves:
+            plot_branch(ax, d, y=y, x="speed_rpm", color=col, label=label_c, scale=scale, lw=lw)
             unresolved = mark_unresolved_stable(ax, d, y, x="speed_rpm", scale=scale) or unresolved
         for i, T in enumerate(torques):   # each event on the curve of its branch
             for k, t in enumerate(bif[i]["type"] if bif[i]["type"] else []):
@@ -152,18 +175,19 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
                 ax.plot(iso["speed_rpm"], iso["K_v_%d" % (i + 1)], ":", color=torque_colour(T, torques), lw=1.5)
         ax.set_ylabel(label)
         ax.set_ylim(bottom=0)
-        contact_rugs(ax, [(short, col, d) for _, col, d, short in curves])
+        contact_rugs(ax, [(short, col, d) for _, col, d, short, _ in curves])
     axes[1].axhline(1.0, color="0.5", lw=0.8, ls="-.")
     extra = {}
     for ax, i in zip(axes[2:], unstable):
         p = torque_rows(diagram[0], i)
         for hd in diagram_panel(ax, p, torque_rows(diagram[1], i), with_hb_starts(),
                                 "%s: bifurcation diagram by time integration (sweeps up and down)\n%s%s"
-                                % (torque_label(torques[i]), bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p))):
+                                % (torque_label(torques[i]), bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p)),
+                                [bid for bid, _, _ in torque_orbit_branches(kn, i)]):
             extra.setdefault(hd.get_label(), hd)
     shaded = mark_no_stable_period1(axes, kn, torques)
     axes[-1].set_xlabel("speed of gear 1 n1 [rpm]   (mesh frequency = z1 n1 / 60, z1 = %d)" % params["gears"][0]["z"])
-    handles = [Line2D([], [], color=col, label=label_c) for label_c, col, _, _ in curves]
+    handles = [Line2D([], [], color=col, lw=lw, label=label_c) for label_c, col, _, _, lw in curves]
     handles += [Line2D([], [], color="k", ls="-", label="stable (Floquet)"),
                 Line2D([], [], color="k", ls="--", label="unstable (Floquet)")]
     handles += [Line2D([], [], label="HB point labelled stable whose shooting correction\nfails: stability unresolved",
@@ -191,7 +215,7 @@ def response_figure(d_dir, params, kn, torques, frc, bif):
     save(fig, d_dir / "response.png")
 
 
-def diagram_figure(d_dir, params, torques, diagram):
+def diagram_figure(d_dir, params, kn, torques, diagram):
     """bifurcation_diagram.png: one row per torque with a diagram, sweep up (left) and down (right)."""
     drawn = [i for i in range(len(torques)) if torque_rows(diagram[0], i)["speed_rpm"]]
     fig, grid = plt.subplots(len(drawn), 2, figsize=(12.0, 3.4 * len(drawn) + 1.2), sharex=True, sharey="row",
@@ -207,7 +231,8 @@ def diagram_figure(d_dir, params, torques, diagram):
         grid[row][0].set_ylim(*ylim)   # the row shares y
         for ax, sweep in zip(grid[row], ("up", "down")):
             for hd in diagram_panel(ax, p, h, with_hb_starts((sweep,)), "%s, sweep %s, %s%s" % (
-                    torque_label(T), sweep, bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p))):
+                    torque_label(T), sweep, bands_text(p, "speed_rpm", "rpm"), hb_starts_text(p)),
+                    [bid for bid, _, _ in torque_orbit_branches(kn, i)]):
                 labels.setdefault(hd.get_label(), hd)
     for ax in grid[-1]:
         ax.set_xlim(lo, hi)
@@ -257,12 +282,14 @@ def campbell_figure(d_dir, params, kn, torques, frc):
         ax.text(n_end, k * z1 * n_end / 60.0, "%d x mesh " % k, fontsize=7, va="top", ha="right")
     naturals = [[modes["f_hz"][j] for j in range(len(modes["f_hz"])) if int(modes["torque_index"][j]) == i + 1]
                 for i in range(len(torques))]
-    peaks = [[kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1] for i in range(len(torques))]
+    peaked = [i for i in range(len(torques)) if "dte_rms_peak_f_mesh_hz_%d" % (i + 1) in kn]   # a stable period-1 point
+    peaks = [[kn["dte_rms_peak_f_mesh_hz_%d" % (i + 1)] * 60.0 / z1] for i in peaked]
     for members, f in equal_groups(naturals):   # torques whose lines coincide: drawn and named once
         for j, fj in enumerate(f):
             ax.axhline(fj, color=torque_colour(torques[members[-1]], torques), ls=":", lw=1.2,
                        label="closed-contact natural frequencies, %s" % torques_label(torques, members) if j == 0 else None)
     for members, n in equal_groups(peaks):
+        members = [peaked[m] for m in members]
         ax.axvline(n[0], color=torque_colour(torques[members[-1]], torques), ls="-", lw=0.6, alpha=0.6,
                    label="DTE RMS peak, %s" % torques_label(torques, members))
     ax.set_xlim(0, n_max * 1.12)
@@ -327,7 +354,7 @@ def draw(d_dir, params, kn, torques):
     response_figure(d_dir, params, kn, torques, frc, bif)
     diagram = read_diagram(d_dir)
     if diagram:
-        diagram_figure(d_dir, params, torques, diagram)
+        diagram_figure(d_dir, params, kn, torques, diagram)
     campbell_figure(d_dir, params, kn, torques, frc)
     time_history_figure(d_dir, params, kn)
     spectrum_figure(d_dir, params, torques)

@@ -569,7 +569,7 @@ void GearPairChapter::orbit_branches(Run& run, const Case& cs, const HarmonicBal
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = BifurcationDiagramOptions{}.period_tol * xs;
   const VectorXd T2 = gear_pair_T2(gear(cs.mesh));
   const std::vector<BranchView> known = branch_views(hb, c, branches);
-  const std::vector<const DiagramPoint*> off = off_branch_orbits(d, known, tol);
+  const std::vector<DiagramPoint> off = off_branch_orbits(hb, d, known, BifurcationDiagramOptions{}.period_tol, xs);
   int left = 0, on_known = 0;
   const std::vector<OrbitBranch> found = branches_from_orbits(run, cs.label, hb, off, known, o, tol, left, on_known);
   KeyNumbers& key = run.key_numbers();

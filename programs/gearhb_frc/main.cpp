@@ -287,8 +287,7 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // branch_from_orbit solves HB from its Fourier coefficients, checks it against the orbit within
 // HB's own error and continues it both ways over the range with the sweep's options (stability,
 // bifurcations); an orbit on a branch found so far starts none (at most 4 branches). Each takes
-// the next branch id in frc.csv and bifurcations.csv (none, said in one line, for a model without
-// an exact flow: has_exact_flow); one that starts on a branch the run has is
+// the next branch id in frc.csv and bifurcations.csv; one that starts on a branch the run has is
 // not added (known_branch_holding). Key numbers: orbit_branches, off_curve_orbits_left (orbits
 // off every branch that started none), off_curve_orbits_on_known (whose branch is one the run
 // has: off_every_branch missed it at that speed), and per branch k
@@ -298,33 +297,10 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches,
 // and their unresolved stretches, unresolved_period1_*_all_branches (period1_ranges).
 void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const {
-  if (!has_exact_flow(r.hb)) {
-    run.say(model_.name + ": no branches from the diagram's orbits: with a time-varying contact stiffness an HB "
-            "point has no error bound at phase 0 to tell an orbit on a branch from one off it");
-    return;
-  }
-  const double xs = r.c.scaling.x.cwiseAbs().maxCoeff(), tol = model_.diagram.options.period_tol * xs;
-  const std::vector<BranchView> known = branch_views(r.hb, r.c, r.branches);
-  std::vector<const DiagramPoint*> off = off_branch_orbits(d, known, tol);
-  off.erase(std::remove_if(off.begin(), off.end(), [](const DiagramPoint* p) { return p->n > 2; }), off.end());
-  int left = 0, on_known = 0;
-  const std::vector<OrbitBranch> found = branches_from_orbits(run, model_.name, r.hb, off, known, r.o, tol, left, on_known);
-  KeyNumbers& key = run.key_numbers();
-  key.add("orbit_branches", double(found.size()), "-");
-  key.add("off_curve_orbits_left", double(left), "-");
-  key.add("off_curve_orbits_on_known", double(on_known), "-");
-  for (std::size_t k = 0; k < found.size(); ++k) {
-    const OrbitBranch& b = found[k];
-    const std::string tag = "_" + std::to_string(k + 1);
-    r.branches.push_back(table_branch(b));
-    orbit_branch_numbers(key, b, int(r.branches.size()), model_.output, "x", r.o, tag);
-    key.add("orbit_branch_isola" + tag, b.isola ? 1.0 : 0.0, "-");
-    orbit_branch_checks(key, r.hb, b, off, tol, xs, tag);
-  }
-  std::vector<const FrequencyCurve*> period1{&r.c};   // period 1 on any period-1 branch
-  for (const OrbitBranch& b : found)
-    if (b.period == 1) period1.push_back(&b.curve);
-  add_unstable_period1_ranges(key, period1_ranges(r.o.omega_min, r.o.omega_max, period1), "_all_branches");
+  const std::vector<OrbitBranch> found = orbit_branches_of_diagram(
+      run, model_.name, r.hb, r.c, r.branches, d, r.o, model_.diagram.options.period_tol, model_.output, "x", "");
+  add_unstable_period1_ranges(run.key_numbers(), period1_ranges(r.o.omega_min, r.o.omega_max, period1_curves(r.c, found)),
+                              "_all_branches");
 }
 
 // Step 5 (with the file's torus key): the torus branches, their ids after every other branch's.

@@ -54,6 +54,7 @@
 
 #include "gearhb/app/case_table.hpp"
 #include "gearhb/app/bifurcation_input.hpp"
+#include "gearhb/app/orbit_branches.hpp"
 #include "gearhb/tools/gear_file.hpp"
 #include "gearhb/app/study.hpp"
 #include "gearhb/app/tables.hpp"
@@ -184,20 +185,23 @@ class GearPairFromFile {
   void draw(Run& run) const;
 
   // The dynamics, per torque (README "The pair over its speed range").
-  // One mesh model per torque: built once, its curve, summary and closed-contact frequency;
-  // the period-doubled branches from its period doublings (hb/period_doubling.hpp) and theirs.
+  // One mesh model per torque: built once, its sweep's options, curve, summary and closed-contact
+  // frequency; the period-doubled branches from its period doublings (hb/period_doubling.hpp), then
+  // those continued from the diagram's orbits off every branch (orbit_branches), and theirs.
   struct Response {
     DteGear mesh;
+    SweepOptions o;
     FrequencyCurve curve;
     MeshCurveSummary summary;
     double f_natural = 0.0;   // the one-DOF closed-contact mesh frequency [Hz]
-    std::vector<PeriodDoubledBranch> doubled;   // period 2 (and 4: period_doubling.depth 2)
+    std::vector<PeriodDoubledBranch> doubled;   // period 2 (and 4: period_doubling.depth 2), then the orbit branches
     std::vector<MeshCurveSummary> doubled_summary;   // per branch (empty for one without points)
   };
   BearingSupport bearings() const;
   DteGear mesh_at(std::size_t i) const;
   Response response(Run& run, std::size_t i, const DteGear& mesh, const HarmonicBalance& hb) const;
   void doubled_branches(Run& run, std::size_t i, const HarmonicBalance& hb, SweepOptions o, Response& r) const;
+  void say_branch(Run& run, std::size_t i, std::size_t k, const PeriodDoubledBranch& b, const MeshCurveSummary& m) const;
   std::string rpm_list(const std::string& head, const Intervals& iv) const;
   Table mesh_table(const HarmonicBalance& hb, const FrequencyCurve& c, const MeshCurveSummary& s,
                    const BranchLabel& label, const RowProgress& progress) const;
@@ -207,8 +211,9 @@ class GearPairFromFile {
   void response_key_numbers(Run& run, std::size_t i, const Response& r) const;
   void axial_key_numbers(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
-  bool bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r, BifurcationDiagram& d,
+  bool bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r, BifurcationDiagram& d,
                            Table& t, Table& hb_section) const;
+  void orbit_branches(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r, const BifurcationDiagram& d) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * hz(omega) / file_.pair.gear1.teeth; }
@@ -512,15 +517,15 @@ void GearPairFromFile::dynamics(Run& run) const {
   for (std::size_t i = 0; i < file_.torques.size(); ++i) {
     const DteGear mesh = mesh_at(i);
     const HarmonicBalance hb = gear_mesh_model(mesh, d.dofs, bearings(), d.harmonics, 0, d.mesh);
-    const Response r = response(run, i, mesh, hb);
-    response_tables(run, i, hb, r);
+    Response r = response(run, i, mesh, hb);
     response_key_numbers(run, i, r);
     axial_key_numbers(run, i, hb, r);
     spectrum_and_history(hb, i, r, spectrum, history, history_kv);
     if (d.time_check_points > 0) time_integration_check(run, i, hb, r);
     BifurcationDiagram bd;
-    const bool has = bifurcation_diagram(run, i, hb, r, bd, diagram, diagram_hb);
+    const bool has = bifurcation_diagram(run, i, hb, r, bd, diagram, diagram_hb);   // and the orbit branches
     drawn = drawn || has;
+    response_tables(run, i, hb, r);
     any_motion_key_numbers(run, i, hb, r, has ? &bd : nullptr);
     const std::vector<double> f = closed_contact_frequencies(r.mesh, d.dofs, bearings());
     for (std::size_t k = 0; k < f.size(); ++k)
@@ -544,7 +549,7 @@ void GearPairFromFile::dynamics(Run& run) const {
 // bifurcation_diagram_hb.csv: the HB branches' (period 1 and the period-doubled ones, period and branch
 // columns); key numbers diagram_off_branch_period1_<i>, _period2_<i>: its orbits on no HB branch of
 // their period (off_branch_key_numbers).
-bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r,
+bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r,
                                            BifurcationDiagram& d, Table& t, Table& hb_section) const {
   if (!file_.diagram.on) return false;
   const std::string n = std::to_string(i + 1);
@@ -558,6 +563,11 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   auto rpm = [&](double w) { return speed_rpm(w); };
   run.say(torque_label(i) + ": " + diagram_bands_text(bands, rpm, "rpm"));
   d = diagram_of_bands(run, hb, r.curve, bands, file_.diagram.options, "bifurcation_diagram_" + n, torque_label(i) + ": ");
+  diagram_key_numbers(run.key_numbers(), d, "_" + n);
+  run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
+  off_branch_key_numbers(run.key_numbers(), hb, r.curve, r.doubled, d, file_.diagram.options.period_tol, "_" + n);
+  run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));
+  orbit_branches(run, i, hb, r, d);
   auto lead = [&](double w) {
     return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
@@ -579,11 +589,36 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
     row.emplace_back(long(b));
     return row;
   });
-  diagram_key_numbers(run.key_numbers(), d, "_" + n);
-  run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
-  off_branch_key_numbers(run.key_numbers(), hb, r.curve, r.doubled, d, file_.diagram.options.period_tol, "_" + n);
-  run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));
   return true;
+}
+
+// Torque i's HB branches through the diagram's orbits of period 1 or 2 that lie on none of its
+// branches (app/orbit_branches.hpp orbit_branches_of_diagram, as gearhb_frc's step 4b): each
+// continued over the speed range with the curve's sweep options, appended to r.doubled (the next
+// branch id in frc_<i>.csv, bifurcations_<i>.csv and bifurcation_diagram_hb.csv) with its gear
+// measures, and said in one line as the period-2 branches are. Key numbers with the suffix _<i>
+// (orbit_branches_<i>, off_curve_orbits_left_<i>, off_curve_orbits_on_known_<i>,
+// orbit_branch_*_<i>_<k>: "dte", the DTE) and the speed ranges with no stable period-1 orbit on
+// any period-1 branch, unstable_period1_ranges_all_branches_<i> with each range k as
+// unstable_period1_from_rpm_all_branches_<i>_<k>, unstable_period1_to_rpm_all_branches_<i>_<k>,
+// and their unresolved stretches, unresolved_period1_*_all_branches_<i> (period1_ranges).
+void GearPairFromFile::orbit_branches(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r,
+                                      const BifurcationDiagram& d) const {
+  const std::string n = std::to_string(i + 1);
+  const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
+  const std::size_t first = r.doubled.size();
+  const std::vector<OrbitBranch> found = orbit_branches_of_diagram(run, torque_label(i), hb, r.curve, r.doubled, d, r.o,
+                                                                   file_.diagram.options.period_tol, q, "dte", "_" + n);
+  for (std::size_t k = first; k < r.doubled.size(); ++k) {
+    const PeriodDoubledBranch& b = r.doubled[k];
+    r.doubled_summary.push_back(mesh_curve_summary(*b.model, b.curve, r.mesh.F0, q));
+    say_branch(run, i, k, b, r.doubled_summary.back());
+  }
+  if (found.empty()) return;
+  const Period1Ranges p1 = period1_ranges(r.o.omega_min, r.o.omega_max, period1_curves(r.curve, found));
+  const auto rpm = [this](double w) { return speed_rpm(w); };
+  add_range_key_numbers(run.key_numbers(), "unstable_period1", p1.no_stable, "_all_branches_" + n, "rpm", rpm, "rpm");
+  add_range_key_numbers(run.key_numbers(), "unresolved_period1", p1.unresolved, "_all_branches_" + n, "rpm", rpm, "rpm");
 }
 
 // Step 8: ISO 6336-1 method B's K_v over the same speed range, per torque (iso_kv.csv, the
@@ -696,7 +731,7 @@ GearPairFromFile::Response GearPairFromFile::response(Run& run, std::size_t i, c
   Response r;
   r.mesh = mesh;
   r.f_natural = closed_contact_frequencies(mesh, MeshDofs::one_dof, {}).front();
-  SweepOptions o;
+  SweepOptions& o = r.o;
   o.omega_min = 2.0 * M_PI * d.f_min_hz;
   o.omega_max = 2.0 * M_PI * d.f_max_hz;
   o.direction = d.direction;
@@ -726,23 +761,30 @@ void GearPairFromFile::doubled_branches(Run& run, std::size_t i, const HarmonicB
     r.doubled_summary.push_back(has_points(b) ? mesh_curve_summary(*b.model, b.curve, r.mesh.F0,
                                                                    dte_coordinate(file_.dynamics.dofs, bearings()))
                                               : MeshCurveSummary{});
-    if (!has_points(b)) continue;
-    // its speeds, where it is stable, and its largest stable K_v and DTE RMS (over two mesh periods);
-    // a stable stretch with no converged shooting correction is listed apart (resolved_stable)
-    char part[120];
-    std::snprintf(part, sizeof part, ": period-%d branch %zu, %.0f to %.0f rpm:", b.period, k + 1,
-                  speed_rpm(b.omega_start), speed_rpm(b.omega_end));
-    const Intervals st = resolved_stable_intervals(b.curve, b.period);
-    std::string line = torque_label(i) + part + rpm_list(st.empty() ? "" : " stable at", st);
-    const MeshCurveSummary& m = r.doubled_summary.back();
-    std::snprintf(part, sizeof part, " rpm; largest stable K_v %.2f, DTE RMS %.2f um", m.dynamic_factor_peak,
-                  m.dte_rms_peak * 1e6);
-    line += st.empty() ? " unstable everywhere" : part;
-    const Intervals unresolved = unresolved_stable_stretches(b.curve, b.period);
-    if (!unresolved.empty())
-      line += rpm_list("; stability unresolved (shooting correction failed) at", unresolved) + " rpm";
-    run.say(line);
+    if (has_points(b)) say_branch(run, i, k, b, r.doubled_summary.back());
   }
+}
+
+// One line for branch k of torque i (a period-doubled one, or one continued from a diagram orbit):
+// its speeds, where it is stable, and its largest stable K_v and DTE RMS (over its period); a
+// stable stretch with no converged shooting correction is listed apart (resolved_stable).
+void GearPairFromFile::say_branch(Run& run, std::size_t i, std::size_t k, const PeriodDoubledBranch& b,
+                                  const MeshCurveSummary& m) const {
+  double lo = INFINITY, hi = -INFINITY;   // its span in forcing omega
+  for (const auto& p : b.curve.branch.points) lo = std::min(lo, b.period * p.omega), hi = std::max(hi, b.period * p.omega);
+  const bool doubled = b.from != std::size_t(-1);   // a period-doubled branch: from its PD to where it ends
+  char part[120];
+  std::snprintf(part, sizeof part, ": period-%d branch %zu, %.0f to %.0f rpm:", b.period, k + 1,
+                speed_rpm(doubled ? b.omega_start : lo), speed_rpm(doubled ? b.omega_end : hi));
+  const Intervals st = resolved_stable_intervals(b.curve, b.period);
+  std::string line = torque_label(i) + part + rpm_list(st.empty() ? "" : " stable at", st);
+  std::snprintf(part, sizeof part, " rpm; largest stable K_v %.2f, DTE RMS %.2f um", m.dynamic_factor_peak,
+                m.dte_rms_peak * 1e6);
+  line += st.empty() ? " unstable everywhere" : part;
+  const Intervals unresolved = unresolved_stable_stretches(b.curve, b.period);
+  if (!unresolved.empty())
+    line += rpm_list("; stability unresolved (shooting correction failed) at", unresolved) + " rpm";
+  run.say(line);
 }
 
 // " <head> a-b, c-d" (rpm of the forcing-frequency intervals; a one-point interval as one speed).
@@ -790,7 +832,8 @@ void GearPairFromFile::response_tables(Run& run, std::size_t i, const HarmonicBa
   run.write("bifurcations_" + n + ".csv", bif);
 }
 
-// The key numbers of torque i (file order, 1-based); a transition that never happens is absent.
+// The key numbers of torque i (file order, 1-based); a transition that never happens is absent,
+// and so are the peaks (over stable points) where no point of the period-1 curve is stable.
 void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Response& r) const {
   KeyNumbers& key = run.key_numbers();
   const std::string n = std::to_string(i + 1);
@@ -800,10 +843,13 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   key.add("f_mesh_natural_hz_" + n, fn, "Hz");
   key.add("mesh_stiffness_kc_N_per_m_" + n, r.mesh.kc, "N/m");
   key.add("equivalent_mass_kg_" + n, r.mesh.me, "kg");
-  key.add("dte_rms_peak_um_" + n, s.dte_rms_peak * 1e6, "um");
-  key.add("dte_rms_peak_f_mesh_hz_" + n, hz(s.dte_rms_peak_omega), "Hz");
-  key.add("dynamic_factor_peak_" + n, s.dynamic_factor_peak, "-");
-  key.add("dynamic_factor_peak_speed_rpm_" + n, speed_rpm(s.dynamic_factor_peak_omega), "rpm");
+  const bool stable_point = std::isfinite(s.dte_rms_peak_omega);   // the peaks are over stable points
+  if (stable_point) {
+    key.add("dte_rms_peak_um_" + n, s.dte_rms_peak * 1e6, "um");
+    key.add("dte_rms_peak_f_mesh_hz_" + n, hz(s.dte_rms_peak_omega), "Hz");
+    key.add("dynamic_factor_peak_" + n, s.dynamic_factor_peak, "-");
+    key.add("dynamic_factor_peak_speed_rpm_" + n, speed_rpm(s.dynamic_factor_peak_omega), "rpm");
+  }
   if (std::isfinite(s.drive_loss_first_omega))
     key.add("drive_loss_first_f_mesh_hz_" + n, hz(s.drive_loss_first_omega), "Hz");
   if (std::isfinite(s.back_impact_first_omega))
@@ -815,9 +861,13 @@ void GearPairFromFile::response_key_numbers(Run& run, std::size_t i, const Respo
   key.add("unstable_points_" + n, double(unstable), "-");
   key.add("bifurcations_" + n, double(r.curve.bifurcations.size()), "-");
   char line[200];
-  std::snprintf(line, sizeof line, "T1 = %g N m: peak DTE RMS %.4f um at %.1f Hz, peak K_v %.4f at %.0f rpm, %zu points",
-                file_.torques[i], s.dte_rms_peak * 1e6, hz(s.dte_rms_peak_omega), s.dynamic_factor_peak,
-                speed_rpm(s.dynamic_factor_peak_omega), r.curve.branch.points.size());
+  if (stable_point)
+    std::snprintf(line, sizeof line, "T1 = %g N m: peak DTE RMS %.4f um at %.1f Hz, peak K_v %.4f at %.0f rpm, %zu points",
+                  file_.torques[i], s.dte_rms_peak * 1e6, hz(s.dte_rms_peak_omega), s.dynamic_factor_peak,
+                  speed_rpm(s.dynamic_factor_peak_omega), r.curve.branch.points.size());
+  else
+    std::snprintf(line, sizeof line, "T1 = %g N m: no stable period-1 point over the speed range (no peak DTE RMS, K_v), %zu points",
+                  file_.torques[i], r.curve.branch.points.size());
   run.say(line);
 }
 

@@ -380,21 +380,29 @@ std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyC
   return v;
 }
 
-std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
-                                                   double tol) {
-  std::vector<const DiagramPoint*> off;
-  for (const DiagramPoint& p : d.points)
-    if (off_every_branch(p, views, tol)) off.push_back(&p);
+std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const BifurcationDiagram& d,
+                                            const std::vector<BranchView>& views, double period_tol, double x_scale) {
+  const double tol = period_tol * x_scale;
+  TimeIntegrationOptions o;
+  o.x_scale = x_scale;
+  const TimeIntegrator ti(hb);
+  std::vector<DiagramPoint> off;
+  for (const DiagramPoint& p : d.points) {
+    if (!off_every_branch(p, views, tol)) continue;
+    DiagramPoint q = p;
+    if (polish_periodic_point(ti, q, tol, o) && !off_every_branch(q, views, tol)) continue;
+    off.push_back(std::move(q));
+  }
   return off;
 }
 
 void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
                             const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
                             const std::string& suffix) {
-  const double tol = period_tol * c.scaling.x.cwiseAbs().maxCoeff();   // diagram_of_bands' x_scale
+  const double xs = c.scaling.x.cwiseAbs().maxCoeff();   // diagram_of_bands' x_scale
   double off1 = 0.0, off2 = 0.0;
-  for (const DiagramPoint* p : off_branch_orbits(d, branch_views(hb, c, pd), tol))
-    (p->n == 1 ? off1 : off2) += p->n <= 2 ? 1.0 : 0.0;
+  for (const DiagramPoint& p : off_branch_orbits(hb, d, branch_views(hb, c, pd), period_tol, xs))
+    (p.n == 1 ? off1 : off2) += p.n <= 2 ? 1.0 : 0.0;
   key.add("diagram_off_branch_period1" + suffix, off1, "-");
   key.add("diagram_off_branch_period2" + suffix, off2, "-");
 }

@@ -208,14 +208,18 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
 // 1) and each branch of pd with points (its model, its period).
 std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
                                      const std::vector<PeriodDoubledBranch>& pd);
-// The periodic points of d that lie on none of `views` (off_every_branch), in d's order; tol: the
-// classifier's resolution, period_tol x the integration's x_scale (diagram_of_curve's: the
-// curve's largest DOF scale).
-std::vector<const DiagramPoint*> off_branch_orbits(const BifurcationDiagram& d, const std::vector<BranchView>& views,
-                                                   double tol);
+// The periodic points of d that lie on none of `views` (off_every_branch), in d's order, each
+// compared as the orbit it approaches: a point off every branch as recorded is polished
+// (hb/bifurcation_diagram.hpp polish_periodic_point: shooting on the integration's n-period map
+// from its last state, the cycle kept where it attracts and has the point's least period) and
+// compared again; returned polished where that succeeded (then still off), as recorded where not.
+// tol = period_tol x x_scale: the classifier's resolution (x_scale diagram_of_curve's: the curve's
+// largest DOF scale).
+std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const BifurcationDiagram& d,
+                                            const std::vector<BranchView>& views, double period_tol, double x_scale);
 // Key numbers diagram_off_branch_period1<suffix>, diagram_off_branch_period2<suffix>: the speeds
 // (both sweeps) of d whose orbit of period 1 (2) lies on none of the HB branches of its period
-// (the curve c of hb; the period-2 branches of pd), tol as off_branch_orbits with the diagram's
+// (the curve c of hb; the period-2 branches of pd; off_branch_orbits, polished) with the diagram's
 // period_tol: an HB branch the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig.
 // 41's, hb/orbit_branch.hpp branch_from_orbit).
 void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,

@@ -85,22 +85,22 @@ int known_branch_holding(const OrbitBranch& b, const std::vector<BranchView>& kn
 }
 
 std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                              const std::vector<const DiagramPoint*>& off,
+                                              const std::vector<DiagramPoint>& off,
                                               const std::vector<BranchView>& known, const SweepOptions& o, double tol,
                                               int& left, int& on_known) {
   std::vector<OrbitBranch> found, held;   // held: the branches found to be known ones
   std::vector<BranchView> mine;
   int attempts = 0;
   left = 0, on_known = 0;
-  for (const DiagramPoint* p : off) {
-    if (!off_every_branch(*p, mine, tol)) continue;
+  for (const DiagramPoint& p : off) {
+    if (!off_every_branch(p, mine, tol)) continue;
     if (found.size() >= 4 || attempts >= 6) {
       ++left;
       continue;
     }
     ++attempts;
     OrbitBranch b = run.timed("orbit branch " + label, [&] {
-      return branch_from_orbit(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, o);
+      return branch_from_orbit(hb, p.x.row(0).transpose(), p.v.row(0).transpose(), p.omega, p.n, o);
     });
     run.say(label + ": " + b.why);
     if (!b.ok) {
@@ -123,16 +123,16 @@ std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label
 }
 
 void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const OrbitBranch& b,
-                         const std::vector<const DiagramPoint*>& off, double tol, double xs, const std::string& tag) {
+                         const std::vector<DiagramPoint>& off, double tol, double xs, const std::string& tag) {
   int on = 0, agree = 1;
   const auto& st = b.curve.stable;
-  for (const DiagramPoint* p : off) {
-    if (p->n != b.period) continue;
-    const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p->x, p->n, p->omega);
+  for (const DiagramPoint& p : off) {
+    if (p.n != b.period) continue;
+    const BranchDistance bd = distance_to_branch({b.model.get(), &b.curve, b.period}, p.x, p.n, p.omega);
     if (!(bd.distance <= bd.bound + tol)) continue;
     ++on;
     if (st[std::size_t(bd.chord)] != st[std::size_t(bd.chord) + 1]) continue;
-    const bool attracts = integrated_multiplier(hb, p->x.row(0).transpose(), p->v.row(0).transpose(), p->omega, p->n, xs) < 1.0;
+    const bool attracts = integrated_multiplier(hb, p.x.row(0).transpose(), p.v.row(0).transpose(), p.omega, p.n, xs) < 1.0;
     agree = agree && attracts == st[std::size_t(bd.chord)];
   }
   std::vector<std::size_t> unstable;
@@ -146,6 +146,39 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
   key.add("orbit_branch_unstable_checked" + tag, double(std::min<std::size_t>(3, unstable.size())), "-");
   key.add("orbit_branch_diagram_speeds" + tag, on, "-");
   key.add("orbit_branch_stability_agrees" + tag, agree, "-");
+}
+
+std::vector<OrbitBranch> orbit_branches_of_diagram(Run& run, const std::string& label, const HarmonicBalance& hb,
+                                                   const FrequencyCurve& c, std::vector<PeriodDoubledBranch>& branches,
+                                                   const BifurcationDiagram& d, const SweepOptions& o, double period_tol,
+                                                   const VectorXd& q, const std::string& quantity,
+                                                   const std::string& suffix) {
+  const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = period_tol * xs;
+  const std::vector<BranchView> known = branch_views(hb, c, branches);
+  std::vector<DiagramPoint> off = off_branch_orbits(hb, d, known, period_tol, xs);
+  off.erase(std::remove_if(off.begin(), off.end(), [](const DiagramPoint& p) { return p.n > 2; }), off.end());
+  int left = 0, on_known = 0;
+  std::vector<OrbitBranch> found = branches_from_orbits(run, label, hb, off, known, o, tol, left, on_known);
+  KeyNumbers& key = run.key_numbers();
+  key.add("orbit_branches" + suffix, double(found.size()), "-");
+  key.add("off_curve_orbits_left" + suffix, double(left), "-");
+  key.add("off_curve_orbits_on_known" + suffix, double(on_known), "-");
+  for (std::size_t k = 0; k < found.size(); ++k) {
+    const OrbitBranch& b = found[k];
+    const std::string tag = suffix + "_" + std::to_string(k + 1);
+    branches.push_back(table_branch(b));
+    orbit_branch_numbers(key, b, int(branches.size()), q, quantity, o, tag);
+    key.add("orbit_branch_isola" + tag, b.isola ? 1.0 : 0.0, "-");
+    orbit_branch_checks(key, hb, b, off, tol, xs, tag);
+  }
+  return found;
+}
+
+std::vector<const FrequencyCurve*> period1_curves(const FrequencyCurve& c, const std::vector<OrbitBranch>& found) {
+  std::vector<const FrequencyCurve*> curves{&c};
+  for (const OrbitBranch& b : found)
+    if (b.period == 1) curves.push_back(&b.curve);
+  return curves;
 }
 
 }  // namespace gearhb

@@ -13,6 +13,7 @@
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/harmonic_balance.hpp"
 #include "gearhb/hb/orbit_branch.hpp"
+#include "gearhb/hb/period_doubling.hpp"
 
 namespace gearhb {
 
@@ -41,7 +42,7 @@ int known_branch_holding(const OrbitBranch& b, const std::vector<BranchView>& kn
 // the orbit's speed (e.g. where it folds within one chord), and the orbits on it start no other.
 // tol: off_every_branch's tolerance.
 std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label, const HarmonicBalance& hb,
-                                              const std::vector<const DiagramPoint*>& off,
+                                              const std::vector<DiagramPoint>& off,
                                               const std::vector<BranchView>& known, const SweepOptions& o, double tol,
                                               int& left, int& on_known);
 
@@ -62,6 +63,26 @@ void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const E
 // (both neighbours unstable), the GSL monodromy from the orbit corrected by shooting has a
 // multiplier outside the unit circle too. xs: the integration's x_scale.
 void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const OrbitBranch& b,
-                         const std::vector<const DiagramPoint*>& off, double tol, double xs, const std::string& tag);
+                         const std::vector<DiagramPoint>& off, double tol, double xs, const std::string& tag);
+
+// The step a program runs after its bifurcation diagram (gearhb_frc step 4b, gearhb_gear per
+// torque; ch. 6 step 3c does the same with its own keys): the HB branches through the diagram's
+// periodic orbits of period 1 or 2 that lie on none of the run's branches (the curve c of hb and
+// `branches`; off_branch_orbits, each compared as the orbit it approaches), by branches_from_orbits
+// with the sweep's options o, tolerance period_tol x the curve's largest DOF scale; each new branch
+// appended to `branches` (table_branch: the next branch id in the program's tables, its section
+// in bifurcation_diagram_hb.csv) and returned. Key numbers, each name ending in `suffix` ("" or
+// "_<i>"): orbit_branches, off_curve_orbits_left, off_curve_orbits_on_known, and per branch k
+// (tag suffix_k) orbit_branch_numbers (coordinate q named `quantity`), orbit_branch_isola,
+// orbit_branch_checks. label: the program's name for the curve, heading its lines.
+std::vector<OrbitBranch> orbit_branches_of_diagram(Run& run, const std::string& label, const HarmonicBalance& hb,
+                                                   const FrequencyCurve& c, std::vector<PeriodDoubledBranch>& branches,
+                                                   const BifurcationDiagram& d, const SweepOptions& o, double period_tol,
+                                                   const Eigen::VectorXd& q, const std::string& quantity,
+                                                   const std::string& suffix);
+
+// The curve c and every period-1 branch of `found`: period1_ranges of them are the ranges with no
+// stable period-1 orbit on any branch.
+std::vector<const FrequencyCurve*> period1_curves(const FrequencyCurve& c, const std::vector<OrbitBranch>& found);
 
 }  // namespace gearhb

@@ -134,7 +134,47 @@ void chain(const TimeIntegrator& ti, double omega, int periods, const TimeIntegr
     vs.row(k) = v.transpose();
   }
 }
+
+// The n states of the cycle through (x, v) whose states after 1..n periods are the rows of xs, vs
+// (shoot_cycle's), reduced to its least period m (the first m dividing n after which it repeats
+// within tol in (x, v / omega)), into cx, cv (rows; (x, v) first); returns m.
+int cycle_states(const Eigen::VectorXd& x, const Eigen::VectorXd& v, const Eigen::MatrixXd& xs, const Eigen::MatrixXd& vs,
+                 int n, double omega, double tol, Eigen::MatrixXd& cx, Eigen::MatrixXd& cv) {
+  for (int m = 1; m < n; ++m)
+    if (n % m == 0 && std::max((xs.row(m - 1).transpose() - x).cwiseAbs().maxCoeff(),
+                               (vs.row(m - 1).transpose() - v).cwiseAbs().maxCoeff() / omega) <= tol) {
+      n = m;
+      break;
+    }
+  cx.resize(n, x.size());
+  cv.resize(n, x.size());
+  cx.row(0) = x.transpose();
+  cv.row(0) = v.transpose();
+  for (int k = 1; k < n; ++k) cx.row(k) = xs.row(k - 1), cv.row(k) = vs.row(k - 1);
+  return n;
+}
 }  // namespace
+
+bool shoot_cycle(const TimeIntegrator& ti, double omega, int n, double tol, const TimeIntegrationOptions& opt,
+                 Eigen::VectorXd& x, Eigen::VectorXd& v, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs, double& modulus) {
+  const Eigen::Index d = x.size();
+  Eigen::VectorXd S(2 * d), F(2 * d);
+  S << x, v;
+  Eigen::MatrixXd M;
+  bool converged = false;
+  for (int it = 0; it < 12 && !converged; ++it) {
+    chain(ti, omega, n, opt, S.head(d), S.tail(d), xs, vs, M);
+    F << xs.row(n - 1).transpose() - S.head(d), vs.row(n - 1).transpose() - S.tail(d);
+    converged = std::max(F.head(d).cwiseAbs().maxCoeff(), F.tail(d).cwiseAbs().maxCoeff() / omega) <= 1e-2 * tol;
+    if (!converged) S -= (M - Eigen::MatrixXd::Identity(2 * d, 2 * d)).partialPivLu().solve(F);
+    if (!S.allFinite()) return false;
+  }
+  if (!converged) return false;
+  chain(ti, omega, n, opt, S.head(d), S.tail(d), xs, vs, M);   // the orbit and its monodromy at the fixed point
+  modulus = M.eigenvalues().cwiseAbs().maxCoeff();
+  x = S.head(d), v = S.tail(d);
+  return true;
+}
 
 int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eigen::VectorXd& x_end,
                      const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
@@ -155,36 +195,26 @@ int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eige
     const double r = (recorded(rows - 1) - recorded(rows - 1 - m)).cwiseAbs().maxCoeff();
     if (r < best) best = r, n = m;
   }
-  // Newton shooting on the n-period map from the last state, in (x, v).
-  Eigen::VectorXd S(2 * d), F(2 * d);
-  S << x_end, v_end;
-  Eigen::MatrixXd xs, vs, M;
-  bool converged = false;
-  for (int it = 0; it < 12 && !converged; ++it) {
-    chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);
-    F << xs.row(n - 1).transpose() - S.head(d), vs.row(n - 1).transpose() - S.tail(d);
-    converged = state(F.head(d), F.tail(d)).cwiseAbs().maxCoeff() <= 1e-2 * tol;
-    if (!converged) S -= (M - Eigen::MatrixXd::Identity(2 * d, 2 * d)).partialPivLu().solve(F);
-    if (!S.allFinite()) return 0;
-  }
-  if (!converged) return 0;
-  chain(ti, w, n, opt, S.head(d), S.tail(d), xs, vs, M);   // the monodromy at the fixed point
-  if (M.eigenvalues().cwiseAbs().maxCoeff() >= 1.0) return 0;   // not attracting
-  const Eigen::VectorXd Sstar = state(S.head(d), S.tail(d));
+  // Newton shooting on the n-period map from the last state.
+  Eigen::VectorXd x = x_end, v = v_end;
+  Eigen::MatrixXd xs, vs;
+  double modulus = INFINITY;
+  if (!shoot_cycle(ti, w, n, tol, opt, x, v, xs, vs, modulus) || modulus >= 1.0) return 0;   // none, or not attracting
+  const Eigen::VectorXd Sstar = state(x, v);
   if (!((state(x_end, v_end) - Sstar).cwiseAbs().maxCoeff() < (recorded(0) - Sstar).cwiseAbs().maxCoeff()))
     return 0;   // the integration is not approaching it
-  // The least period: the first m dividing n after which the cycle repeats.
-  for (int m = 1; m < n; ++m)
-    if (n % m == 0 && (state(xs.row(m - 1).transpose(), vs.row(m - 1).transpose()) - Sstar).cwiseAbs().maxCoeff() <= tol) {
-      n = m;
-      break;
-    }
-  cx.resize(n, d);
-  cv.resize(n, d);
-  cx.row(0) = S.head(d).transpose();
-  cv.row(0) = S.tail(d).transpose();
-  for (int k = 1; k < n; ++k) cx.row(k) = xs.row(k - 1), cv.row(k) = vs.row(k - 1);
-  return n;
+  return cycle_states(x, v, xs, vs, n, w, tol, cx, cv);
+}
+
+bool polish_periodic_point(const TimeIntegrator& ti, DiagramPoint& p, double tol, const TimeIntegrationOptions& opt) {
+  if (p.motion != Motion::periodic || p.n < 1 || p.x.rows() < 1) return false;
+  Eigen::VectorXd x = p.x.bottomRows(1).transpose(), v = p.v.bottomRows(1).transpose();
+  Eigen::MatrixXd xs, vs, cx, cv;
+  double modulus = INFINITY;
+  if (!shoot_cycle(ti, p.omega, p.n, tol, opt, x, v, xs, vs, modulus) || modulus >= 1.0) return false;
+  if (cycle_states(x, v, xs, vs, p.n, p.omega, tol, cx, cv) != p.n) return false;   // a cycle of lower period
+  p.x = cx, p.v = cv;
+  return true;
 }
 
 namespace {

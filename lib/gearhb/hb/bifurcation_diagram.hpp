@@ -160,6 +160,26 @@ int attracting_cycle(const TimeIntegrator& ti, const DiagramPoint& p, const Eige
                      const Eigen::VectorXd& v_end, int max_period, double tol, const TimeIntegrationOptions& opt,
                      Eigen::MatrixXd& cx, Eigen::MatrixXd& cv);
 
+// Newton shooting on the n-period map (TimeIntegrator::period_map with its monodromy, n times)
+// from (x, v) at phase 0, at most 12 steps, until the state repeats after n periods within
+// 1e-2 tol in (x, v / omega): true if it converged, (x, v) then the fixed point, the rows of xs,
+// vs the states after 1..n periods from it and `modulus` the largest multiplier modulus of its
+// n-period monodromy. attracting_cycle's shooting.
+bool shoot_cycle(const TimeIntegrator& ti, double omega, int n, double tol, const TimeIntegrationOptions& opt,
+                 Eigen::VectorXd& x, Eigen::VectorXd& v, Eigen::MatrixXd& xs, Eigen::MatrixXd& vs, double& modulus);
+
+// A periodic point of a diagram (motion periodic, period n) as the orbit it approaches rather
+// than its last recorded states: the classifier takes a speed as period n once its Poincare
+// states repeat within tol, but where a multiplier lies near the unit circle (beside a period
+// doubling or a fold) the transient decays slowly and the recorded states may still lie many tol
+// from the orbit (gearhb_frc's examples/clearance_oscillator.json at omega 0.337519, just past
+// its period doubling: tests/unit/test_polish_periodic_point.cpp). shoot_cycle from its
+// last recorded state; where it converges to a cycle that attracts (every multiplier inside the
+// unit circle) and whose least period is n, p.x and p.v become that cycle's n states (the first
+// the fixed point near the last recorded state) and the call returns true; otherwise p is left
+// as it was (false). tol: period_tol x x_scale, as the classifier's.
+bool polish_periodic_point(const TimeIntegrator& ti, DiagramPoint& p, double tol, const TimeIntegrationOptions& opt);
+
 // The largest Lyapunov exponent per forcing period of the orbit through (x0, v0) at phase 0:
 // (1 / periods) sum_k ln |Phi_k w_k| with w_k the tangent vector renormalised every period (in
 // (x, v / omega)), Phi_k the period map's monodromy, applied to w_k alone

@@ -52,17 +52,14 @@ Eigen::VectorXd orbit_point(OrbitBranch& r, const HarmonicBalance& hb, const Eig
   r.newton_iterations = nr.iterations;
   if (!nr.converged) throw Failed("Newton from the orbit's Fourier coefficients did not converge: " + nr.message);
   r.distance = (histories(model, X, N) - x).cwiseAbs().maxCoeff();
-  if (has_exact_flow(model)) {
-    // HB's own error on the same samples: against its orbit corrected by shooting on the exact flow
-    FloquetOptions fo = opt.floquet;
-    fo.correct_orbit = true;
-    const FloquetResult fr = floquet_of_hb_orbit(model, X, Omega, r.curve.scaling.x[0], fo);
-    if (!fr.corrected) throw Failed("the shooting correction of the HB orbit did not converge (no error bound)");
-    const Eigen::MatrixXd exact = TimeIntegrator(hb).sample(fr.x0, fr.v0, r.omega, 0, p, to);
-    r.bound = (histories(model, X, N) - exact).cwiseAbs().maxCoeff() + obo.integration_tolerance * r.swing;
-  } else {
-    r.bound = obo.fallback_tolerance * r.swing;
-  }
+  // HB's own error on the same samples: against its orbit corrected by shooting (on the exact flow,
+  // or without one on GSL's period map)
+  FloquetOptions fo = opt.floquet;
+  fo.correct_orbit = true;
+  const FloquetResult fr = floquet_of_hb_orbit(model, X, Omega, r.curve.scaling.x[0], fo);
+  if (!fr.corrected) throw Failed("the shooting correction of the HB orbit did not converge (no error bound)");
+  const Eigen::MatrixXd exact = TimeIntegrator(hb).sample(fr.x0, fr.v0, r.omega, 0, p, to);
+  r.bound = (histories(model, X, N) - exact).cwiseAbs().maxCoeff() + obo.integration_tolerance * r.swing;
   if (!(r.distance <= r.bound)) {
     std::ostringstream os;
     os << "the HB orbit is " << r.distance << " from the integrated one, beyond its bound " << r.bound
@@ -158,11 +155,6 @@ void continue_both_ways(OrbitBranch& r, const Eigen::VectorXd& X, const SweepOpt
 
 }  // namespace
 
-bool has_exact_flow(const HarmonicBalance& hb) {
-  return std::none_of(hb.contacts().begin(), hb.contacts().end(),
-                      [](const UnilateralContact& ct) { return bool(ct.stiffness_profile); });
-}
-
 OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                               double omega, int period, const SweepOptions& opt, const OrbitBranchOptions& obo) {
   OrbitBranch r;
@@ -221,11 +213,9 @@ BranchDistance distance_to_branch(const BranchView& b, const Eigen::MatrixXd& xs
     double dist = INFINITY;
     for (int j = 0; j < std::min<int>(n, int(xs.rows())); ++j)
       dist = std::min(dist, (xs.row(j).transpose() - xh).cwiseAbs().maxCoeff());
-    double bound = 0.0;   // HB's error at phase 0: against its orbit corrected on the exact flow
-    if (has_exact_flow(*b.model)) {
-      const FloquetResult fr = floquet_of_hb_orbit(*b.model, X, Omega, s.x[0]);
-      bound = fr.corrected ? (fr.x0 - xh).cwiseAbs().maxCoeff() : INFINITY;
-    }
+    // HB's error at phase 0: against its orbit corrected by shooting (on the exact flow, or on GSL's)
+    const FloquetResult fr = floquet_of_hb_orbit(*b.model, X, Omega, s.x[0]);
+    const double bound = fr.corrected ? (fr.x0 - xh).cwiseAbs().maxCoeff() : INFINITY;
     if (std::isfinite(best.distance) && dist - bound >= best.distance - best.bound) continue;
     best.distance = dist;
     best.bound = bound;

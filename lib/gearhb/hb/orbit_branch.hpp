@@ -11,12 +11,12 @@
 //     that model at the fixed omega from them;
 //  3. the check of the HB orbit against the integrated one: max over the p N samples and the DOFs
 //     of |x_HB(t) - x(t)| must not exceed HB's own error there, max |x_HB(t) - x_exact(t)| with
-//     x_exact its orbit corrected by shooting on the exact flow (floquet_of_hb_orbit; integrated
-//     from the corrected state and sampled alike: FloquetResult::orbit_error is the same on the
-//     shooting's coarser nodes and may miss the crest), plus `integration_tolerance` x the
-//     orbit's largest swing (the integration's own error): i.e. the HB point is the integrated
-//     orbit up to HB's truncation. A model without an exact flow (a contact with a stiffness
-//     profile) has no such bound: then `fallback_tolerance` x the swing;
+//     x_exact its orbit corrected by shooting (floquet_of_hb_orbit: on the exact flow, or for a
+//     model without one, a contact with a stiffness profile, on GSL's rk8pd period map at relative
+//     tolerance 1e-12; integrated from the corrected state and sampled alike:
+//     FloquetResult::orbit_error is the same on the shooting's coarser nodes and may miss the
+//     crest), plus `integration_tolerance` x the orbit's largest swing (the integration's own
+//     error): i.e. the HB point is the integrated orbit up to HB's truncation;
 //  4. the branch continued both ways in omega from that point with the sweep's arc-length
 //     continuation (SweepOptions::continuation, its contact regime), first along the tangent
 //     there, each way until it leaves [omega_min, omega_max], comes back to its start (an isola:
@@ -38,8 +38,10 @@
 // max |x_HB(0) - x_j| over the DOFs, the smallest over the orbit's n Poincare states x_j (an
 // orbit of period n may be met at any of its n phases), against HB's own error at phase 0 there,
 // max |x_HB(0) - x_exact(0)| (x_exact: that point's orbit corrected by shooting,
-// floquet_of_hb_orbit; 0 without an exact flow, infinite where the shooting fails) plus
-// `tolerance`. A branch that does not reach omega does not hold it.
+// floquet_of_hb_orbit: on the exact flow, or for a model without one (a contact with a stiffness
+// profile) on GSL's rk8pd period map at relative tolerance 1e-12, floquet_of_hb_shooting_gsl, whose
+// own error lies far below `tolerance`; infinite where the shooting fails) plus `tolerance`. A
+// branch that does not reach omega does not hold it.
 #include <memory>
 #include <string>
 #include <vector>
@@ -60,7 +62,6 @@ struct OrbitBranchOptions {
   NewtonOptions newton{1e-9, 30};      // step 2
   TimeIntegrationOptions integration;  // step 1 (x_scale: the typical displacement)
   double integration_tolerance = 1e-6; // step 3: the integration's share of the bound, x the swing
-  double fallback_tolerance = 0.02;    // step 3 without an exact flow, x the swing
 };
 
 struct OrbitBranch {
@@ -86,11 +87,6 @@ OrbitBranch branch_from_orbit(const HarmonicBalance& hb, const Eigen::VectorXd& 
 // frequency_response_table, bifurcation_table: its period, model and curve; no PD of the curve
 // starts it: `from` = npos, parent -1), `why` its line.
 PeriodDoubledBranch table_branch(const OrbitBranch& b);
-
-// True if hb's orbits have an exact piecewise-linear flow (no contact with a stiffness profile):
-// only then has an HB point an error bound at phase 0 (distance_to_branch), so that
-// off_every_branch can tell a diagram orbit on a branch from one off it.
-bool has_exact_flow(const HarmonicBalance& hb);
 
 // A branch a diagram orbit is compared with: the curve on its model (omegas / period).
 struct BranchView {
