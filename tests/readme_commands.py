@@ -11,6 +11,9 @@ with its exit status and time; fails listing the commands that did not exit 0. A
 shown again (the same text, in the same or another README) runs once, and one that a chapter's or
 program's console block runs (<!-- console: ... -->, the same program and arguments but --out and
 --quiet) is left to that block's test (readme.<name>.console runs it and fails on a non-zero exit).
+So is one that a CTest fixture runs (`--ran 'COMMAND' DIR` after the READMEs: the same program and
+arguments but --out and --quiet, into DIR); its key_numbers.json must be there (the fixture exited 0).
+A --ran command no README shows is not used.
 """
 import pathlib
 import re
@@ -74,8 +77,16 @@ def runnable(words):
 def main():
     build, out_root = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     failed, n, seen = [], 0, set()
-    by_console = console_runs(sys.argv[3:])
-    for readme in sys.argv[3:]:
+    readmes, by_fixture, rest = [], {}, sys.argv[3:]
+    while rest:
+        if rest[0] == "--ran" and len(rest) >= 3:
+            words = shlex.split(rest[1])
+            by_fixture[run_key(words[0], words[1:])] = pathlib.Path(rest[2])
+            rest = rest[3:]
+        else:
+            readmes.append(rest.pop(0))
+    by_console = console_runs(readmes)
+    for readme in readmes:
         for text in commands(pathlib.Path(readme)):
             words = shlex.split(text)
             if not runnable(words):
@@ -87,6 +98,14 @@ def main():
             seen.add(text)
             if run_key(words[0].split("/")[-1], words[1:]) in by_console:
                 print("skip (run by its console block's test): %s" % text)
+                continue
+            key = run_key(words[0].split("/")[-1], words[1:])
+            if key in by_fixture:
+                ran = by_fixture.pop(key)
+                ok = (ran / "key_numbers.json").is_file()
+                print("%s (run by a fixture into %s): %s" % ("skip" if ok else "FAIL", ran, text))
+                if not ok:
+                    failed.append("%s (%s): the fixture's run is missing (%s)" % (text, readme, ran / "key_numbers.json"))
                 continue
             n += 1
             exe = build / "bin" / words[0].split("/")[-1]

@@ -31,6 +31,13 @@ bare name from the last block that has it.
 
 The programs run in the repository's root folder, so a block may name an example file by
 its path there (`gearhb_gear programs/gearhb_gear/examples/thesis_pair.json --set plot=0`).
+
+    readme_console.py --check BUILD_DIR README.md ... --ran 'COMMAND' DIR [--ran 'COMMAND' DIR]...
+
+A block whose marker text is COMMAND is not run again: CTest ran exactly that command (with --quiet,
+which only silences the progress lines on stderr) into DIR as a fixture (a regression run,
+tests/CMakeLists.txt), its stdout in DIR.stdout; the block is checked against that run's stdout and
+key_numbers.json. A missing DIR.stdout or key_numbers.json fails the check.
 """
 import json
 import pathlib
@@ -50,10 +57,19 @@ def normalised(line):
     return DONE.sub("done in (time), data in (folder)", line.rstrip())
 
 
-def run(build, command, key_numbers):
-    """The program's stdout lines; its key numbers are appended to the list `key_numbers`."""
+def run(build, command, key_numbers, ran=None):
+    """The program's stdout lines; its key numbers are appended to the list `key_numbers`.
+    With `ran` (the folder a fixture ran exactly this command into), that run's."""
     args = shlex.split(command)
     program = args[0]
+    if ran is not None:
+        ran = pathlib.Path(ran)
+        stdout, keys = pathlib.Path(str(ran) + ".stdout"), ran / "key_numbers.json"
+        if not stdout.is_file() or not keys.is_file():
+            sys.exit("%s: the fixture's run is missing (%s, %s)" % (command, stdout, keys))
+        key_numbers.append({k: v["value"] for k, v in json.loads(keys.read_text()).items()})
+        return [DONE.sub(lambda m: m.group(0).split(", data in ")[0] + ", data in build/data/" + program, l)
+                for l in stdout.read_text().splitlines()]
     with tempfile.TemporaryDirectory() as tmp:
         out = pathlib.Path(tmp) / program
         p = subprocess.run([str(build / "bin" / program)] + args[1:] + ["--out", str(out)],
@@ -89,9 +105,18 @@ def fill_keys(text, key_numbers, readme, check):
 
 
 def main():
-    mode, build, readmes = sys.argv[1], pathlib.Path(sys.argv[2]).resolve(), sys.argv[3:]
+    mode, build, rest = sys.argv[1], pathlib.Path(sys.argv[2]).resolve(), sys.argv[3:]
     if mode not in ("--check", "--write"):
         sys.exit(__doc__)
+    readmes, ran = [], {}
+    while rest:
+        if rest[0] == "--ran" and len(rest) >= 3 and mode == "--check":
+            ran[rest[1]] = rest[2]
+            rest = rest[3:]
+        elif rest[0] == "--ran":
+            sys.exit(__doc__)
+        else:
+            readmes.append(rest.pop(0))
     failures = 0
     for readme in map(pathlib.Path, readmes):
         text = readme.read_text()
@@ -103,7 +128,7 @@ def main():
             continue
         pieces, last, key_numbers = [], 0, []
         for m in blocks:
-            lines = run(build, m.group(1), key_numbers)
+            lines = run(build, m.group(1), key_numbers, ran.get(m.group(1)))
             quoted = [l for l in m.group(2).splitlines() if not l.startswith("```")]
             if mode == "--check":
                 old, new = [normalised(l) for l in quoted], [normalised(l) for l in lines]
@@ -117,6 +142,9 @@ def main():
                        % (m.group(1), "\n".join(lines))]
             last = m.end()
         pieces.append(text[last:])
+        for command in set(ran) - {m.group(1) for m in blocks}:
+            failures += 1
+            print("%s: no console block runs '%s' (--ran)" % (readme, command))
         text, differ = fill_keys("".join(pieces), key_numbers, readme, mode == "--check")
         failures += differ
         if mode == "--write":

@@ -3,6 +3,7 @@
 its console lines of the period-2 (4) branches against its own table frc_1.csv.
 
   reported_stable_stretches.py GEARHB_GEAR MODEL OUT [--set key=value]...
+  reported_stable_stretches.py --ran OUT      (a run CTest made: its stdout in OUT.stdout)
 
 For every line "period-p branch k, ...: stable at a-b, ... rpm; largest stable K_v K, ...;
 stability unresolved (shooting correction failed) at c, d-e rpm":
@@ -71,8 +72,12 @@ def check_branch(rows, stable_at, kv, unresolved, name):
 
 
 def main(program, model, out, sets):
-    text = subprocess.run([program, model, "--out", out, "--set", "plot=0"] + sets, check=True, capture_output=True,
-                          text=True).stdout
+    if program == "--ran":   # the run's stdout and folder (a CTest fixture ran the command)
+        out = model
+        text = Path(out + ".stdout").read_text()
+    else:
+        text = subprocess.run([program, model, "--out", out, "--set", "plot=0"] + sets, check=True,
+                              capture_output=True, text=True).stdout
     rows = list(csv.DictReader(open(Path(out) / "frc_1.csv")))
     first = re.search(r"T1 = (\S+) N m", text).group(1)   # frc_1.csv: the file's first torque
     errors, lines, runs = [], 0, 0
@@ -99,4 +104,4 @@ def main(program, model, out, sets):
 
 
 if __name__ == "__main__":
-    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4:]))
+    sys.exit(main(sys.argv[1], sys.argv[2], sys.argv[3] if len(sys.argv) > 3 else None, sys.argv[4:]))
