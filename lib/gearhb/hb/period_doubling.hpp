@@ -122,8 +122,9 @@ struct PeriodDoublingOptions {
   // other step patterns); that check now starts from the integrated orbit.
   int fast_iterations = 4;
   // ContinuationOptions::curvature_predictor for the branch (on by default): ex. 03's branch with
-  // fast_iterations 4 takes 34 points and about 195 ms with stability (the tangent predictor: 33
-  // points, 210 ms; fast_iterations 3 and the tangent predictor: 87 points, 345 ms), with the same
+  // fast_iterations 4 takes 34 points and then took about 195 ms with stability (the tangent
+  // predictor: 33 points, 210 ms; fast_iterations 3 and the tangent predictor: 87 points, 345 ms;
+  // the first today about 120 ms, bench_nlvib_ex03.cpp BM_Ex03Period2Branch), with the same
   // ends, stable stretches and bifurcations (PeriodDoubling.Ex03BranchWithTheCurvaturePredictor...).
   bool curvature_predictor = true;
 };
