@@ -154,34 +154,24 @@ void HarmonicBalance::evaluate_gap_scaled(const Eigen::VectorXd& X, double omega
 }
 
 Eigen::MatrixXd HarmonicBalance::assemble_jacobian(double omega, const std::vector<Eigen::MatrixXd>& G) const {
-  const int n = n_, m = 2 * H_ + 1;
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(size(), size());
-  J.block(0, 0, n, n) = sys_.K;
-  for (int k = 1; k <= H_; ++k) J.block(index(2 * k - 1, 0), index(2 * k - 1, 0), 2 * n, 2 * n) = harmonic_block(k, omega);
-  for (std::size_t i = 0; i < contacts_.size(); ++i) {
-    const Eigen::MatrixXd nn = contacts_[i].normal * contacts_[i].normal.transpose();
-    for (int a = 0; a < m; ++a)
-      for (int b = 0; b < m; ++b)
-        if (G[i](a, b) != 0.0) J.block(a * n, b * n, n, n) += G[i](a, b) * nn;
-  }
-  return J;
+  std::vector<int> every(std::size_t(2 * H_ + 1));
+  for (std::size_t a = 0; a < every.size(); ++a) every[a] = int(a);
+  return assemble_block(omega, G, every);
 }
 
-Eigen::MatrixXd HarmonicBalance::jacobian_block(const Eigen::VectorXd& X, double omega, const std::vector<int>& basis) const {
+Eigen::MatrixXd HarmonicBalance::assemble_block(double omega, const std::vector<Eigen::MatrixXd>& G,
+                                                const std::vector<int>& basis) const {
   const int n = n_;
-  Eigen::VectorXd R = Eigen::VectorXd::Zero(size());
-  std::vector<Eigen::MatrixXd> G;
-  contact_terms(X, R, true, &G);
   std::vector<Eigen::MatrixXd> blocks(std::size_t(H_) + 1);   // the harmonic blocks used, built once
   const Eigen::Index nb = Eigen::Index(basis.size());
   Eigen::MatrixXd Jb = Eigen::MatrixXd::Zero(nb * n, nb * n);
-  // as assemble_jacobian: the linear block of each harmonic, then each contact's G (x) n n'
+  auto local = [n](int c) { return c == 0 || c % 2 == 1 ? 0 : n; };   // cos (or static) rows first, then sin
+  // the linear block of each harmonic, then each contact's G (x) n n'
   for (Eigen::Index i = 0; i < nb; ++i)
     for (Eigen::Index j = 0; j < nb; ++j) {
       const int a = basis[std::size_t(i)], b = basis[std::size_t(j)], k = (a + 1) / 2;
       if ((b + 1) / 2 != k) continue;
       if (blocks[std::size_t(k)].size() == 0) blocks[std::size_t(k)] = harmonic_block(k, omega);
-      auto local = [n](int c) { return c == 0 || c % 2 == 1 ? 0 : n; };   // cos (or static) rows first, then sin
       Jb.block(i * n, j * n, n, n) = blocks[std::size_t(k)].block(local(a), local(b), n, n);
     }
   for (std::size_t c = 0; c < contacts_.size(); ++c) {
@@ -193,6 +183,13 @@ Eigen::MatrixXd HarmonicBalance::jacobian_block(const Eigen::VectorXd& X, double
       }
   }
   return Jb;
+}
+
+Eigen::MatrixXd HarmonicBalance::jacobian_block(const Eigen::VectorXd& X, double omega, const std::vector<int>& basis) const {
+  Eigen::VectorXd R = Eigen::VectorXd::Zero(size());
+  std::vector<Eigen::MatrixXd> G;
+  contact_terms(X, R, true, &G);
+  return assemble_block(omega, G, basis);
 }
 
 void HarmonicBalance::evaluate(const Eigen::VectorXd& X, double omega, Eigen::VectorXd& R,

@@ -148,6 +148,8 @@ class HarmonicBalance : public ParametricProblem {
                      double gap_scale = 1.0, Eigen::VectorXd* dRdscale = nullptr) const;
   Eigen::MatrixXd harmonic_block(int k, double omega) const;
   Eigen::MatrixXd assemble_jacobian(double omega, const std::vector<Eigen::MatrixXd>& G) const;
+  // J's rows and columns of the coefficients `basis` (every DOF of each) from the contacts' G.
+  Eigen::MatrixXd assemble_block(double omega, const std::vector<Eigen::MatrixXd>& G, const std::vector<int>& basis) const;
 };
 
 }  // namespace gearhb
