@@ -71,6 +71,23 @@ TEST(Fourier, ProductMatrixEqualsBruteForceGalerkin) {
   EXPECT_LT((G - ref).cwiseAbs().maxCoeff(), 1e-13);
 }
 
+// The symmetry CondensedLinearization (harmonic_balance.cpp, add_row) reads a product matrix's
+// rows from its columns by: G(a, b) = G(b, a) for a, b >= 1 and G(a, 0) = 2 G(0, a), bit for bit
+// (the same sums, in the same order, of the same moments; doubling exact in binary).
+TEST(Fourier, ProductMatrixRowsFromColumns) {
+  const int H = 7, N = 64;
+  gearhb::Aft aft(H, N);
+  std::vector<double> s(N);
+  for (int j = 0; j < N; ++j) s[j] = std::max(0.0, 0.3 + std::sin(2.0 * aft.theta(j) + 0.7)) * (1.0 + 0.1 * j);
+  Eigen::MatrixXd G(2 * H + 1, 2 * H + 1);
+  aft.product_matrix(s.data(), G);
+  for (int a = 0; a <= 2 * H; ++a)
+    for (int b = 0; b <= 2 * H; ++b) {
+      const double from_column = a == 0 ? (b == 0 ? G(0, 0) : 0.5 * G(b, 0)) : (b == 0 ? G(a, 0) : G(b, a));
+      EXPECT_EQ(G(a, b), from_column) << "a = " << a << ", b = " << b;
+    }
+}
+
 TEST(Fourier, HarmonicAmplitudes) {
   std::vector<double> x(32);
   for (int j = 0; j < 32; ++j) {

@@ -105,6 +105,9 @@ void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R
   const int n = n_, m = 2 * H_ + 1, N = aft_.samples();
   jacobian = jacobian || dRdscale;
   for (const auto& ct : contacts_) {
+    // the contact's product matrix: made in place where G takes it (a copy of m x m per contact
+    // and linearization was 3 % of ex. 03's period-2 branch), else in the scratch G_
+    Eigen::MatrixXd& Gk = G ? G->emplace_back(m, m) : G_;
     // u(theta) = g(theta) + n' x(theta): coefficients, then samples.
     for (int a = 0; a < m; ++a) uc_[a] = ct.normal.dot(X.segment(a * n, n)) + gap_scale * ct.gap_harmonics[a];
     uc_[0] += ct.gap;
@@ -117,9 +120,9 @@ void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R
                                    mc_.data(), ms_.data());
       else
         indicator_moments(contact_intervals(uc_, us_), 2 * H_, mc_.data(), ms_.data());
-      aft_.product_matrix_from_moments(mc_.data(), ms_.data(), G_);
-      G_ *= ct.kc;
-      fcoef_.noalias() = G_ * uc_;
+      aft_.product_matrix_from_moments(mc_.data(), ms_.data(), Gk);
+      Gk *= ct.kc;
+      fcoef_.noalias() = Gk * uc_;
     } else {
       for (int j = 0; j < N; ++j) {
         const double k = stiffness_at(ct, 2.0 * M_PI * j / N);
@@ -127,14 +130,13 @@ void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R
         ss_[j] = contact_stiffness(k, us_[j]);
       }
       aft_.to_frequency(fs_.data(), fcoef_.data());
-      if (jacobian) aft_.product_matrix(ss_.data(), G_);
+      if (jacobian) aft_.product_matrix(ss_.data(), Gk);
     }
     for (int a = 0; a < m; ++a) R.segment(a * n, n) += fcoef_[a] * ct.normal;
     if (dRdscale) {   // dF/dscale = G g_h (exact: the boundary terms vanish, u = 0 there)
-      const Eigen::VectorXd dF = G_ * ct.gap_harmonics;
+      const Eigen::VectorXd dF = Gk * ct.gap_harmonics;
       for (int a = 0; a < m; ++a) dRdscale->segment(a * n, n) += dF[a] * ct.normal;
     }
-    if (G) G->push_back(G_);
   }
 }
 
@@ -270,9 +272,6 @@ class CondensedLinearization : public Linearization {
       }
     Zb_ = solve_L(b_);
     UZb_ = project(Zb_);
-    // the product matrices by rows (the rows of I + S Gc and of the border are combinations of
-    // their rows: row-major storage keeps every such row one contiguous run of memory)
-    for (const auto& g : G_) Grows_.emplace_back(g);
     // I + S Gc, S(q1, q2) = n_i1' (w_q2 at basis a1): nonzero for q1, q2 of one harmonic
     const int q = int(coords_.size());
     std::vector<std::vector<int>> in_block(L_.size());
@@ -282,7 +281,7 @@ class CondensedLinearization : public Linearization {
       for (const int q2 : in_block[std::size_t(coords_[q1].block)]) {
         const Coord &c1 = coords_[q1], &c2 = coords_[q2];
         const double S = normals_.col(c1.contact).dot(w_[q2].segment(c1.local, n));
-        SG_.row(q1).segment(c2.slot * m, m) += S * Grows_[c2.contact].row(c2.basis);
+        add_row(SG_.row(q1).segment(c2.slot * m, m), S, G_[std::size_t(c2.contact)], c2.basis);
       }
   }
 
@@ -319,7 +318,6 @@ class CondensedLinearization : public Linearization {
   Eigen::MatrixXd normals_;
   std::shared_ptr<const std::vector<Eigen::MatrixXd>> Gp_;   // shared with the dense fallback
   const std::vector<Eigen::MatrixXd>& G_;
-  std::vector<RowMatrix> Grows_;   // G_ stored by rows
   Eigen::VectorXd b_, Zb_, UZb_;
   Scaling s_;
   int m_;                       // 2H+1 coefficients per coordinate
@@ -332,6 +330,24 @@ class CondensedLinearization : public Linearization {
   // same row (own_); or one of a linearization before, given to precondition (given_).
   mutable std::shared_ptr<const ReducedFactor> own_;
   std::shared_ptr<const ReducedFactor> given_;
+  // dst += coef G.row(a), read from G's column a (one contiguous run of memory; a row of the
+  // column-major G strides across it): a product matrix (Aft::product_matrix_from_moments) is
+  // symmetric but in its first row and column, G(a, 0) = 2 G(0, a) (the mean's coefficient is half
+  // a cosine's), so row a >= 1 is column a with its first entry G(a, 0), and row 0 is column 0
+  // halved but G(0, 0); halving is exact in binary, so these are the same numbers as G.row(a),
+  // bit for bit (tests: ProductMatrixRowsFromColumns). Before, the rows came from a row-major copy
+  // of every G per linearization: 2 % of ex. 03's period-2 branch.
+  template <typename Row>
+  static void add_row(Row&& dst, double coef, const Eigen::MatrixXd& g, int a) {
+    const Eigen::Index m = g.rows();
+    if (a == 0) {
+      dst[0] += coef * g(0, 0);
+      dst.tail(m - 1) += coef * (0.5 * g.col(0).tail(m - 1)).transpose();
+    } else {
+      dst[0] += coef * g(a, 0);
+      dst.tail(m - 1) += coef * g.col(a).tail(m - 1).transpose();
+    }
+  }
   bool factored_for(const Eigen::VectorXd& row) const {
     return own_ && row.size() == own_->row.size() && row == own_->row;
   }
@@ -345,7 +361,7 @@ class CondensedLinearization : public Linearization {
     for (Eigen::Index j = 0; j < q; ++j) {   // -c' W Gc
       const Coord& cj = coords_[j];
       const double wc = w_[j].dot(c.segment(offset_[cj.block], w_[j].size()));
-      A.row(q).segment(cj.slot * m, m) -= wc * Grows_[cj.contact].row(cj.basis);
+      add_row(A.row(q).segment(cj.slot * m, m), -wc, G_[std::size_t(cj.contact)], cj.basis);
     }
     A(q, q) = d - c.dot(Zb_);
     return A;
