@@ -425,10 +425,9 @@ struct HbVariationalEquation {
     const auto& sys = hb.system();
     const Eigen::MatrixXd Minv = sys.M.inverse();
     // penetration coefficients of every contact on the HB orbit, and its switch times
-    const Aft aft(hb.harmonics());
     for (std::size_t i = 0; i < hb.contacts().size(); ++i) {
       Eigen::VectorXd uc = hb.penetration(X, i);
-      for (const auto& [a, b] : contact_intervals(uc, aft.to_time(uc)))
+      for (const auto& [a, b] : hb.contact_intervals(X, i))
         if (b - a < 2.0 * M_PI)
           for (double th : {a, b}) breakpoints.push_back(std::fmod(th, 2.0 * M_PI) / omega);
       u.push_back(std::move(uc));
@@ -478,13 +477,16 @@ Eigen::MatrixXd variational_solution(const HarmonicBalance& hb, const Eigen::Vec
 namespace {
 
 // x of the HB orbit at the phases 2 pi j / M (columns): each DOF's Fourier series
-// (HarmonicBalance::project, core trig_series).
+// (HarmonicBalance::project) sampled by the FFT (core Aft) on M r phases, r the least integer
+// with M r >= 2H + 2 (what an Aft needs), every r-th kept. Before, a sum per sample (core
+// trig_series): 3 % of ex. 03's period-2 branch (M = 322, H = 80).
 Eigen::MatrixXd hb_orbit_samples(const HarmonicBalance& hb, const Eigen::VectorXd& X, int M) {
-  const int n = hb.dofs();
+  const int n = hb.dofs(), H = hb.harmonics(), r = (2 * H + 2 + M - 1) / M;
+  const Aft aft(H, M * r);
   Eigen::MatrixXd xhb(n, M);
   for (int i = 0; i < n; ++i) {
-    const Eigen::VectorXd c = hb.project(X, Eigen::VectorXd::Unit(n, i));
-    for (int j = 0; j < M; ++j) xhb(i, j) = trig_series(c, 2.0 * M_PI * j / M);
+    const Eigen::VectorXd x = aft.to_time(hb.project(X, Eigen::VectorXd::Unit(n, i)));
+    for (int j = 0; j < M; ++j) xhb(i, j) = x[Eigen::Index(j) * r];
   }
   return xhb;
 }
@@ -575,10 +577,8 @@ std::vector<double> shooting_nodes(const HarmonicBalance& hb, const Eigen::Vecto
   const double T = 2.0 * M_PI / omega;
   std::vector<double> nodes;
   for (int j = 0; j < M; ++j) nodes.push_back(T * j / M);
-  Aft aft(H);
   for (std::size_t c = 0; c < hb.contacts().size(); ++c) {
-    const Eigen::VectorXd uc = hb.penetration(X, c);
-    const auto I = contact_intervals(uc, aft.to_time(uc));
+    const auto I = hb.contact_intervals(X, c);
     for (std::size_t i = 0; i < I.size(); ++i) {
       const double a = I[i].first, b = I[i].second;
       if (b - a < 4.0 * M_PI / M) nodes.push_back(std::fmod(0.5 * (a + b), 2.0 * M_PI) / omega);

@@ -116,10 +116,10 @@ void HarmonicBalance::contact_terms(const Eigen::VectorXd& X, Eigen::VectorXd& R
       // the moments of the indicator of the contact intervals, weighted by the
       // stiffness profile if any (pieces of at most one sample spacing)
       if (ct.stiffness_profile)
-        weighted_indicator_moments(contact_intervals(uc_, us_), ct.stiffness_profile, 2 * H_, 2.0 * M_PI / N,
+        weighted_indicator_moments(gearhb::contact_intervals(uc_, us_), ct.stiffness_profile, 2 * H_, 2.0 * M_PI / N,
                                    mc_.data(), ms_.data());
       else
-        indicator_moments(contact_intervals(uc_, us_), 2 * H_, mc_.data(), ms_.data());
+        indicator_moments(gearhb::contact_intervals(uc_, us_), 2 * H_, mc_.data(), ms_.data());
       aft_.product_matrix_from_moments(mc_.data(), ms_.data(), Gk);
       Gk *= ct.kc;
       fcoef_.noalias() = Gk * uc_;
@@ -536,6 +536,12 @@ Eigen::VectorXd HarmonicBalance::penetration(const Eigen::VectorXd& X, std::size
   Eigen::VectorXd u = project(X, ct.normal) + ct.gap_harmonics;
   u[0] += ct.gap;
   return u;
+}
+
+std::vector<std::pair<double, double>> HarmonicBalance::contact_intervals(const Eigen::VectorXd& X,
+                                                                          std::size_t i) const {
+  const Eigen::VectorXd u = penetration(X, i);
+  return gearhb::contact_intervals(u, aft_.to_time(u));
 }
 
 Eigen::VectorXd HarmonicBalance::linear_solution(double omega, bool closed) const {

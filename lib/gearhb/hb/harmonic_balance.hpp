@@ -101,6 +101,10 @@ class HarmonicBalance : public ParametricProblem {
   Eigen::VectorXd project(const Eigen::VectorXd& X, const Eigen::VectorXd& q) const;
   // Coefficients (2H+1) of the penetration u = g(theta) + n'x of contact i (contact where u > 0).
   Eigen::VectorXd penetration(const Eigen::VectorXd& X, std::size_t i) const;
+  // The contact intervals of contact i on the orbit X (contact_intervals, its roots seeded on this
+  // model's time samples, as the residual's): the model's FFT plans, where building an Aft per
+  // call planned two FFTs each time (shooting_nodes: 2 % of ex. 03's period-2 branch).
+  std::vector<std::pair<double, double>> contact_intervals(const Eigen::VectorXd& X, std::size_t i) const;
 
   // Solution with every contact removed (open contact): static + first harmonic,
   // exact for the linear system. A natural first guess for Newton. If K cannot
