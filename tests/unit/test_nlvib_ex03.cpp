@@ -66,12 +66,21 @@ TEST(NlvibEx03, DefaultSamplesPassTheGrazingFoldForEveryH) {
     EXPECT_EQ(count(c, BifurcationType::neimark_sacker), 2) << "H = " << H;
     EXPECT_NEAR(located(c, BifurcationType::period_doubling, kPeriodDoubling[1]), kPeriodDoubling[1], 1e-9) << H;
     for (double ns : kNeimarkSacker) EXPECT_NEAR(located(c, BifurcationType::neimark_sacker, ns), ns, 1e-9) << H;
-    // H >= 21 resolves the resonance fold and the period doubling 4.1e-5 beside it, with
-    // every located multiplier on the unit circle (measured within 5.1e-7 of 1).
+    // H >= 21 resolves the resonance fold and the period doubling 4.1e-5 beside it, with every
+    // located multiplier of a smooth crossing on the unit circle (measured within 5.1e-7 of 1).
+    // Not the grazing fold's: where the orbit grazes, the exact orbit's multiplier moves with the
+    // square root of the distance along the branch (the 3/2-power term of a continuous
+    // piecewise-linear flow's map near grazing: di Bernardo et al., Piecewise-smooth Dynamical
+    // Systems, 2008, ch. 7), so the located point, within 1e-9 of the chord of the crossing,
+    // carries |mu| - 1 of the order of sqrt(1e-9) of the multiplier's change along the chord,
+    // whatever the bracket's last trial happened to be (5.1e-7 at H = 21 before the corrector's
+    // early stop moved the points at the rounding level, 1.7e-6 after); its omega is checked
+    // against the exact flow above.
     if (H < 21) continue;
     EXPECT_NEAR(located(c, BifurcationType::fold, kResonanceFold), kResonanceFold, 1e-6) << "H = " << H;
     EXPECT_NEAR(located(c, BifurcationType::period_doubling, kPeriodDoubling[0]), kPeriodDoubling[0], 1e-9) << H;
-    for (const auto& b : c.bifurcations) EXPECT_NEAR(std::abs(b.multiplier), 1.0, 1e-6) << to_string(b.type);
+    for (const auto& b : c.bifurcations)
+      if (std::fabs(b.omega - kGrazingFold) > 1e-6) EXPECT_NEAR(std::abs(b.multiplier), 1.0, 1e-6) << to_string(b.type);
   }
 }
 
