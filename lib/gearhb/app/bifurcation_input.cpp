@@ -396,13 +396,16 @@ std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const Bif
   return off;
 }
 
-void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
-                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
-                            const std::string& suffix) {
+std::vector<DiagramPoint> diagram_off_branch_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd,
+                                                    const BifurcationDiagram& d, double period_tol) {
   const double xs = c.scaling.x.cwiseAbs().maxCoeff();   // diagram_of_bands' x_scale
+  return off_branch_orbits(hb, d, branch_views(hb, c, pd), period_tol, xs);
+}
+
+void off_branch_key_numbers(KeyNumbers& key, const std::vector<DiagramPoint>& off, const std::string& suffix) {
   double off1 = 0.0, off2 = 0.0;
-  for (const DiagramPoint& p : off_branch_orbits(hb, d, branch_views(hb, c, pd), period_tol, xs))
-    (p.n == 1 ? off1 : off2) += p.n <= 2 ? 1.0 : 0.0;
+  for (const DiagramPoint& p : off) (p.n == 1 ? off1 : off2) += p.n <= 2 ? 1.0 : 0.0;
   key.add("diagram_off_branch_period1" + suffix, off1, "-");
   key.add("diagram_off_branch_period2" + suffix, off2, "-");
 }

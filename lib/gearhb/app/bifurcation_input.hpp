@@ -217,14 +217,20 @@ std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyC
 // largest DOF scale).
 std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const BifurcationDiagram& d,
                                             const std::vector<BranchView>& views, double period_tol, double x_scale);
+// The periodic points of d that lie on none of the branches of a run (the curve c of hb and each
+// branch of pd with points: branch_views), by off_branch_orbits with tol = period_tol x the curve's
+// largest DOF scale (diagram_of_bands' x_scale): found and polished once per run, for
+// off_branch_key_numbers and for the branches through them (app/orbit_branches.hpp
+// orbit_branches_of_diagram).
+std::vector<DiagramPoint> diagram_off_branch_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd,
+                                                    const BifurcationDiagram& d, double period_tol);
 // Key numbers diagram_off_branch_period1<suffix>, diagram_off_branch_period2<suffix>: the speeds
-// (both sweeps) of d whose orbit of period 1 (2) lies on none of the HB branches of its period
-// (the curve c of hb; the period-2 branches of pd; off_branch_orbits, polished) with the diagram's
-// period_tol: an HB branch the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig.
-// 41's, hb/orbit_branch.hpp branch_from_orbit).
-void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
-                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
-                            const std::string& suffix);
+// (both sweeps) of the diagram whose orbit of period 1 (2) lies on none of the HB branches of its
+// period (`off`: diagram_off_branch_orbits, polished) with the diagram's period_tol: an HB branch
+// the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig. 41's, hb/orbit_branch.hpp
+// branch_from_orbit).
+void off_branch_key_numbers(KeyNumbers& key, const std::vector<DiagramPoint>& off, const std::string& suffix);
 
 // The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
 // frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "gearhb/app/bifurcation_input.hpp"
 #include "gearhb/hb/period_doubling.hpp"
@@ -150,13 +151,13 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
 
 std::vector<OrbitBranch> orbit_branches_of_diagram(Run& run, const std::string& label, const HarmonicBalance& hb,
                                                    const FrequencyCurve& c, std::vector<PeriodDoubledBranch>& branches,
-                                                   const BifurcationDiagram& d, const SweepOptions& o, double period_tol,
-                                                   const VectorXd& q, const std::string& quantity,
+                                                   const std::vector<DiagramPoint>& off_all, const SweepOptions& o,
+                                                   double period_tol, const VectorXd& q, const std::string& quantity,
                                                    const std::string& suffix) {
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = period_tol * xs;
   const std::vector<BranchView> known = branch_views(hb, c, branches);
-  std::vector<DiagramPoint> off = off_branch_orbits(hb, d, known, period_tol, xs);
-  off.erase(std::remove_if(off.begin(), off.end(), [](const DiagramPoint& p) { return p.n > 2; }), off.end());
+  std::vector<DiagramPoint> off;
+  std::copy_if(off_all.begin(), off_all.end(), std::back_inserter(off), [](const DiagramPoint& p) { return p.n <= 2; });
   int left = 0, on_known = 0;
   std::vector<OrbitBranch> found = branches_from_orbits(run, label, hb, off, known, o, tol, left, on_known);
   KeyNumbers& key = run.key_numbers();
