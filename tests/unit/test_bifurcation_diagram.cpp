@@ -368,4 +368,11 @@ TEST(BifurcationDiagram, DownSweepStartIsTheStableOrbitAtTheBandEnd) {
   EXPECT_FALSE(set_down_start(hb, c, 1.25, o));
   EXPECT_EQ(o.down_x0.size(), 0);
   EXPECT_EQ(o.down_v0.size(), 0);
+  // The same curve with every stable label on a shooting correction that failed (hand-made: each
+  // point's shooting tried, none converged): no label is resolved, so no orbit at 1.98 is known
+  // to attract and the down sweep follows the up sweep (hb/period_doubling.hpp resolved_stable).
+  FrequencyCurve unresolved = c;
+  for (PointFloquet& f : unresolved.floquet) f.shooting = true, f.corrected = false;
+  EXPECT_FALSE(set_down_start(hb, unresolved, w, o));
+  EXPECT_EQ(o.down_x0.size(), 0);
 }

@@ -163,21 +163,26 @@ namespace {
 // kept if the correction converges to a stable orbit of its period (not lower_period), with its
 // own orbit error - a segment's ends do not bound the error inside it (ch. 6 Fig. 40's period-2
 // branch at 10650 rad/s, 2.8 rad/s from its end at HB's branch point: twice the ends' error).
+// Without that correction the orbit's stability is its segment's: both ends stable with resolved
+// labels (resolved_stable; an unresolved stretch starts no integration as a stable orbit).
 std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c, int period,
                                      const BifurcationDiagram& d) {
   bool profile = false;
   for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
+  const bool shoot = !profile && c.stability == StabilityMethod::floquet;   // each orbit's own correction
+  // Without it, a segment counts stable only where its ends' labels are resolved (resolved_stable).
+  const std::vector<bool> stable = shoot ? c.stable : resolved_stable(c);
   const auto& P = c.branch.points;
   std::vector<SpeedOrbit> out;
   for (const DiagramPoint& p : d.points) {
     if (!p.up || p.from_orbit) continue;
     const double Omega = p.omega / period;
-    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
-      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+    for (std::size_t i = 1; i < P.size() && i < stable.size(); ++i) {
+      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !stable[i - 1] || !stable[i]) continue;
       Eigen::VectorXd X = P[i].X;
       if (!newton_solve(hb, X, Omega, c.scaling).converged) continue;
       double error = NAN;
-      if (!profile && c.stability == StabilityMethod::floquet) {
+      if (shoot) {
         const FloquetResult f = floquet_of_hb_orbit(hb, X, Omega, c.scaling.x[0]);
         if (!f.corrected || !f.stable || f.lower_period) continue;
         error = f.orbit_error;
@@ -328,14 +333,29 @@ bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double h
   o.down_x0.resize(0);
   o.down_v0.resize(0);
   const auto& P = c.branch.points;
-  for (std::size_t i = std::min(P.size(), c.stable.size()); i-- > 1;) {
-    if ((P[i - 1].omega - hi) * (P[i].omega - hi) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+  const std::vector<bool> stable = resolved_stable(c);
+  for (std::size_t i = std::min(P.size(), stable.size()); i-- > 1;) {
+    if ((P[i - 1].omega - hi) * (P[i].omega - hi) > 0 || !stable[i - 1] || !stable[i]) continue;
     Eigen::VectorXd X = std::abs(P[i].omega - hi) <= std::abs(P[i - 1].omega - hi) ? P[i].X : P[i - 1].X;
     if (!newton_solve(hb, X, hi, c.scaling).converged) continue;
     hb_initial_state(hb, X, hi, o.down_x0, o.down_v0);
     return true;
   }
   return false;
+}
+
+std::size_t diagram_start(const FrequencyCurve& c, double omega) {
+  const auto& P = c.branch.points;
+  const std::vector<bool> stable = resolved_stable(c);
+  std::size_t start = 0;
+  auto better = [&](std::size_t i, std::size_t j) {
+    const bool si = i < stable.size() && stable[i], sj = j < stable.size() && stable[j];
+    if (si != sj) return si;
+    return std::abs(P[i].omega - omega) < std::abs(P[j].omega - omega);
+  };
+  for (std::size_t i = 1; i < P.size(); ++i)
+    if (better(i, start)) start = i;
+  return start;
 }
 
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -346,14 +366,7 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
   return run.timed(step, [&] {
     BifurcationDiagram all;
     for (const DiagramBand& b : bands) {
-      std::size_t start = 0;   // nearest b.omega_lo, a stable point first
-      auto better = [&](std::size_t i, std::size_t j) {
-        const bool si = i < c.stable.size() && c.stable[i], sj = j < c.stable.size() && c.stable[j];
-        if (si != sj) return si;
-        return std::abs(P[i].omega - b.omega_lo) < std::abs(P[j].omega - b.omega_lo);
-      };
-      for (std::size_t i = 1; i < P.size(); ++i)
-        if (better(i, start)) start = i;
+      const std::size_t start = diagram_start(c, b.omega_lo);
       o.speeds = b.speeds;
       set_down_start(hb, c, b.omega_hi, o);
       BifurcationDiagram d = diagram_from(run, hb, c, start, b.omega_lo, b.omega_hi, o, label);

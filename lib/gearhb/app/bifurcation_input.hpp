@@ -190,16 +190,21 @@ std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
 // The down sweep's start at a band's upper end hi (BifurcationDiagramOptions::down_x0, down_v0:
 // the down sweep then runs on a second thread, from the attractor that exists above): the HB
 // orbit at hi on the last segment of c, in continuation order, that brackets hi and is stable
-// at both ends (solved at hi by Newton from the segment's end, as add_hb_section_rows does; the
+// at both ends with resolved labels (resolved_stable: a stretch labelled stable on no converged
+// shooting correction is not taken for the attractor that exists above) (solved at hi by Newton from the segment's end, as add_hb_section_rows does; the
 // last: where stable orbits coexist, the part of the curve that goes on toward the range's upper
 // end, whence a sweep down comes). None (both emptied) where no stable segment brackets hi or
 // Newton fails: the down sweep then follows the up sweep, as before. True if set.
 bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, BifurcationDiagramOptions& o);
 
+// The up sweep's start near omega: the index of the point of c nearest omega among those stable
+// with a resolved label (resolved_stable), the nearest of all if none is.
+std::size_t diagram_start(const FrequencyCurve& c, double omega);
+
 // The diagram of every band (their points concatenated: band 1 up and down, band 2 up and down,
 // ...), each band swept up from the HB orbit of c nearest its lower end among the stable points
-// (the nearest of all if none is stable) and down from set_down_start's orbit at its upper end
-// where there is one, as one timed step.
+// (diagram_start: stable with a resolved label; the nearest of all if none is) and down from
+// set_down_start's orbit at its upper end where there is one, as one timed step.
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);

@@ -5,6 +5,7 @@
 #include <iterator>
 
 #include "gearhb/app/bifurcation_input.hpp"
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -31,6 +32,7 @@ double integrated_multiplier(const HarmonicBalance& hb, const VectorXd& x0, cons
 void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const VectorXd& q, const std::string& quantity,
                           const SweepOptions& o, const std::string& tag) {
   const ResponseEvaluator ev(*b.model, q, 256);
+  const std::vector<bool> stable = resolved_stable(b.curve);   // a stable label on no converged shooting: not stable
   double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0, stable_swing = 0.0;
   const auto& P = b.curve.branch.points;
   for (std::size_t i = 0; i < P.size(); ++i) {
@@ -39,14 +41,10 @@ void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const V
     const ResponseSummary r = ev.summarize(P[i].X);
     from = std::min(from, w), to = std::max(to, w);
     lo = std::min(lo, r.x_min), hi = std::max(hi, r.x_max), swing = std::max(swing, r.x_max - r.x_min);
-    if (b.curve.stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
+    if (stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
   }
-  const Intervals st = stable_intervals(b.curve, b.period);
-  key.add("orbit_branch_stable_ranges" + tag, double(st.size()), "-");
-  for (std::size_t j = 0; j < st.size(); ++j) {
-    key.add("orbit_branch_stable_from_omega" + tag + "_" + std::to_string(j + 1), st[j].first, "rad/s");
-    key.add("orbit_branch_stable_to_omega" + tag + "_" + std::to_string(j + 1), st[j].second, "rad/s");
-  }
+  add_range_key_numbers(key, "orbit_branch_stable", resolved_stable_intervals(b.curve, b.period), tag);
+  add_range_key_numbers(key, "orbit_branch_unresolved", unresolved_stable_stretches(b.curve, b.period), tag);
   key.add("orbit_branch_stable_swing" + tag, stable_swing, "m");
   key.add("orbit_branch_id" + tag, id, "-");
   key.add("orbit_branch_period" + tag, b.period, "-");

@@ -50,8 +50,13 @@ std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label
 // (the orbit it starts from), _from_omega, _to_omega (its span within [o.omega_min, o.omega_max],
 // forcing omega), orbit_branch_<quantity>_min, _max (of the coordinate q over the span), _swing
 // (largest max - min), _stable_swing (the same on its stable points), _stable_ranges and each
-// stretch _stable_from_omega_<j>, _stable_to_omega_<j> (stable_intervals), its check against the
-// orbit it starts from (_hb_vs_time_integration within _hb_error_bound), _folds, _bifurcations.
+// stretch _stable_from_omega_<j>, _stable_to_omega_<j>, its check against the orbit it starts from
+// (_hb_vs_time_integration within _hb_error_bound), _folds, _bifurcations. Stable means stable with
+// a resolved label (hb/period_doubling.hpp resolved_stable: resolved_stable_intervals, as
+// period1_ranges counts): a run of stable labels none of whose shooting corrections converged is
+// not counted stable but listed apart, _unresolved_ranges and each stretch
+// _unresolved_from_omega_<j>, _unresolved_to_omega_<j> (unresolved_stable_stretches; 0 ranges:
+// every stable label resolved).
 void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const Eigen::VectorXd& q,
                           const std::string& quantity, const SweepOptions& o, const std::string& tag);
 
