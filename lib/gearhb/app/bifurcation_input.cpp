@@ -124,7 +124,9 @@ std::string bifurcation_diagram_help() {
          std::to_string(b.least) + "), at most " + num(b.budget_s) + " s / (" + num(b.speed_s) + " + " +
          num(b.speed_dof_s) + " n) s\n"
          "                        over all bands (a CPU budget over one speed's cost: " + std::to_string(diagram_speed_cap(b, 1)) +
-         " speeds for one DOF, " + std::to_string(diagram_speed_cap(b, 6)) + " for six); none where every range is stable.\n"
+         " speeds for one DOF, " + std::to_string(diagram_speed_cap(b, 6)) + " for six),\n"
+         "                        and in each range with no stable period-1 orbit that the grid misses its middle; none\n"
+         "                        where every range is stable.\n"
          "                        false: none. An object: range (\"unstable\": those bands, default; \"whole\": the whole range, speeds " +
          std::to_string(d.speeds) + "), margin,\n"
          "                        speeds (per sweep of each band, up then down), transient_periods (" +
@@ -315,9 +317,12 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
 
 namespace {
 
-// The diagram over [lo, hi] from the HB orbit of point `start` of c, progress lines per speed.
+// The diagram over [lo, hi] from the HB orbit of point `start` of c, progress lines per speed; each
+// sweep visits the grid's speeds and, in every range of [lo, hi] with no stable period-1 orbit on c
+// (period1_ranges) that holds none of them, its middle (speeds_missed).
 BifurcationDiagram diagram_from(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t start,
-                                double lo, double hi, const BifurcationDiagramOptions& o, const std::string& label) {
+                                double lo, double hi, BifurcationDiagramOptions o, const std::string& label) {
+  o.added_speeds = speeds_missed(lo, hi, o.speeds, period1_ranges(lo, hi, {&c}).no_stable);
   const auto& p0 = c.branch.points[start];
   Eigen::VectorXd x0, v0;
   hb_initial_state(hb, p0.X, p0.omega, x0, v0);
@@ -378,11 +383,14 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
 }
 
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
-                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label) {
+                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label,
+                                    std::size_t start) {
   o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
   const auto& P = c.branch.points;
-  const auto lowest = std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; });
-  return run.timed(step, [&] { return diagram_from(run, hb, c, std::size_t(lowest - P.begin()), lo, hi, o, label); });
+  if (start >= P.size())
+    start = std::size_t(std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; }) -
+                        P.begin());
+  return run.timed(step, [&] { return diagram_from(run, hb, c, start, lo, hi, o, label); });
 }
 
 std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -448,6 +456,8 @@ void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std
     key.add(std::string("diagram_") + to_string(m) + "_speeds" + suffix, double(count), "-");
   }
   key.add("diagram_max_period" + suffix, double(max_period), "-");
+  const auto added = std::count_if(d.points.begin(), d.points.end(), [](const DiagramPoint& p) { return p.added && p.up; });
+  key.add("diagram_added_speeds" + suffix, double(added), "-");
 }
 
 std::string diagram_summary(const BifurcationDiagram& d, const std::function<double(double)>& speed,

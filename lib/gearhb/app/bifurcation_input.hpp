@@ -204,7 +204,8 @@ std::size_t diagram_start(const FrequencyCurve& c, double omega);
 // The diagram of every band (their points concatenated: band 1 up and down, band 2 up and down,
 // ...), each band swept up from the HB orbit of c nearest its lower end among the stable points
 // (diagram_start: stable with a resolved label; the nearest of all if none is) and down from
-// set_down_start's orbit at its upper end where there is one, as one timed step.
+// set_down_start's orbit at its upper end where there is one, as one timed step; each band's
+// sweeps with the added speeds of diagram_of_curve.
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);
@@ -237,11 +238,16 @@ std::vector<DiagramPoint> diagram_off_branch_orbits(const HarmonicBalance& hb, c
 // branch_from_orbit).
 void off_branch_key_numbers(KeyNumbers& key, const std::vector<DiagramPoint>& off, const std::string& suffix);
 
-// The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
-// frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning
-// with `label`.
+// The diagram over [lo, hi] as a step of a program run: up from the HB orbit of c's point `start`
+// (an index; out of range, the default: the curve's lowest frequency), x_scale the curve's largest
+// DOF scale, timed as `step`, progress lines beginning with `label`. Each sweep visits o.speeds
+// uniform speeds and, inside each range of [lo, hi] with no stable period-1 orbit on c
+// (period1_ranges: an unresolved stretch in it) that holds none of them, the range's middle
+// (hb/bifurcation_diagram.hpp speeds_missed), so that no such range, however narrow, goes without
+// a diagram speed; diagram_of_bands does the same per band.
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
-                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label);
+                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label,
+                                    std::size_t start = std::size_t(-1));
 
 // One line for the console: "bifurcation diagram over N band(s): lo-hi unit (n speeds), ...",
 // in the program's unit (speed(omega)).
@@ -249,8 +255,9 @@ std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std:
                                const std::string& unit);
 
 // Key numbers of a diagram, each name ending in `suffix` ("" or "_<i>"): the speeds (both
-// sweeps counted) of each motion, diagram_<motion>_speeds, and the largest period seen,
-// diagram_max_period.
+// sweeps counted) of each motion, diagram_<motion>_speeds, the largest period seen,
+// diagram_max_period, and the speeds each sweep visits beside its grid's, diagram_added_speeds (one in
+// each range with no stable period-1 orbit that the grid misses: diagram_of_curve).
 void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std::string& suffix);
 
 // One line for the console: the speeds of each motion over both sweeps, the largest period,
