@@ -300,11 +300,13 @@ def generic_branch_entry(handle):
 
 def diagram_bands(speeds):
     """[(lo, hi)] of the diagram's bands from its speeds: a new band where the gap to the next
-    speed exceeds 1.5 times the step before it (each band's speeds are uniform)."""
+    speed exceeds 1.5 times the larger of the steps beside it, before (in the band) and after (each
+    band's grid is uniform but for a speed added in a range with no stable period-1 orbit that the
+    grid misses, which halves a step: hb/bifurcation_diagram.hpp speeds_missed)."""
     w = sorted(set(speeds))
     bands, start = [], 0
     for i in range(1, len(w)):
-        step = w[i - 1] - w[i - 2] if i - 1 > start else None
+        step = max(w[i - 1] - w[i - 2], w[i + 1] - w[i] if i + 1 < len(w) else 0.0) if i - 1 > start else None
         if step is not None and w[i] - w[i - 1] > 1.5 * step:
             bands.append((w[start], w[i - 1]))
             start = i

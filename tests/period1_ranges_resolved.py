@@ -20,8 +20,9 @@ the period-1 curve (branch 0), between its first and last row:
 --period P (P > 1): every unresolved run of a period-P branch lies in a range
 unresolved_periodP_from_omega<SUFFIX>_k ..._to_... (omega: the branches' keys are in rad/s), and
 every such range holds one. --diagram CSV (a bifurcation diagram of the run, column X): every
-unstable_period1 range, its unresolved stretches included, lies within one band of the diagram's
-speeds (a band ends where the gap to the next speed exceeds 1.5 times the step before it, as
+unstable_period1 range, its unresolved stretches included, holds a speed of the diagram (the
+library adds one where the grid misses the range) and lies within one band of the diagram's
+speeds (a band ends where the gap to the next speed exceeds 1.5 times the larger of the steps beside it, as
 figures/ch06_gear_pair.py diagram_bands reads them). --expect-unresolved: the table must have an unresolved run on the
 period-1 curve (and on the period-P branches), so that the check is not empty. The `stable` and
 `exact` columns come from each point's Floquet multipliers and shooting, independent of how the
@@ -107,11 +108,13 @@ def check_period(all_rows, period, listed):
 
 
 def diagram_bands(xs):
-    """[(lo, hi)] of the diagram's bands from its speeds (each band's speeds uniform)."""
+    """[(lo, hi)] of the diagram's bands from its speeds (each band's grid uniform but for the
+    speeds added in ranges the grid misses: the larger step beside a gap is the band's)."""
     w = sorted(set(xs))
     bands, start = [], 0
     for i in range(1, len(w)):
-        if i - 1 > start and w[i] - w[i - 1] > 1.5 * (w[i - 1] - w[i - 2]):
+        step = max(w[i - 1] - w[i - 2], w[i + 1] - w[i] if i + 1 < len(w) else 0.0)
+        if i - 1 > start and w[i] - w[i - 1] > 1.5 * step:
             bands.append((w[start], w[i - 1]))
             start = i
     bands.append((w[start], w[-1]))
@@ -119,9 +122,12 @@ def diagram_bands(xs):
 
 
 def check_diagram(path, X, no_stable):
-    bands = diagram_bands([float(r[X]) for r in csv.DictReader(open(path))])
-    return ["range %.6g-%.6g in no band of the diagram %s" % (a, b, bands) for a, b in no_stable
-            if not any(inside(a, [band]) and inside(b, [band]) for band in bands)]
+    speeds = [float(r[X]) for r in csv.DictReader(open(path))]
+    bands = diagram_bands(speeds)
+    return (["range %.6g-%.6g in no band of the diagram %s" % (a, b, bands) for a, b in no_stable
+             if not any(inside(a, [band]) and inside(b, [band]) for band in bands)] +
+            ["range %.6g-%.6g holds no speed of the diagram" % (a, b) for a, b in no_stable
+             if not any(inside(w, [(a, b)]) for w in speeds)])
 
 
 def main(argv):
@@ -157,7 +163,7 @@ def main(argv):
         path = Path(d_dir) / argv[argv.index("--diagram") + 1]
         e = check_diagram(path, X, no_stable)
         errors += e
-        print("diagram %s: %d of %d ranges within a band" % (path.name, len(no_stable) - len(e), len(no_stable)))
+        print("diagram %s: %d ranges, %d failures (a range in no band, or holding no speed)" % (path.name, len(no_stable), len(e)))
     for e in errors:
         print(e)
     return 1 if errors else 0

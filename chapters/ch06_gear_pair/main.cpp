@@ -199,13 +199,15 @@ double load_ratio(const Case& cs, const char* label) {
 
 // The down sweep's start (BifurcationDiagramOptions::down_x0, down_v0): the orbit of the
 // curve's point nearest the band's upper end hi, if it lies within one speed step of hi and
-// is stable; else none (the down sweep then follows the up sweep).
+// is stable with a resolved label (resolved_stable); else none (the down sweep then follows the
+// up sweep).
 void down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, double step, BifurcationDiagramOptions& o) {
   const auto& P = c.branch.points;
   std::size_t best = P.size();
   for (std::size_t i = 0; i < P.size(); ++i)
     if (best == P.size() || std::abs(P[i].omega - hi) < std::abs(P[best].omega - hi)) best = i;
-  if (best == P.size() || std::abs(P[best].omega - hi) > step || best >= c.stable.size() || !c.stable[best]) return;
+  const std::vector<bool> stable = resolved_stable(c);
+  if (best == P.size() || std::abs(P[best].omega - hi) > step || best >= stable.size() || !stable[best]) return;
   hb_initial_state(hb, P[best].X, P[best].omega, o.down_x0, o.down_v0);
 }
 

@@ -72,7 +72,7 @@ class FrequencyResponseFromFile {
   void period2_key_numbers(Run& run, const std::vector<PeriodDoubledBranch>& pd) const;
   void curve_key_numbers(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c) const;
   void bifurcation_diagram(Run& run, Response& r) const;
-  void orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const;
+  void orbit_branches(Run& run, Response& r, const std::vector<DiagramPoint>& off) const;
   void quasi_periodic(Run& run, Response& r) const;
   std::vector<TorusBranch> torus_branches(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                           const SweepOptions& o, int first_id) const;
@@ -265,9 +265,10 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
   const BifurcationDiagram d = diagram_of_bands(run, hb, c, bands, model_.diagram.options, "bifurcation_diagram", "");
   diagram_key_numbers(run.key_numbers(), d, "");
   run.key_numbers().add("diagram_bands", double(bands.size()), "-");
-  off_branch_key_numbers(run.key_numbers(), hb, c, r.branches, d, model_.diagram.options.period_tol, "");
+  const std::vector<DiagramPoint> off = diagram_off_branch_orbits(hb, c, r.branches, d, model_.diagram.options.period_tol);
+  off_branch_key_numbers(run.key_numbers(), off, "");
   run.say(model_.name + ": " + diagram_summary(d, rad_s, "rad/s"));
-  orbit_branches(run, r, d);
+  orbit_branches(run, r, off);
   const std::vector<PeriodDoubledBranch>& pd = r.branches;
   Table t(bifurcation_columns({"omega", "band"}, "x"));
   const SectionOrbits orbits = run.timed("HB orbits at the diagram's speeds", [&] { return section_orbits(hb, c, pd, d); });
@@ -282,7 +283,8 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 }
 
 // Step 4b (issue 34): the HB branches through the diagram's periodic orbits of period 1 or 2 that
-// lie on none of the run's branches (those diagram_off_branch_period1, _period2 count), as ch. 6
+// lie on none of the run's branches (`off`: those diagram_off_branch_period1, _period2 count, found
+// and polished once in step 4: diagram_off_branch_orbits), as ch. 6
 // continues Fig. 41's (app/orbit_branches.hpp): from the first such orbit (up sweep, then down)
 // branch_from_orbit solves HB from its Fourier coefficients, checks it against the orbit within
 // HB's own error and continues it both ways over the range with the sweep's options (stability,
@@ -296,9 +298,9 @@ void FrequencyResponseFromFile::bifurcation_diagram(Run& run, Response& r) const
 // against the GSL monodromy of the integrated orbits and at up to 3 of its unstable points); the
 // ranges with no stable period-1 orbit on any period-1 branch, unstable_period1_*_all_branches,
 // and their unresolved stretches, unresolved_period1_*_all_branches (period1_ranges).
-void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const BifurcationDiagram& d) const {
+void FrequencyResponseFromFile::orbit_branches(Run& run, Response& r, const std::vector<DiagramPoint>& off) const {
   const std::vector<OrbitBranch> found = orbit_branches_of_diagram(
-      run, model_.name, r.hb, r.c, r.branches, d, r.o, model_.diagram.options.period_tol, model_.output, "x", "");
+      run, model_.name, r.hb, r.c, r.branches, off, r.o, model_.diagram.options.period_tol, model_.output, "x", "");
   add_unstable_period1_ranges(run.key_numbers(), period1_ranges(r.o.omega_min, r.o.omega_max, period1_curves(r.c, found)),
                               "_all_branches");
 }

@@ -213,7 +213,7 @@ class GearPairFromFile {
   void time_integration_check(Run& run, std::size_t i, const HarmonicBalance& hb, const Response& r) const;
   bool bifurcation_diagram(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r, BifurcationDiagram& d,
                            Table& t, Table& hb_section) const;
-  void orbit_branches(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r, const BifurcationDiagram& d) const;
+  void orbit_branches(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r, const std::vector<DiagramPoint>& off) const;
   void spectrum_and_history(const HarmonicBalance& hb, std::size_t i, const Response& r, Table& spectrum,
                             Table& history, double& history_kv) const;
   double speed_rpm(double omega) const { return 60.0 * hz(omega) / file_.pair.gear1.teeth; }
@@ -565,9 +565,10 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
   d = diagram_of_bands(run, hb, r.curve, bands, file_.diagram.options, "bifurcation_diagram_" + n, torque_label(i) + ": ");
   diagram_key_numbers(run.key_numbers(), d, "_" + n);
   run.key_numbers().add("diagram_bands_" + n, double(bands.size()), "-");
-  off_branch_key_numbers(run.key_numbers(), hb, r.curve, r.doubled, d, file_.diagram.options.period_tol, "_" + n);
+  const std::vector<DiagramPoint> off = diagram_off_branch_orbits(hb, r.curve, r.doubled, d, file_.diagram.options.period_tol);
+  off_branch_key_numbers(run.key_numbers(), off, "_" + n);
   run.say(torque_label(i) + ": " + diagram_summary(d, rpm, "rpm"));
-  orbit_branches(run, i, hb, r, d);
+  orbit_branches(run, i, hb, r, off);
   auto lead = [&](double w) {
     return std::vector<Table::Cell>{long(i + 1), file_.torques[i], hz(w), speed_rpm(w)};
   };
@@ -593,7 +594,8 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
 }
 
 // Torque i's HB branches through the diagram's orbits of period 1 or 2 that lie on none of its
-// branches (app/orbit_branches.hpp orbit_branches_of_diagram, as gearhb_frc's step 4b): each
+// branches (`off`: those diagram_off_branch_period1_<i>, _period2_<i> count, found and polished
+// once by bifurcation_diagram: diagram_off_branch_orbits; app/orbit_branches.hpp orbit_branches_of_diagram, as gearhb_frc's step 4b): each
 // continued over the speed range with the curve's sweep options, appended to r.doubled (the next
 // branch id in frc_<i>.csv, bifurcations_<i>.csv and bifurcation_diagram_hb.csv) with its gear
 // measures, and said in one line as the period-2 branches are. Key numbers with the suffix _<i>
@@ -603,11 +605,11 @@ bool GearPairFromFile::bifurcation_diagram(Run& run, std::size_t i, const Harmon
 // unstable_period1_from_rpm_all_branches_<i>_<k>, unstable_period1_to_rpm_all_branches_<i>_<k>,
 // and their unresolved stretches, unresolved_period1_*_all_branches_<i> (period1_ranges).
 void GearPairFromFile::orbit_branches(Run& run, std::size_t i, const HarmonicBalance& hb, Response& r,
-                                      const BifurcationDiagram& d) const {
+                                      const std::vector<DiagramPoint>& off) const {
   const std::string n = std::to_string(i + 1);
   const Eigen::VectorXd q = dte_coordinate(file_.dynamics.dofs, bearings());
   const std::size_t first = r.doubled.size();
-  const std::vector<OrbitBranch> found = orbit_branches_of_diagram(run, torque_label(i), hb, r.curve, r.doubled, d, r.o,
+  const std::vector<OrbitBranch> found = orbit_branches_of_diagram(run, torque_label(i), hb, r.curve, r.doubled, off, r.o,
                                                                    file_.diagram.options.period_tol, q, "dte", "_" + n);
   for (std::size_t k = first; k < r.doubled.size(); ++k) {
     const PeriodDoubledBranch& b = r.doubled[k];

@@ -426,12 +426,12 @@ void PlanetarySetFromFile::bifurcation_diagram(Run& run, const HarmonicBalance& 
     BifurcationDiagramOptions opt = file_.diagram;
     opt.speeds = bands[k].speeds;
     set_down_start(hb, r.curve, hi, opt);   // the down sweep from the stable orbit at hi, if any
-    FrequencyCurve start = r.curve;   // diagram_of_curve starts from its lowest point: the one nearest lo
-    start.branch.points = {*std::min_element(P.begin(), P.end(), [lo = lo](const BranchPoint& a, const BranchPoint& b) {
+    const auto start = std::min_element(P.begin(), P.end(), [lo = lo](const BranchPoint& a, const BranchPoint& b) {
       return std::abs(a.omega - lo) < std::abs(b.omega - lo);
-    })};
+    });   // up from the point nearest lo
     const std::string id = std::to_string(k + 1);
-    const BifurcationDiagram d = diagram_of_curve(run, hb, start, lo, hi, opt, "bifurcation diagram " + id, file_.name + ": ");
+    const BifurcationDiagram d = diagram_of_curve(run, hb, r.curve, lo, hi, opt, "bifurcation diagram " + id,
+                                                  file_.name + ": ", std::size_t(start - P.begin()));
     r.diagram.points.insert(r.diagram.points.end(), d.points.begin(), d.points.end());
     char part[120];
     std::snprintf(part, sizeof part, ": band %s, %.1f to %.1f Hz: ", id.c_str(), hz(lo), hz(hi));

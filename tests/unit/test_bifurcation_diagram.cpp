@@ -13,6 +13,7 @@
 //  - the chaos at Omega = 1.0: the Lyapunov exponent is converged in the number of periods and
 //    matches the growth rate of the separation of two nearby trajectories of the nonlinear flow
 //    alone (no variational equations).
+#include <algorithm>
 #include <cmath>
 #include <complex>
 #include <string>
@@ -368,4 +369,43 @@ TEST(BifurcationDiagram, DownSweepStartIsTheStableOrbitAtTheBandEnd) {
   EXPECT_FALSE(set_down_start(hb, c, 1.25, o));
   EXPECT_EQ(o.down_x0.size(), 0);
   EXPECT_EQ(o.down_v0.size(), 0);
+  // The same curve with every stable label on a shooting correction that failed (hand-made: each
+  // point's shooting tried, none converged): no label is resolved, so no orbit at 1.98 is known
+  // to attract and the down sweep follows the up sweep (hb/period_doubling.hpp resolved_stable).
+  FrequencyCurve unresolved = c;
+  for (PointFloquet& f : unresolved.floquet) f.shooting = true, f.corrected = false;
+  EXPECT_FALSE(set_down_start(hb, unresolved, w, o));
+  EXPECT_EQ(o.down_x0.size(), 0);
+}
+
+// The speeds a grid misses (hb/bifurcation_diagram.hpp speeds_missed, sweep_speeds), by hand: the
+// grid 0, 0.1, ..., 1 misses [0.52, 0.58] (its middle 0.55 is added) but holds 0.3 in [0.29,
+// 0.31] and 1 in [0.95, 1.2] (clipped to [0.95, 1]). On the oscillator (period 1 up to 0.85 by
+// the header) a two-speed grid over [0.5, 0.6] with 0.55 added visits 0.5, 0.55, 0.6 up and down,
+// and the added speed is classified as the others: period 1 in both sweeps.
+TEST(BifurcationDiagram, SpeedsTheGridMissesAreAdded) {
+  const std::vector<double> added = speeds_missed(0.0, 1.0, 11, {{0.52, 0.58}, {0.29, 0.31}, {0.95, 1.2}});
+  ASSERT_EQ(added.size(), 1u);
+  EXPECT_DOUBLE_EQ(added[0], 0.55);
+  const std::vector<double> w = sweep_speeds(0.0, 1.0, 11, {0.55, 2.0, NAN});
+  ASSERT_EQ(w.size(), 12u);
+  EXPECT_DOUBLE_EQ(w[6], 0.55);
+  EXPECT_TRUE(std::is_sorted(w.begin(), w.end()));
+  const HarmonicBalance hb = kahraman_singh(0.5);
+  BifurcationDiagramOptions o;
+  o.speeds = 2;
+  o.added_speeds = {0.55};
+  o.integration.x_scale = 1.0;
+  const BifurcationDiagram d = bifurcation_diagram(hb, 0.5, 0.6, VectorXd::Zero(1), VectorXd::Zero(1), o);
+  ASSERT_EQ(d.points.size(), 6u);
+  const double omegas[] = {0.5, 0.55, 0.6, 0.6, 0.55, 0.5};
+  for (std::size_t k = 0; k < 6; ++k) {
+    EXPECT_DOUBLE_EQ(d.points[k].omega, omegas[k]);
+    EXPECT_EQ(d.points[k].up, k < 3);
+    EXPECT_EQ(d.points[k].added, k == 1 || k == 4);
+  }
+  for (std::size_t k : {std::size_t(1), std::size_t(4)}) {
+    EXPECT_EQ(d.points[k].motion, Motion::periodic) << d.points[k].failure;
+    EXPECT_EQ(d.points[k].n, 1);
+  }
 }

@@ -10,7 +10,8 @@
 //    kc max |x_a - x_b| for the piecewise-linear flank law);
 //  - stable_intervals / uncovered (the ranges with no stable period-1 orbit) against the
 //    stability flags of the points themselves; resolved_stable, period1_ranges and the diagram's
-//    bands over an unresolved stretch on hand-made curves (the expected ranges worked by hand).
+//    bands over an unresolved stretch on hand-made curves (the expected ranges worked by hand);
+//    so too an orbit branch's stable key numbers and the diagram's up-sweep start.
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -18,11 +19,13 @@
 #include <gtest/gtest.h>
 
 #include "gearhb/app/bifurcation_input.hpp"
+#include "gearhb/app/orbit_branches.hpp"
 #include "gearhb/gears/dynamics/mesh_dynamics.hpp"
 #include "gearhb/hb/bifurcation_diagram.hpp"
 #include "gearhb/hb/frequency_sweep.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/time_integration.hpp"
+#include "test_models.hpp"
 
 using namespace gearhb;
 
@@ -249,6 +252,52 @@ TEST(GearPeriodDoubling, DiagramBandCoversAnUnresolvedStretch) {
   ASSERT_EQ(bands.size(), 1u);
   EXPECT_DOUBLE_EQ(bands[0].omega_lo, 1.5);
   EXPECT_DOUBLE_EQ(bands[0].omega_hi, 7.5);
+}
+
+TEST(GearPeriodDoubling, OrbitBranchStableKeysCountOnlyResolvedLabels) {
+  // An orbit branch (period 1) on the curve above, each point's orbit x = a cos(Omega t) with a
+  // = 1 at the resolved stable points (omega 1, 2, 7, 8), 3 at the unstable ones (3, 6) and 5 at
+  // the unresolved stretch (4, 5): a swing of 2, 6 and 10 (256 samples hold t = 0 and pi / Omega).
+  // By hand: stable (resolved) on [1, 2.5] and [6.5, 8] with the largest stable swing 2; the
+  // stretch 4-5 listed apart. Taking the labels at face value gives three stable ranges
+  // ([1, 2.5], [3.5, 5.5], [6.5, 8]) and a stable swing of 10.
+  OrbitBranch b;
+  b.omega = 4.0, b.distance = 0.0, b.bound = 1.0;   // the check's numbers: not what is tested
+  b.model = std::make_shared<HarmonicBalance>(test_models::kahraman_singh(0.5, 2));
+  b.curve = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                           {true, true, true, false, false, true, true, true});
+  const double a[] = {1.0, 1.0, 3.0, 5.0, 5.0, 3.0, 1.0, 1.0};
+  for (std::size_t k = 0; k < 8; ++k) {
+    b.curve.branch.points[k].X = Eigen::VectorXd::Zero(b.model->size());
+    b.curve.branch.points[k].X[b.model->index(1, 0)] = a[k];
+  }
+  SweepOptions o;
+  o.omega_min = 0.0, o.omega_max = 10.0;
+  KeyNumbers key;
+  orbit_branch_numbers(key, b, 3, Eigen::VectorXd::Ones(1), "x", o, "_1");
+  auto value = [&](const std::string& name) { return key.json().at(name).at("value").get<double>(); };
+  EXPECT_EQ(value("orbit_branch_stable_ranges_1"), 2.0);
+  EXPECT_EQ(value("orbit_branch_stable_from_omega_1_1"), 1.0);
+  EXPECT_EQ(value("orbit_branch_stable_to_omega_1_1"), 2.5);
+  EXPECT_EQ(value("orbit_branch_stable_from_omega_1_2"), 6.5);
+  EXPECT_EQ(value("orbit_branch_stable_to_omega_1_2"), 8.0);
+  EXPECT_NEAR(value("orbit_branch_stable_swing_1"), 2.0, 1e-12);
+  EXPECT_NEAR(value("orbit_branch_swing_1"), 10.0, 1e-12);
+  EXPECT_EQ(value("orbit_branch_unresolved_ranges_1"), 1.0);
+  EXPECT_EQ(value("orbit_branch_unresolved_from_omega_1_1"), 4.0);
+  EXPECT_EQ(value("orbit_branch_unresolved_to_omega_1_1"), 5.0);
+}
+
+TEST(GearPeriodDoubling, DiagramStartsOnlyOnResolvedStableOrbits) {
+  // The curve above: the up sweep of a band from 4.2 starts on the nearest point stable with a
+  // resolved label, omega 2 (index 1; 7 is 2.8 away), not on the unresolved point at 4 (index 3).
+  const FrequencyCurve c = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                                          {true, true, true, false, false, true, true, true});
+  EXPECT_EQ(diagram_start(c, 4.2), 1u);
+  // Every label unresolved: the nearest point of all, omega 4 (index 3).
+  const FrequencyCurve none = labelled_curve(1.0, {true, true, false, true, true, false, true, true},
+                                             std::vector<bool>(8, false));
+  EXPECT_EQ(diagram_start(none, 4.2), 3u);
 }
 
 TEST(GearPeriodDoubling, LightLoadStablePeriodFourOrbitsAreSeenByTimeIntegration) {

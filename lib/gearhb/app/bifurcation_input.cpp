@@ -124,7 +124,9 @@ std::string bifurcation_diagram_help() {
          std::to_string(b.least) + "), at most " + num(b.budget_s) + " s / (" + num(b.speed_s) + " + " +
          num(b.speed_dof_s) + " n) s\n"
          "                        over all bands (a CPU budget over one speed's cost: " + std::to_string(diagram_speed_cap(b, 1)) +
-         " speeds for one DOF, " + std::to_string(diagram_speed_cap(b, 6)) + " for six); none where every range is stable.\n"
+         " speeds for one DOF, " + std::to_string(diagram_speed_cap(b, 6)) + " for six),\n"
+         "                        and in each range with no stable period-1 orbit that the grid misses its middle; none\n"
+         "                        where every range is stable.\n"
          "                        false: none. An object: range (\"unstable\": those bands, default; \"whole\": the whole range, speeds " +
          std::to_string(d.speeds) + "), margin,\n"
          "                        speeds (per sweep of each band, up then down), transient_periods (" +
@@ -163,21 +165,26 @@ namespace {
 // kept if the correction converges to a stable orbit of its period (not lower_period), with its
 // own orbit error - a segment's ends do not bound the error inside it (ch. 6 Fig. 40's period-2
 // branch at 10650 rad/s, 2.8 rad/s from its end at HB's branch point: twice the ends' error).
+// Without that correction the orbit's stability is its segment's: both ends stable with resolved
+// labels (resolved_stable; an unresolved stretch starts no integration as a stable orbit).
 std::vector<SpeedOrbit> speed_orbits(const HarmonicBalance& hb, const FrequencyCurve& c, int period,
                                      const BifurcationDiagram& d) {
   bool profile = false;
   for (const auto& ct : hb.contacts()) profile = profile || bool(ct.stiffness_profile);
+  const bool shoot = !profile && c.stability == StabilityMethod::floquet;   // each orbit's own correction
+  // Without it, a segment counts stable only where its ends' labels are resolved (resolved_stable).
+  const std::vector<bool> stable = shoot ? c.stable : resolved_stable(c);
   const auto& P = c.branch.points;
   std::vector<SpeedOrbit> out;
   for (const DiagramPoint& p : d.points) {
     if (!p.up || p.from_orbit) continue;
     const double Omega = p.omega / period;
-    for (std::size_t i = 1; i < P.size() && i < c.stable.size(); ++i) {
-      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+    for (std::size_t i = 1; i < P.size() && i < stable.size(); ++i) {
+      if ((P[i - 1].omega - Omega) * (P[i].omega - Omega) > 0 || !stable[i - 1] || !stable[i]) continue;
       Eigen::VectorXd X = P[i].X;
       if (!newton_solve(hb, X, Omega, c.scaling).converged) continue;
       double error = NAN;
-      if (!profile && c.stability == StabilityMethod::floquet) {
+      if (shoot) {
         const FloquetResult f = floquet_of_hb_orbit(hb, X, Omega, c.scaling.x[0]);
         if (!f.corrected || !f.stable || f.lower_period) continue;
         error = f.orbit_error;
@@ -310,9 +317,12 @@ std::vector<std::string> hb_section_columns(std::vector<std::string> lead, const
 
 namespace {
 
-// The diagram over [lo, hi] from the HB orbit of point `start` of c, progress lines per speed.
+// The diagram over [lo, hi] from the HB orbit of point `start` of c, progress lines per speed; each
+// sweep visits the grid's speeds and, in every range of [lo, hi] with no stable period-1 orbit on c
+// (period1_ranges) that holds none of them, its middle (speeds_missed).
 BifurcationDiagram diagram_from(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, std::size_t start,
-                                double lo, double hi, const BifurcationDiagramOptions& o, const std::string& label) {
+                                double lo, double hi, BifurcationDiagramOptions o, const std::string& label) {
+  o.added_speeds = speeds_missed(lo, hi, o.speeds, period1_ranges(lo, hi, {&c}).no_stable);
   const auto& p0 = c.branch.points[start];
   Eigen::VectorXd x0, v0;
   hb_initial_state(hb, p0.X, p0.omega, x0, v0);
@@ -328,14 +338,29 @@ bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double h
   o.down_x0.resize(0);
   o.down_v0.resize(0);
   const auto& P = c.branch.points;
-  for (std::size_t i = std::min(P.size(), c.stable.size()); i-- > 1;) {
-    if ((P[i - 1].omega - hi) * (P[i].omega - hi) > 0 || !c.stable[i - 1] || !c.stable[i]) continue;
+  const std::vector<bool> stable = resolved_stable(c);
+  for (std::size_t i = std::min(P.size(), stable.size()); i-- > 1;) {
+    if ((P[i - 1].omega - hi) * (P[i].omega - hi) > 0 || !stable[i - 1] || !stable[i]) continue;
     Eigen::VectorXd X = std::abs(P[i].omega - hi) <= std::abs(P[i - 1].omega - hi) ? P[i].X : P[i - 1].X;
     if (!newton_solve(hb, X, hi, c.scaling).converged) continue;
     hb_initial_state(hb, X, hi, o.down_x0, o.down_v0);
     return true;
   }
   return false;
+}
+
+std::size_t diagram_start(const FrequencyCurve& c, double omega) {
+  const auto& P = c.branch.points;
+  const std::vector<bool> stable = resolved_stable(c);
+  std::size_t start = 0;
+  auto better = [&](std::size_t i, std::size_t j) {
+    const bool si = i < stable.size() && stable[i], sj = j < stable.size() && stable[j];
+    if (si != sj) return si;
+    return std::abs(P[i].omega - omega) < std::abs(P[j].omega - omega);
+  };
+  for (std::size_t i = 1; i < P.size(); ++i)
+    if (better(i, start)) start = i;
+  return start;
 }
 
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -346,14 +371,7 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
   return run.timed(step, [&] {
     BifurcationDiagram all;
     for (const DiagramBand& b : bands) {
-      std::size_t start = 0;   // nearest b.omega_lo, a stable point first
-      auto better = [&](std::size_t i, std::size_t j) {
-        const bool si = i < c.stable.size() && c.stable[i], sj = j < c.stable.size() && c.stable[j];
-        if (si != sj) return si;
-        return std::abs(P[i].omega - b.omega_lo) < std::abs(P[j].omega - b.omega_lo);
-      };
-      for (std::size_t i = 1; i < P.size(); ++i)
-        if (better(i, start)) start = i;
+      const std::size_t start = diagram_start(c, b.omega_lo);
       o.speeds = b.speeds;
       set_down_start(hb, c, b.omega_hi, o);
       BifurcationDiagram d = diagram_from(run, hb, c, start, b.omega_lo, b.omega_hi, o, label);
@@ -365,11 +383,14 @@ BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const F
 }
 
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
-                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label) {
+                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label,
+                                    std::size_t start) {
   o.integration.x_scale = c.scaling.x.cwiseAbs().maxCoeff();
   const auto& P = c.branch.points;
-  const auto lowest = std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; });
-  return run.timed(step, [&] { return diagram_from(run, hb, c, std::size_t(lowest - P.begin()), lo, hi, o, label); });
+  if (start >= P.size())
+    start = std::size_t(std::min_element(P.begin(), P.end(), [](const auto& a, const auto& b) { return a.omega < b.omega; }) -
+                        P.begin());
+  return run.timed(step, [&] { return diagram_from(run, hb, c, start, lo, hi, o, label); });
 }
 
 std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyCurve& c,
@@ -396,13 +417,16 @@ std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const Bif
   return off;
 }
 
-void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
-                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
-                            const std::string& suffix) {
+std::vector<DiagramPoint> diagram_off_branch_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd,
+                                                    const BifurcationDiagram& d, double period_tol) {
   const double xs = c.scaling.x.cwiseAbs().maxCoeff();   // diagram_of_bands' x_scale
+  return off_branch_orbits(hb, d, branch_views(hb, c, pd), period_tol, xs);
+}
+
+void off_branch_key_numbers(KeyNumbers& key, const std::vector<DiagramPoint>& off, const std::string& suffix) {
   double off1 = 0.0, off2 = 0.0;
-  for (const DiagramPoint& p : off_branch_orbits(hb, d, branch_views(hb, c, pd), period_tol, xs))
-    (p.n == 1 ? off1 : off2) += p.n <= 2 ? 1.0 : 0.0;
+  for (const DiagramPoint& p : off) (p.n == 1 ? off1 : off2) += p.n <= 2 ? 1.0 : 0.0;
   key.add("diagram_off_branch_period1" + suffix, off1, "-");
   key.add("diagram_off_branch_period2" + suffix, off2, "-");
 }
@@ -432,6 +456,8 @@ void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std
     key.add(std::string("diagram_") + to_string(m) + "_speeds" + suffix, double(count), "-");
   }
   key.add("diagram_max_period" + suffix, double(max_period), "-");
+  const auto added = std::count_if(d.points.begin(), d.points.end(), [](const DiagramPoint& p) { return p.added && p.up; });
+  key.add("diagram_added_speeds" + suffix, double(added), "-");
 }
 
 std::string diagram_summary(const BifurcationDiagram& d, const std::function<double(double)>& speed,

@@ -190,16 +190,22 @@ std::string diagram_stiffness(const HarmonicBalance& hb, double omega_lo);
 // The down sweep's start at a band's upper end hi (BifurcationDiagramOptions::down_x0, down_v0:
 // the down sweep then runs on a second thread, from the attractor that exists above): the HB
 // orbit at hi on the last segment of c, in continuation order, that brackets hi and is stable
-// at both ends (solved at hi by Newton from the segment's end, as add_hb_section_rows does; the
+// at both ends with resolved labels (resolved_stable: a stretch labelled stable on no converged
+// shooting correction is not taken for the attractor that exists above) (solved at hi by Newton from the segment's end, as add_hb_section_rows does; the
 // last: where stable orbits coexist, the part of the curve that goes on toward the range's upper
 // end, whence a sweep down comes). None (both emptied) where no stable segment brackets hi or
 // Newton fails: the down sweep then follows the up sweep, as before. True if set.
 bool set_down_start(const HarmonicBalance& hb, const FrequencyCurve& c, double hi, BifurcationDiagramOptions& o);
 
+// The up sweep's start near omega: the index of the point of c nearest omega among those stable
+// with a resolved label (resolved_stable), the nearest of all if none is.
+std::size_t diagram_start(const FrequencyCurve& c, double omega);
+
 // The diagram of every band (their points concatenated: band 1 up and down, band 2 up and down,
 // ...), each band swept up from the HB orbit of c nearest its lower end among the stable points
-// (the nearest of all if none is stable) and down from set_down_start's orbit at its upper end
-// where there is one, as one timed step.
+// (diagram_start: stable with a resolved label; the nearest of all if none is) and down from
+// set_down_start's orbit at its upper end where there is one, as one timed step; each band's
+// sweeps with the added speeds of diagram_of_curve.
 BifurcationDiagram diagram_of_bands(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c,
                                     const std::vector<DiagramBand>& bands, BifurcationDiagramOptions o,
                                     const std::string& step, const std::string& label);
@@ -217,20 +223,31 @@ std::vector<BranchView> branch_views(const HarmonicBalance& hb, const FrequencyC
 // largest DOF scale).
 std::vector<DiagramPoint> off_branch_orbits(const HarmonicBalance& hb, const BifurcationDiagram& d,
                                             const std::vector<BranchView>& views, double period_tol, double x_scale);
+// The periodic points of d that lie on none of the branches of a run (the curve c of hb and each
+// branch of pd with points: branch_views), by off_branch_orbits with tol = period_tol x the curve's
+// largest DOF scale (diagram_of_bands' x_scale): found and polished once per run, for
+// off_branch_key_numbers and for the branches through them (app/orbit_branches.hpp
+// orbit_branches_of_diagram).
+std::vector<DiagramPoint> diagram_off_branch_orbits(const HarmonicBalance& hb, const FrequencyCurve& c,
+                                                    const std::vector<PeriodDoubledBranch>& pd,
+                                                    const BifurcationDiagram& d, double period_tol);
 // Key numbers diagram_off_branch_period1<suffix>, diagram_off_branch_period2<suffix>: the speeds
-// (both sweeps) of d whose orbit of period 1 (2) lies on none of the HB branches of its period
-// (the curve c of hb; the period-2 branches of pd; off_branch_orbits, polished) with the diagram's
-// period_tol: an HB branch the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig.
-// 41's, hb/orbit_branch.hpp branch_from_orbit).
-void off_branch_key_numbers(KeyNumbers& key, const HarmonicBalance& hb, const FrequencyCurve& c,
-                            const std::vector<PeriodDoubledBranch>& pd, const BifurcationDiagram& d, double period_tol,
-                            const std::string& suffix);
+// (both sweeps) of the diagram whose orbit of period 1 (2) lies on none of the HB branches of its
+// period (`off`: diagram_off_branch_orbits, polished) with the diagram's period_tol: an HB branch
+// the run has not found (gearhb_frc, gearhb_gear; ch. 6 continues Fig. 41's, hb/orbit_branch.hpp
+// branch_from_orbit).
+void off_branch_key_numbers(KeyNumbers& key, const std::vector<DiagramPoint>& off, const std::string& suffix);
 
-// The diagram over [lo, hi] as a step of a program run: from the HB orbit at the curve's lowest
-// frequency, x_scale the curve's largest DOF scale, timed as `step`, progress lines beginning
-// with `label`.
+// The diagram over [lo, hi] as a step of a program run: up from the HB orbit of c's point `start`
+// (an index; out of range, the default: the curve's lowest frequency), x_scale the curve's largest
+// DOF scale, timed as `step`, progress lines beginning with `label`. Each sweep visits o.speeds
+// uniform speeds and, inside each range of [lo, hi] with no stable period-1 orbit on c
+// (period1_ranges: an unresolved stretch in it) that holds none of them, the range's middle
+// (hb/bifurcation_diagram.hpp speeds_missed), so that no such range, however narrow, goes without
+// a diagram speed; diagram_of_bands does the same per band.
 BifurcationDiagram diagram_of_curve(Run& run, const HarmonicBalance& hb, const FrequencyCurve& c, double lo, double hi,
-                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label);
+                                    BifurcationDiagramOptions o, const std::string& step, const std::string& label,
+                                    std::size_t start = std::size_t(-1));
 
 // One line for the console: "bifurcation diagram over N band(s): lo-hi unit (n speeds), ...",
 // in the program's unit (speed(omega)).
@@ -238,8 +255,9 @@ std::string diagram_bands_text(const std::vector<DiagramBand>& bands, const std:
                                const std::string& unit);
 
 // Key numbers of a diagram, each name ending in `suffix` ("" or "_<i>"): the speeds (both
-// sweeps counted) of each motion, diagram_<motion>_speeds, and the largest period seen,
-// diagram_max_period.
+// sweeps counted) of each motion, diagram_<motion>_speeds, the largest period seen,
+// diagram_max_period, and the speeds each sweep visits beside its grid's, diagram_added_speeds (one in
+// each range with no stable period-1 orbit that the grid misses: diagram_of_curve).
 void diagram_key_numbers(KeyNumbers& key, const BifurcationDiagram& d, const std::string& suffix);
 
 // One line for the console: the speeds of each motion over both sweeps, the largest period,

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 
 #include "gearhb/app/bifurcation_input.hpp"
+#include "gearhb/app/case_table.hpp"
 #include "gearhb/hb/period_doubling.hpp"
 #include "gearhb/hb/response.hpp"
 #include "gearhb/hb/time_integration.hpp"
@@ -30,6 +32,7 @@ double integrated_multiplier(const HarmonicBalance& hb, const VectorXd& x0, cons
 void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const VectorXd& q, const std::string& quantity,
                           const SweepOptions& o, const std::string& tag) {
   const ResponseEvaluator ev(*b.model, q, 256);
+  const std::vector<bool> stable = resolved_stable(b.curve);   // a stable label on no converged shooting: not stable
   double from = INFINITY, to = -INFINITY, lo = INFINITY, hi = -INFINITY, swing = 0.0, stable_swing = 0.0;
   const auto& P = b.curve.branch.points;
   for (std::size_t i = 0; i < P.size(); ++i) {
@@ -38,14 +41,10 @@ void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const V
     const ResponseSummary r = ev.summarize(P[i].X);
     from = std::min(from, w), to = std::max(to, w);
     lo = std::min(lo, r.x_min), hi = std::max(hi, r.x_max), swing = std::max(swing, r.x_max - r.x_min);
-    if (b.curve.stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
+    if (stable[i]) stable_swing = std::max(stable_swing, r.x_max - r.x_min);
   }
-  const Intervals st = stable_intervals(b.curve, b.period);
-  key.add("orbit_branch_stable_ranges" + tag, double(st.size()), "-");
-  for (std::size_t j = 0; j < st.size(); ++j) {
-    key.add("orbit_branch_stable_from_omega" + tag + "_" + std::to_string(j + 1), st[j].first, "rad/s");
-    key.add("orbit_branch_stable_to_omega" + tag + "_" + std::to_string(j + 1), st[j].second, "rad/s");
-  }
+  add_range_key_numbers(key, "orbit_branch_stable", resolved_stable_intervals(b.curve, b.period), tag);
+  add_range_key_numbers(key, "orbit_branch_unresolved", unresolved_stable_stretches(b.curve, b.period), tag);
   key.add("orbit_branch_stable_swing" + tag, stable_swing, "m");
   key.add("orbit_branch_id" + tag, id, "-");
   key.add("orbit_branch_period" + tag, b.period, "-");
@@ -150,13 +149,13 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
 
 std::vector<OrbitBranch> orbit_branches_of_diagram(Run& run, const std::string& label, const HarmonicBalance& hb,
                                                    const FrequencyCurve& c, std::vector<PeriodDoubledBranch>& branches,
-                                                   const BifurcationDiagram& d, const SweepOptions& o, double period_tol,
-                                                   const VectorXd& q, const std::string& quantity,
+                                                   const std::vector<DiagramPoint>& off_all, const SweepOptions& o,
+                                                   double period_tol, const VectorXd& q, const std::string& quantity,
                                                    const std::string& suffix) {
   const double xs = c.scaling.x.cwiseAbs().maxCoeff(), tol = period_tol * xs;
   const std::vector<BranchView> known = branch_views(hb, c, branches);
-  std::vector<DiagramPoint> off = off_branch_orbits(hb, d, known, period_tol, xs);
-  off.erase(std::remove_if(off.begin(), off.end(), [](const DiagramPoint& p) { return p.n > 2; }), off.end());
+  std::vector<DiagramPoint> off;
+  std::copy_if(off_all.begin(), off_all.end(), std::back_inserter(off), [](const DiagramPoint& p) { return p.n <= 2; });
   int left = 0, on_known = 0;
   std::vector<OrbitBranch> found = branches_from_orbits(run, label, hb, off, known, o, tol, left, on_known);
   KeyNumbers& key = run.key_numbers();

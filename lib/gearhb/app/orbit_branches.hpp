@@ -50,8 +50,13 @@ std::vector<OrbitBranch> branches_from_orbits(Run& run, const std::string& label
 // (the orbit it starts from), _from_omega, _to_omega (its span within [o.omega_min, o.omega_max],
 // forcing omega), orbit_branch_<quantity>_min, _max (of the coordinate q over the span), _swing
 // (largest max - min), _stable_swing (the same on its stable points), _stable_ranges and each
-// stretch _stable_from_omega_<j>, _stable_to_omega_<j> (stable_intervals), its check against the
-// orbit it starts from (_hb_vs_time_integration within _hb_error_bound), _folds, _bifurcations.
+// stretch _stable_from_omega_<j>, _stable_to_omega_<j>, its check against the orbit it starts from
+// (_hb_vs_time_integration within _hb_error_bound), _folds, _bifurcations. Stable means stable with
+// a resolved label (hb/period_doubling.hpp resolved_stable: resolved_stable_intervals, as
+// period1_ranges counts): a run of stable labels none of whose shooting corrections converged is
+// not counted stable but listed apart, _unresolved_ranges and each stretch
+// _unresolved_from_omega_<j>, _unresolved_to_omega_<j> (unresolved_stable_stretches; 0 ranges:
+// every stable label resolved).
 void orbit_branch_numbers(KeyNumbers& key, const OrbitBranch& b, int id, const Eigen::VectorXd& q,
                           const std::string& quantity, const SweepOptions& o, const std::string& tag);
 
@@ -67,8 +72,9 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
 
 // The step a program runs after its bifurcation diagram (gearhb_frc step 4b, gearhb_gear per
 // torque; ch. 6 step 3c does the same with its own keys): the HB branches through the diagram's
-// periodic orbits of period 1 or 2 that lie on none of the run's branches (the curve c of hb and
-// `branches`; off_branch_orbits, each compared as the orbit it approaches), by branches_from_orbits
+// periodic orbits of period 1 or 2 that lie on none of the run's branches (`off`: those of the
+// diagram's orbits off the curve c of hb and `branches` as they were when the diagram's key numbers
+// were written, diagram_off_branch_orbits: found and polished once per run), by branches_from_orbits
 // with the sweep's options o, tolerance period_tol x the curve's largest DOF scale; each new branch
 // appended to `branches` (table_branch: the next branch id in the program's tables, its section
 // in bifurcation_diagram_hb.csv) and returned. Key numbers, each name ending in `suffix` ("" or
@@ -77,9 +83,9 @@ void orbit_branch_checks(KeyNumbers& key, const HarmonicBalance& hb, const Orbit
 // orbit_branch_checks. label: the program's name for the curve, heading its lines.
 std::vector<OrbitBranch> orbit_branches_of_diagram(Run& run, const std::string& label, const HarmonicBalance& hb,
                                                    const FrequencyCurve& c, std::vector<PeriodDoubledBranch>& branches,
-                                                   const BifurcationDiagram& d, const SweepOptions& o, double period_tol,
-                                                   const Eigen::VectorXd& q, const std::string& quantity,
-                                                   const std::string& suffix);
+                                                   const std::vector<DiagramPoint>& off, const SweepOptions& o,
+                                                   double period_tol, const Eigen::VectorXd& q,
+                                                   const std::string& quantity, const std::string& suffix);
 
 // The curve c and every period-1 branch of `found`: period1_ranges of them are the ranges with no
 // stable period-1 orbit on any branch.

@@ -312,6 +312,28 @@ void diagram_speed(const TimeIntegrator& ti, const BifurcationDiagramOptions& op
 }
 }  // namespace
 
+std::vector<double> sweep_speeds(double omega_min, double omega_max, int speeds, const std::vector<double>& added) {
+  std::vector<double> w;
+  for (int k = 0; k < speeds; ++k) w.push_back(omega_min + (omega_max - omega_min) * double(k) / double(speeds - 1));
+  for (double a : added)
+    if (std::isfinite(a) && a > omega_min && a < omega_max) w.push_back(a);
+  std::sort(w.begin(), w.end());
+  w.erase(std::unique(w.begin(), w.end()), w.end());
+  return w;
+}
+
+std::vector<double> speeds_missed(double omega_min, double omega_max, int speeds,
+                                  const std::vector<std::pair<double, double>>& ranges) {
+  const std::vector<double> grid = sweep_speeds(omega_min, omega_max, speeds, {});
+  std::vector<double> out;
+  for (const auto& [from, to] : ranges) {
+    const double a = std::max(from, omega_min), b = std::min(to, omega_max);
+    if (!(a <= b)) continue;
+    if (std::none_of(grid.begin(), grid.end(), [&](double w) { return a <= w && w <= b; })) out.push_back(0.5 * (a + b));
+  }
+  return out;
+}
+
 DiagramPoint diagram_point(const HarmonicBalance& hb, double omega, const Eigen::VectorXd& x0,
                            const Eigen::VectorXd& v0, const BifurcationDiagramOptions& opt) {
   std::string why;
@@ -342,7 +364,9 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
     throw std::invalid_argument("bifurcation diagram: down_x0, down_v0 must be empty or hold one value per dof");
   const TimeIntegrator ti(hb);
   const double tol = opt.period_tol * opt.integration.x_scale;
-  const int N = opt.speeds;
+  const std::vector<double> omegas = sweep_speeds(omega_min, omega_max, opt.speeds, opt.added_speeds);
+  const std::vector<double> grid = sweep_speeds(omega_min, omega_max, opt.speeds, {});
+  const int N = int(omegas.size());
   BifurcationDiagram d;
   d.points.resize(2 * std::size_t(N));
   std::mutex reporting;
@@ -350,8 +374,8 @@ BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_m
   auto sweep = [&](int s, Eigen::VectorXd x, Eigen::VectorXd v) {
     for (int j = 0; j < N; ++j) {
       DiagramPoint& p = d.points[std::size_t(s * N + j)];
-      const int k = s == 0 ? j : N - 1 - j;
-      p.omega = omega_min + (omega_max - omega_min) * double(k) / double(N - 1);
+      p.omega = omegas[std::size_t(s == 0 ? j : N - 1 - j)];
+      p.added = !std::binary_search(grid.begin(), grid.end(), p.omega);
       p.up = s == 0;
       diagram_speed(ti, opt, tol, p, x, v);
       if (progress) {

@@ -95,6 +95,12 @@ struct BifurcationDiagramOptions {
   // Analysis, ch. 9; the torus' linear tangent growth (lambda_k ~ ln k / k, block means
   // falling) inflates the scatter and does not stop.
   int lyapunov_min_periods = 0;
+  // Speeds added to each sweep's grid [rad/s], visited in increasing omega with the grid's (those
+  // outside (omega_min, omega_max), on a grid speed or not finite are ignored). Empty (the default):
+  // the grid alone. The rule for callers holding an HB curve (app/bifurcation_input.hpp
+  // diagram_of_bands, diagram_of_curve): speeds_missed over its ranges with no stable period-1
+  // orbit, so that the diagram says what the motion is in every such range, however narrow.
+  std::vector<double> added_speeds;
   // The integration (tolerances; x_scale: the typical displacement, the unit of period_tol).
   TimeIntegrationOptions integration;
   // The down sweep's start at omega_max (x, v at phase 0; one value per dof each), or empty
@@ -111,6 +117,7 @@ struct DiagramPoint {
   double omega = 0.0;
   bool up = true;                  // the sweep: up (omega rising) or down
   bool from_orbit = false;         // not a sweep's: one speed started on a given orbit (diagram_point)
+  bool added = false;              // a speed of added_speeds, not of the grid
   Motion motion = Motion::failed;
   int n = 0;                       // the period (periodic), else 0
   double lyapunov = NAN;           // per forcing period (computed if not periodic), else NaN
@@ -125,16 +132,27 @@ struct BifurcationDiagram {
   std::vector<DiagramPoint> points;   // the up sweep, then the down sweep
 };
 
-// The sweep up from (x0, v0) at phase 0 and omega_min; the sweep down from opt.down_x0, down_v0
+// The sweep up from (x0, v0) at phase 0 and omega_min over sweep_speeds (the grid and
+// opt.added_speeds: N speeds); the sweep down from opt.down_x0, down_v0
 // at omega_max on a second thread if given, else from the up sweep's end after it. progress
 // (optional) is called after every speed with the point and its index (0-based, over both
-// sweeps: up 0 .. speeds - 1, down speeds .. 2 speeds - 1), from either thread, one call at a
+// sweeps: up 0 .. N - 1, down N .. 2 N - 1), from either thread, one call at a
 // time. Throws std::invalid_argument for options out of range
 // (check_bifurcation_options).
 BifurcationDiagram bifurcation_diagram(const HarmonicBalance& hb, double omega_min, double omega_max,
                                        const Eigen::VectorXd& x0, const Eigen::VectorXd& v0,
                                        const BifurcationDiagramOptions& opt,
                                        const std::function<void(const DiagramPoint&, int)>& progress = {});
+
+// The speeds of one sweep: the grid of `speeds` values uniform over [omega_min, omega_max], both
+// ends included, and added_speeds as BifurcationDiagramOptions says, in increasing omega.
+std::vector<double> sweep_speeds(double omega_min, double omega_max, int speeds, const std::vector<double>& added);
+
+// The speeds that a grid of `speeds` uniform values over [omega_min, omega_max] (both ends
+// included) leaves out of `ranges` (forcing-frequency intervals [a, b]): for each range, clipped
+// to [omega_min, omega_max], that holds no grid speed, its middle (a + b) / 2; in the ranges' order.
+std::vector<double> speeds_missed(double omega_min, double omega_max, int speeds,
+                                  const std::vector<std::pair<double, double>>& ranges);
 
 // One speed classified as a sweep's (the same transient, recording, classification and
 // Lyapunov estimate), started from (x0, v0) at phase 0 rather than from the previous speed's
