@@ -32,12 +32,14 @@ bare name from the last block that has it.
 The programs run in the repository's root folder, so a block may name an example file by
 its path there (`gearhb_gear programs/gearhb_gear/examples/thesis_pair.json --set plot=0`).
 
-    readme_console.py --check BUILD_DIR README.md ... --ran 'COMMAND' DIR [--ran 'COMMAND' DIR]...
+    readme_console.py --check|--write BUILD_DIR README.md ... --ran 'COMMAND' DIR [--ran 'COMMAND' DIR]...
 
 A block whose marker text is COMMAND is not run again: CTest ran exactly that command (with --quiet,
 which only silences the progress lines on stderr) into DIR as a fixture (a regression run,
-tests/CMakeLists.txt), its stdout in DIR.stdout; the block is checked against that run's stdout and
-key_numbers.json. A missing DIR.stdout or key_numbers.json fails the check.
+tests/CMakeLists.txt), its stdout in DIR.stdout; the block is checked against (--write: written from)
+that run's stdout and key_numbers.json. A missing DIR.stdout or key_numbers.json fails the check.
+To write a README from the runs its CTest check reads, run that test's command line
+(`ctest -R readme.<name>.console -N -V`) with --write for --check, after the fixtures ran.
 """
 import json
 import pathlib
@@ -110,7 +112,7 @@ def main():
         sys.exit(__doc__)
     readmes, ran = [], {}
     while rest:
-        if rest[0] == "--ran" and len(rest) >= 3 and mode == "--check":
+        if rest[0] == "--ran" and len(rest) >= 3:
             ran[rest[1]] = rest[2]
             rest = rest[3:]
         elif rest[0] == "--ran":
